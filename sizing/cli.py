@@ -1,0 +1,127 @@
+"""Command line: parse, call ``sizing.api``, print. InputError -> exit 2 with
+one line on stderr; any other exception is a bug -> traceback, exit 1."""
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+from typing import List, Optional
+
+import typer
+
+from . import __version__, api
+from .errors import InputError
+
+app = typer.Typer(help="Size smart-material actuators for glide-body control surfaces, "
+                       "fit their models to test data and diagnose the sim-to-real gap.",
+                  no_args_is_help=True, add_completion=False, pretty_exceptions_enable=False)
+catalog_app = typer.Typer(help="List, show, validate and compare the parts catalog.", no_args_is_help=True)
+fit_app = typer.Typer(help="Estimate model parameters from measured runs.", no_args_is_help=True)
+app.add_typer(catalog_app, name="catalog")
+app.add_typer(fit_app, name="fit")
+
+CatalogOpt = typer.Option(None, "--catalog", help="Catalog folder (default: the catalogs/ that ships with sizing).")
+
+
+def _version(value: bool):
+    if value:
+        typer.echo(f"sizing {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def main_options(version: bool = typer.Option(False, "--version", callback=_version, is_eager=True,
+                                              help="Print the version and exit.")):
+    """sizing: piezohydraulic and DC-motor actuators, from requirements to hardware."""
+
+
+def _print_json(data) -> None:
+    typer.echo(json.dumps(data, indent=2, default=_jsonable))
+
+
+def _jsonable(value):
+    import numpy as np
+    if isinstance(value, np.ndarray):
+        return value.tolist()
+    if isinstance(value, (np.floating, np.integer)):
+        return value.item()
+    return str(value)
+
+
+@app.command()
+def evaluate(design: Path = typer.Argument(..., help="design.toml (CONTRACTS.md)."),
+             json_out: bool = typer.Option(False, "--json", help="Print one JSON object instead of a summary."),
+             catalog: Optional[Path] = CatalogOpt):
+    """Static and simulated figures of one design."""
+    result = api.evaluate(design, catalog)
+    for warning in result["warnings"]:
+        typer.echo(f"warning: {design}: {warning}", err=True)
+    if json_out:
+        _print_json(result)
+        return
+    from .report.text import evaluation_summary
+    typer.echo(evaluation_summary(result))
+
+
+@catalog_app.command("list")
+def catalog_list(catalog: Optional[Path] = CatalogOpt):
+    """List every catalog entry: id, kind, name and source."""
+    cat = api.catalog(catalog)
+    from .report.text import catalog_table
+    typer.echo(catalog_table(cat))
+
+
+@catalog_app.command("show")
+def catalog_show(entry_id: str = typer.Argument(..., help="Catalog id, e.g. pi-p-056.90."),
+                 json_out: bool = typer.Option(False, "--json", help="Print JSON."),
+                 catalog: Optional[Path] = CatalogOpt):
+    """Show every field of one entry with its unit and provenance."""
+    cat = api.catalog(catalog)
+    try:
+        kind, entry = cat.get(entry_id)
+    except KeyError:
+        raise InputError(str(cat.folder), "id", f"no entry {entry_id!r} in the catalog") from None
+    if json_out:
+        _print_json({"kind": kind, **entry.model_dump(mode="json")})
+        return
+    from .report.text import entry_details
+    typer.echo(entry_details(kind, entry))
+
+
+@catalog_app.command("validate")
+def catalog_validate(folder: Optional[Path] = typer.Argument(None, help="Catalog folder to check (default: the shipped one)."),
+                     max_age_days: int = typer.Option(730, "--max-age-days", help="Flag entries retrieved longer ago than this."),
+                     catalog: Optional[Path] = CatalogOpt):
+    """Check schema, units, ids and physical plausibility; exit 2 on errors."""
+    from .io.validate import validate_catalog
+    report = validate_catalog(folder or catalog, max_age_days=max_age_days)
+    for line in report.warnings:
+        typer.echo(f"warning: {line}", err=True)
+    typer.echo(f"{report.folder}: {report.n_entries} entries valid ({report.n_warnings} warnings)")
+
+
+def main() -> None:
+    """Console entry point: maps errors to exit codes."""
+    try:
+        app(standalone_mode=False)
+    except InputError as exc:
+        typer.echo(f"error: {exc}", err=True)
+        sys.exit(2)
+    except typer.Exit as exc:
+        sys.exit(exc.exit_code)
+    except typer.Abort:
+        typer.echo("aborted", err=True)
+        sys.exit(1)
+    except SystemExit:
+        raise
+    except Exception as exc:
+        # usage errors of typer's bundled click (bad option, missing
+        # argument) carry their own message and exit code 2
+        if hasattr(exc, "show") and hasattr(exc, "exit_code"):
+            exc.show()
+            sys.exit(exc.exit_code)
+        raise
+
+
+if __name__ == "__main__":
+    main()

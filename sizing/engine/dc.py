@@ -1,0 +1,64 @@
+"""DC motor lead-screw actuators from the catalog: static figures, metrics
+and closed-loop step responses under the load cases."""
+from __future__ import annotations
+
+import numpy as np
+
+from ..io.catalog import DCActuator
+from ..physics import dc_motor
+from ..sim.dc_motor import DCMotorModel, simulate
+from ..sim.metrics import step_metrics
+
+OUTPUT_RATE_HZ = 2000.0
+SETTLED = 0.98      # a step counts as reached within 2% of its size
+
+
+def model(act: DCActuator, load_force: float = 0.0, load_stiffness: float = 0.0) -> DCMotorModel:
+    pid = act.pid
+    return DCMotorModel(
+        c1=act.c1, c2=act.c2, lead=act.screw_lead, rate=pid.rate, kp=pid.kp, ki=pid.ki, kd=pid.kd,
+        derivative_on_measurement=float(pid.derivative_on == "measurement"),
+        current_limit=act.current_limit, load_force=load_force, load_stiffness=load_stiffness,
+        efficiency=act.screw_efficiency, torque_constant=act.torque_constant)
+
+
+def static_figures(act: DCActuator, load_force: float = 0.0) -> dict[str, float]:
+    """Force at the current limit, rated force and the no-load and loaded
+    top speeds of eq. 13 at the current limit."""
+    i_load = float(dc_motor.load_current(load_force, act.screw_lead, act.screw_efficiency, act.torque_constant))
+    return {
+        "blocked_force_N": float(min(act.max_force, dc_motor.max_force(
+            act.current_limit, act.screw_lead, act.screw_efficiency, act.torque_constant))),
+        "rated_force_N": act.max_force,
+        "continuous_force_N": act.continuous_force,
+        "stroke_m": act.stroke,
+        "model_top_speed_m_s": float(dc_motor.steady_speed(act.current_limit, act.c1, act.c2, act.screw_lead)),
+        "loaded_top_speed_m_s": float(dc_motor.steady_speed(act.current_limit - i_load, act.c1, act.c2, act.screw_lead)),
+        "rated_speed_m_s": act.max_speed,
+        "load_current_A": i_load,
+    }
+
+
+def metrics(act: DCActuator) -> dict[str, float]:
+    volume = np.pi / 4 * act.diameter**2 * act.length
+    return {"mass_kg": act.mass, "cost_usd": act.cost_usd, "volume_m3": float(volume),
+            "power_W": act.supply_voltage * act.current_limit}
+
+
+def step_cases(act: DCActuator, step: float, load_forces, duration: float = 1.0, keep_traces=False):
+    """Closed-loop response to a step of ``step`` metres under each load."""
+    t = np.arange(0.0, duration + 0.5 / OUTPUT_RATE_HZ, 1.0 / OUTPUT_RATE_HZ)
+    reference = np.full_like(t, step)
+    reference[0] = 0.0
+    cases = []
+    for force in load_forces:
+        out = simulate(model(act, force), t, reference)
+        y = out["position_m"]
+        case = {k: float(v[0]) for k, v in step_metrics(t, y, np.array([SETTLED * step])).items()}
+        case["load_N"] = float(force)
+        case["peak_current_A"] = float(np.max(np.abs(out["current_A"])))
+        if keep_traces:
+            case["t"] = t
+            case["position_m"] = y[0]
+        cases.append(case)
+    return cases

@@ -1,0 +1,125 @@
+"""Evaluate one design file: static figures and simulated load cases."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..errors import InputError
+from ..io.catalog import Catalog
+from ..io.design import DCDesignFile, LoadTable, PiezoDesignFile
+from ..physics import hydraulics, load as load_phys
+from . import dc as dc_engine
+from .piezo import DEFAULT_PRESSURE_RATING_PA, Candidates, part_row, reference_bouc_wen, stack_bouc_wen
+from .verify import metrics, simulate_cases, static_figures
+
+RATIO_TOLERANCE = 0.01
+
+
+def load_cases(load: LoadTable) -> list[dict]:
+    """Forces of the load cases: explicit forces, or tip forces of the
+    hinged surface at each dynamic pressure (seed Figure 7)."""
+    if load.force is not None:
+        return [{"load_N": f} for f in load.force]
+    return [{"dynamic_pressure_Pa": p, "load_N": float(load_phys.tip_force(p, load.span, load.chord))}
+            for p in load.dynamic_pressure]
+
+
+def _lookup(catalog: Catalog, group: dict, entry_id: str | None, file: str, field: str):
+    if entry_id is None:
+        return None
+    if entry_id not in group:
+        known = ", ".join(sorted(group)) or "none"
+        raise InputError(file, field, f"unknown catalog id {entry_id!r} (known: {known})")
+    return group[entry_id]
+
+
+def evaluate_piezo(design: PiezoDesignFile, catalog: Catalog, file: str) -> dict:
+    warnings: list[str] = []
+    stack = _lookup(catalog, catalog.stacks, design.stack, file, "stack")
+    fluid = _lookup(catalog, catalog.fluids, design.fluid, file, "fluid")
+    seal = _lookup(catalog, catalog.seals, design.seal, file, "seal")
+    amplifier = _lookup(catalog, catalog.amplifiers, design.amplifier, file, "amplifier")
+    voltage = design.voltage or stack.max_voltage
+    if voltage > stack.max_voltage * (1 + 1e-9):
+        raise InputError(file, "voltage", f"expected at most the stack's rated {stack.max_voltage:g} V, got {voltage:g} V")
+    ratio, wide_area = _geometry(design, stack, voltage, seal, warnings)
+    bw, bw_source = stack_bouc_wen(stack, reference_bouc_wen(catalog.stacks))
+    if bw_source.startswith("assumed"):
+        warnings.append(f"Bouc-Wen parameters of {stack.id}: {bw_source.removeprefix('assumed: ')}")
+    if fluid is None:
+        warnings.append("no fluid given: ISO VG 15 mineral oil, bulk modulus 1.5 GPa assumed")
+    if seal is None and design.wide_friction is None:
+        warnings.append("no seal given: the seed's 10 N (wide) and 0.2 N (narrow) seal friction assumed")
+    overrides = design.model_dump(include={"wide_piston_mass", "narrow_piston_mass", "wide_friction",
+                                           "narrow_friction", "breakaway_ratio", "loss_coefficient",
+                                           "bulk_modulus", "no_return"})
+    row = part_row(stack, design.n_stacks, ratio, wide_area, voltage, bw, design.temperature,
+                   design.wide_gap, fluid, seal, amplifier, design.pressure_rating, overrides)
+    c = Candidates.from_rows([row])
+    static = {k: float(np.asarray(v).ravel()[0]) for k, v in static_figures(c, design.rise_time).items()}
+    cases = load_cases(design.load)
+    sims = simulate_cases(c, [case["load_N"] for case in cases], design.rise_time)
+    simulated = [dict(case, **{k: _num(v[0]) for k, v in sim.items()}) for case, sim in zip(cases, sims)]
+    return {
+        "technology": "piezohydraulic",
+        "design": {"stack": stack.id, "n_stacks": design.n_stacks, "ratio": ratio, "voltage_V": voltage,
+                   "fluid": design.fluid, "seal": design.seal, "amplifier": design.amplifier,
+                   "temperature_degC": design.temperature, "rise_time_s": design.rise_time,
+                   "bouc_wen": dict(zip(["d33", "alpha", "beta", "gamma", "delta", "n"], bw.as_array().tolist())),
+                   "bouc_wen_source": bw_source},
+        "static": static,
+        "simulated": {"cases": simulated, "worst": _worst(simulated)},
+        "metrics": {k: float(v[0]) for k, v in metrics(c, design.rise_time).items()},
+        "warnings": warnings,
+    }
+
+
+def _geometry(design: PiezoDesignFile, stack, voltage, seal, warnings) -> tuple[float, float]:
+    """Ratio and wide piston area: from the diameters when given (warning if
+    a stated ratio disagrees), else the wide area that keeps the blocked
+    pressure at the rating (PHYSICS-NOTES, "Pressure")."""
+    if design.wide_diameter is not None:
+        ratio = float(hydraulics.area_ratio(design.wide_diameter, design.narrow_diameter))
+        if design.ratio is not None and abs(design.ratio / ratio - 1) > RATIO_TOLERANCE:
+            warnings.append(f"stated ratio R = {design.ratio:g} disagrees with the diameters "
+                            f"({design.wide_diameter * 1e3:.2f} / {design.narrow_diameter * 1e3:.2f} mm give "
+                            f"R = {ratio:.1f}); using R = {ratio:.1f}")
+        return ratio, float(hydraulics.area(design.wide_diameter))
+    rating = design.pressure_rating or (seal.pressure_rating if seal else DEFAULT_PRESSURE_RATING_PA)
+    stack_force = design.n_stacks * stack.stiffness * stack.stroke * voltage / stack.max_voltage
+    wide_area = stack_force / rating
+    warnings.append(f"no diameters given: wide piston sized for a blocked pressure of {rating / 1e6:.0f} MPa "
+                    f"({2 * math.sqrt(wide_area / math.pi) * 1e3:.0f} mm bore)")
+    return float(design.ratio), wide_area
+
+
+def _num(value):
+    value = float(value)
+    return value if math.isfinite(value) else None
+
+
+def _worst(cases: list[dict]) -> dict:
+    """The case with the largest load: what the contracts' 'simulated' means."""
+    if not cases:
+        return {}
+    return max(cases, key=lambda case: case["load_N"])
+
+
+def evaluate_dc(design: DCDesignFile, catalog: Catalog, file: str) -> dict:
+    act = _lookup(catalog, catalog.dc_actuators, design.actuator, file, "actuator")
+    cases = load_cases(design.load)
+    sims = dc_engine.step_cases(act, design.step, [c["load_N"] for c in cases], design.duration)
+    simulated = [dict(case, **{k: _num(v) for k, v in sim.items()}) for case, sim in zip(cases, sims)]
+    warnings = []
+    if design.temperature > act.max_temperature:
+        warnings.append(f"{act.id} is rated to {act.max_temperature:g} degC, below {design.temperature:g} degC")
+    return {
+        "technology": "dc_motor",
+        "design": {"actuator": act.id, "step_m": design.step, "pid": act.pid.model_dump(),
+                   "c1": act.c1, "c2": act.c2, "screw_lead_m": act.screw_lead},
+        "static": dc_engine.static_figures(act, max(c["load_N"] for c in cases) if cases else 0.0),
+        "simulated": {"cases": simulated, "worst": _worst(simulated)},
+        "metrics": dc_engine.metrics(act),
+        "warnings": warnings,
+    }

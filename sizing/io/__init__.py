@@ -1,0 +1,1 @@
+"""Edges of the tool: input files in, SI dataclasses out; atomic writes."""

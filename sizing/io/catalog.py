@@ -1,0 +1,249 @@
+"""The parts catalog: one TOML file per part kind (catalogs/README.md).
+
+Entries are validated with pydantic into frozen models whose quantity
+fields are SI floats (temperatures in degC). Each entry keeps its provenance:
+``source``, ``retrieved`` and a status per value (datasheet, seed, measured,
+or "assumed: reason").
+"""
+from __future__ import annotations
+
+import datetime as dt
+import hashlib
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Literal, Optional
+
+from pydantic import field_validator, model_validator
+
+from ..errors import InputError
+from .schema import Qty, Strict, load_toml, parse_model
+
+DEFAULT_CATALOG = Path(__file__).resolve().parents[2] / "catalogs"
+ID_PATTERN = re.compile(r"^[a-z0-9][a-z0-9.\-]*$")
+STATUS_PATTERN = re.compile(r"^((datasheet|seed|measured)(: .+)?|assumed: .+)$")
+
+
+class Entry(Strict):
+    id: str
+    name: str
+    manufacturer: str
+    source: str
+    retrieved: dt.date
+    status: dict[str, str]
+    notes: Optional[str] = None
+
+    @field_validator("id")
+    @classmethod
+    def _id(cls, value: str) -> str:
+        if not ID_PATTERN.match(value):
+            raise ValueError(f"expected lower case letters, digits, '.' and '-', got {value!r}")
+        return value
+
+    @field_validator("status")
+    @classmethod
+    def _status(cls, value: dict[str, str]) -> dict[str, str]:
+        for key, text in value.items():
+            if not STATUS_PATTERN.match(text):
+                raise ValueError(f'status of {key}: expected "datasheet", "seed", "measured" (each optionally followed by ": note") or "assumed: <reason>", got {text!r}')
+        return value
+
+    @model_validator(mode="after")
+    def _every_value_has_a_status(self):
+        missing = [name for name in self.quantity_fields() if name in self.model_fields_set and name not in self.status]
+        if missing:
+            raise ValueError(f"status: no status for {', '.join(missing)}")
+        unknown = [name for name in self.status if name not in self.quantity_fields() and name != "bouc_wen"]
+        if unknown:
+            raise ValueError(f"status: unknown field {', '.join(unknown)}")
+        return self
+
+    @classmethod
+    def quantity_fields(cls) -> list[str]:
+        skip = set(Entry.model_fields) | {"bouc_wen", "pid", "material", "type", "section"}
+        return [name for name in cls.model_fields if name not in skip]
+
+    def assumed(self) -> dict[str, str]:
+        """Fields whose value is assumed, with the reason."""
+        return {k: v.removeprefix("assumed: ") for k, v in self.status.items() if v.startswith("assumed")}
+
+
+class BoucWenTable(Strict):
+    d33: Qty("strain_per_volt", positive=True)
+    alpha: float
+    beta: float
+    gamma: float
+    delta: float
+    n: float
+
+    @field_validator("n")
+    @classmethod
+    def _n(cls, value: float) -> float:
+        if not value > 0:
+            raise ValueError(f"expected a positive exponent, got {value!r}")
+        return value
+
+
+class Stack(Entry):
+    stiffness: Qty("stiffness", positive=True)
+    stroke_per_volt: Qty("strain_per_volt", positive=True)
+    max_voltage: Qty("voltage", positive=True)
+    min_voltage: Qty("voltage") = 0.0
+    stroke: Qty("length", positive=True)
+    blocked_force: Qty("force", positive=True)
+    capacitance: Qty("capacitance", positive=True)
+    mass: Qty("mass", positive=True)
+    length: Qty("length", positive=True)
+    diameter: Qty("length", positive=True)
+    section: Literal["round", "square"] = "round"
+    max_temperature: Qty("temperature")
+    curie_temperature: Optional[Qty("temperature")] = None
+    stroke_temperature_coefficient: Qty("per_kelvin") = 0.0
+    cost_usd: Qty("dimensionless", positive=True)
+    bouc_wen: Optional[BoucWenTable] = None
+
+
+class Fluid(Entry):
+    density: Qty("density", positive=True)
+    viscosity_40C: Qty("kinematic_viscosity", positive=True)
+    viscosity_100C: Qty("kinematic_viscosity", positive=True)
+    bulk_modulus: Qty("pressure", positive=True)
+    bulk_modulus_temperature_coefficient: Qty("per_kelvin") = 0.0
+    thermal_expansion: Qty("per_kelvin", positive=True)
+    min_temperature: Qty("temperature")
+    max_temperature: Qty("temperature")
+    flash_point: Qty("temperature")
+    cost_usd: Qty("dimensionless", nonnegative=True)
+
+
+class Seal(Entry):
+    material: str
+    type: str
+    friction_per_length: Qty("friction_per_length", nonnegative=True)
+    friction_pressure_coefficient: Qty("friction_per_length_pressure", nonnegative=True) = 0.0
+    breakaway_ratio: Qty("dimensionless", positive=True)
+    min_temperature: Qty("temperature")
+    max_temperature: Qty("temperature")
+    pressure_rating: Qty("pressure", positive=True)
+    cost_usd: Qty("dimensionless", nonnegative=True)
+
+
+class Amplifier(Entry):
+    max_voltage: Qty("voltage", positive=True)
+    min_voltage: Qty("voltage") = 0.0
+    max_current: Qty("current", positive=True)
+    continuous_current: Qty("current", positive=True)
+    max_power: Optional[Qty("power", positive=True)] = None
+    slew_rate: Optional[Qty("slew", positive=True)] = None
+    mass: Qty("mass", positive=True)
+    max_temperature: Qty("temperature")
+    cost_usd: Qty("dimensionless", nonnegative=True)
+
+
+class PIDTable(Strict):
+    rate: Qty("frequency", positive=True)
+    kp: float
+    ki: float
+    kd: float
+    derivative_on: Literal["error", "measurement"] = "error"
+
+
+class DCActuator(Entry):
+    max_force: Qty("force", positive=True)
+    continuous_force: Qty("force", positive=True)
+    max_speed: Qty("speed", positive=True)
+    stroke: Qty("length", positive=True)
+    mass: Qty("mass", positive=True)
+    length: Qty("length", positive=True)
+    diameter: Qty("length", positive=True)
+    min_temperature: Qty("temperature")
+    max_temperature: Qty("temperature")
+    screw_lead: Qty("length", positive=True)
+    screw_efficiency: Qty("dimensionless", positive=True)
+    torque_constant: Qty("torque_constant", positive=True)
+    c1: float
+    c2: float
+    current_limit: Qty("current", positive=True)
+    supply_voltage: Qty("voltage", positive=True)
+    cost_usd: Qty("dimensionless", nonnegative=True)
+    pid: PIDTable
+
+
+# file name -> (TOML array name, model)
+KINDS: dict[str, tuple[str, type[Entry]]] = {
+    "stacks.toml": ("stack", Stack),
+    "fluids.toml": ("fluid", Fluid),
+    "seals.toml": ("seal", Seal),
+    "amplifiers.toml": ("amplifier", Amplifier),
+    "dc_actuators.toml": ("dc_actuator", DCActuator),
+}
+
+
+@dataclass
+class Catalog:
+    folder: Path
+    stacks: dict[str, Stack] = field(default_factory=dict)
+    fluids: dict[str, Fluid] = field(default_factory=dict)
+    seals: dict[str, Seal] = field(default_factory=dict)
+    amplifiers: dict[str, Amplifier] = field(default_factory=dict)
+    dc_actuators: dict[str, DCActuator] = field(default_factory=dict)
+    files: dict[str, str] = field(default_factory=dict)   # file name -> sha256
+
+    def groups(self) -> dict[str, dict[str, Entry]]:
+        return {"stack": self.stacks, "fluid": self.fluids, "seal": self.seals,
+                "amplifier": self.amplifiers, "dc_actuator": self.dc_actuators}
+
+    def entries(self) -> list[tuple[str, Entry]]:
+        return [(kind, e) for kind, group in self.groups().items() for e in group.values()]
+
+    def get(self, entry_id: str) -> tuple[str, Entry]:
+        for kind, group in self.groups().items():
+            if entry_id in group:
+                return kind, group[entry_id]
+        raise KeyError(entry_id)
+
+    @property
+    def sha256(self) -> str:
+        digest = hashlib.sha256()
+        for name in sorted(self.files):
+            digest.update(f"{name}:{self.files[name]}\n".encode())
+        return digest.hexdigest()
+
+
+def load_catalog(folder: str | Path | None = None) -> Catalog:
+    """Read and validate every catalog file in ``folder`` (default: the
+    repository's catalogs/). Raises InputError naming file, entry and field."""
+    folder = Path(folder) if folder is not None else DEFAULT_CATALOG
+    if not folder.is_dir():
+        raise InputError(str(folder), None, "expected a catalog folder")
+    catalog = Catalog(folder=folder)
+    seen: dict[str, str] = {}
+    found = False
+    for file_name, (array_name, model) in KINDS.items():
+        path = folder / file_name
+        if not path.exists():
+            continue
+        found = True
+        catalog.files[file_name] = hashlib.sha256(path.read_bytes()).hexdigest()
+        data = load_toml(path)
+        unknown = [k for k in data if k != array_name]
+        if unknown:
+            raise InputError(str(path), unknown[0], f"unknown table; expected [[{array_name}]] entries")
+        group = catalog.groups()[array_name]
+        for index, raw in enumerate(data.get(array_name, [])):
+            label = f"[[{array_name}]] {raw.get('id', '#' + str(index + 1))}" if isinstance(raw, dict) else f"[[{array_name}]] #{index + 1}"
+            entry = _parse_entry(model, raw, path, label)
+            if entry.id in seen:
+                raise InputError(str(path), f"{label}.id", f"duplicate id, already defined in {seen[entry.id]}")
+            seen[entry.id] = file_name
+            group[entry.id] = entry
+    if not found:
+        raise InputError(str(folder), None, f"no catalog files ({', '.join(KINDS)})")
+    return catalog
+
+
+def _parse_entry(model: type[Entry], raw: object, path: Path, label: str) -> Entry:
+    try:
+        return parse_model(model, raw, path)
+    except InputError as exc:
+        raise InputError(str(path), f"{label}: {exc.field}" if exc.field else label, exc.message) from None

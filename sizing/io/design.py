@@ -1,0 +1,81 @@
+"""design.toml: one design for ``sizing evaluate`` (CONTRACTS.md)."""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Literal, Optional, Union
+
+from pydantic import Field, model_validator
+
+from .schema import Qty, Strict, load_toml, parse_model
+
+
+class LoadTable(Strict):
+    """The hinged control surface of the seed's Figure 7, or plain forces."""
+
+    span: Qty("length", positive=True) = 15 * 0.0254
+    chord: Qty("length", positive=True) = 10 * 0.0254
+    thickness: Qty("length", positive=True) = 0.0625 * 0.0254
+    dynamic_pressure: list[Qty("pressure", nonnegative=True)] = Field(default_factory=lambda: [10e3, 25e3])
+    force: Optional[list[Qty("force")]] = None      # explicit forces instead of pressures
+    stiffness: Qty("stiffness", nonnegative=True) = 0.0
+
+
+class PiezoDesignFile(Strict):
+    technology: Literal["piezohydraulic"]
+    stack: str
+    n_stacks: int = Field(gt=0, le=1000)
+    ratio: Optional[Qty("dimensionless", positive=True)] = None
+    voltage: Optional[Qty("voltage", positive=True)] = None
+    wide_diameter: Optional[Qty("length", positive=True)] = None
+    narrow_diameter: Optional[Qty("length", positive=True)] = None
+    fluid: Optional[str] = None
+    seal: Optional[str] = None
+    amplifier: Optional[str] = None
+    wide_gap: Qty("length", positive=True) = 3e-3
+    pressure_rating: Optional[Qty("pressure", positive=True)] = None
+    wide_piston_mass: Optional[Qty("mass", positive=True)] = None
+    narrow_piston_mass: Optional[Qty("mass", positive=True)] = None
+    wide_friction: Optional[Qty("force", nonnegative=True)] = None
+    narrow_friction: Optional[Qty("force", nonnegative=True)] = None
+    breakaway_ratio: Optional[Qty("dimensionless", positive=True)] = None
+    loss_coefficient: Optional[Qty("dimensionless", nonnegative=True)] = None
+    bulk_modulus: Optional[Qty("pressure", positive=True)] = None
+    rise_time: Qty("time", positive=True) = 0.1
+    temperature: Qty("temperature") = 25.0
+    no_return: bool = False
+    load: LoadTable = Field(default_factory=LoadTable)
+    notes: Optional[str] = None
+
+    @model_validator(mode="after")
+    def _geometry(self):
+        if (self.wide_diameter is None) != (self.narrow_diameter is None):
+            raise ValueError("give both wide_diameter and narrow_diameter, or neither")
+        if self.ratio is None and self.wide_diameter is None:
+            raise ValueError("give ratio, or wide_diameter and narrow_diameter")
+        if self.wide_diameter is not None and self.wide_diameter <= self.narrow_diameter:
+            raise ValueError("wide_diameter must be larger than narrow_diameter")
+        return self
+
+
+class DCDesignFile(Strict):
+    technology: Literal["dc_motor"]
+    actuator: str
+    step: Qty("length", positive=True) = 0.04
+    duration: Qty("time", positive=True) = 1.0
+    temperature: Qty("temperature") = 25.0
+    load: LoadTable = Field(default_factory=LoadTable)
+    notes: Optional[str] = None
+
+
+DesignFile = Union[PiezoDesignFile, DCDesignFile]
+
+
+def load_design(path: str | Path) -> DesignFile:
+    data = load_toml(path)
+    technology = data.get("technology")
+    if technology == "piezohydraulic":
+        return parse_model(PiezoDesignFile, data, path)
+    if technology == "dc_motor":
+        return parse_model(DCDesignFile, data, path)
+    from ..errors import InputError
+    raise InputError(str(path), "technology", f'expected "piezohydraulic" or "dc_motor", got {technology!r}')

@@ -1,0 +1,110 @@
+"""Shared pieces for validating input files with pydantic.
+
+``Qty("length", positive=True)`` is a float field that accepts ``"40 mm"`` or
+a bare SI number, rejects NaN and wrong dimensions, and converts to SI once.
+``parse_model`` turns pydantic's errors into one ``InputError`` line naming
+the file and the field, as CONTRACTS.md asks.
+"""
+from __future__ import annotations
+
+import math
+import tomllib
+from pathlib import Path
+from typing import Annotated, Any, TypeVar
+
+from pydantic import BaseModel, BeforeValidator, ConfigDict, ValidationError
+
+from ..errors import InputError
+from ..units import KINDS, UnitError, to_si
+
+M = TypeVar("M", bound=BaseModel)
+
+
+class Strict(BaseModel):
+    """Base of every input model: unknown keys are typos, values are final."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True, allow_inf_nan=False)
+
+
+def _quantity_validator(kind: str, positive: bool, nonnegative: bool):
+    word = KINDS[kind][1]
+
+    def convert(value: Any) -> float:
+        try:
+            number = to_si(value, kind)
+        except UnitError as exc:
+            raise ValueError(str(exc)) from None
+        if positive and not number > 0:
+            raise ValueError(f"expected a positive value ({word}), got {value!r}")
+        if nonnegative and number < 0:
+            raise ValueError(f"expected a non-negative value ({word}), got {value!r}")
+        return number
+
+    return convert
+
+
+def Qty(kind: str, *, positive: bool = False, nonnegative: bool = False):
+    """Annotated float type for a quantity of ``kind`` (see ``units.KINDS``)."""
+    return Annotated[float, BeforeValidator(_quantity_validator(kind, positive, nonnegative))]
+
+
+def finite(value: float, name: str = "value") -> float:
+    if not math.isfinite(value):
+        raise ValueError(f"expected a finite {name}, got {value!r}")
+    return value
+
+
+def load_toml(path: str | Path) -> dict:
+    """Read a TOML file; a missing or malformed file is an InputError."""
+    path = Path(path)
+    try:
+        with path.open("rb") as handle:
+            return tomllib.load(handle)
+    except FileNotFoundError:
+        raise InputError(str(path), None, "file not found") from None
+    except IsADirectoryError:
+        raise InputError(str(path), None, "expected a file, got a folder") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(str(path), None, f"malformed TOML: {exc}") from None
+    except UnicodeDecodeError:
+        raise InputError(str(path), None, "not a text file") from None
+
+
+def field_path(loc: tuple) -> str:
+    """('load', 'span') -> '[load].span'; ('ratio',) -> 'ratio'."""
+    names = [str(p) if not isinstance(p, int) else f"#{p + 1}" for p in loc]
+    if not names:
+        return ""
+    if len(names) == 1:
+        return names[0]
+    return "[" + ".".join(names[:-1]) + "]." + names[-1]
+
+
+def first_error(exc: ValidationError) -> tuple[str, str]:
+    """The first pydantic error as (field path, message for a person)."""
+    err = exc.errors()[0]
+    loc = tuple(err.get("loc", ()))
+    message = err.get("msg", "invalid value")
+    message = message.removeprefix("Value error, ")
+    kind = err.get("type", "")
+    if kind == "missing":
+        message = "required field is missing"
+    elif kind == "extra_forbidden":
+        message = "unknown field (check the spelling against the documentation)"
+    elif "input" in err and "expected" not in message:
+        message = f"{message}, got {err['input']!r}"
+    return field_path(loc), message
+
+
+def parse_model(model: type[M], data: Any, file: str | Path, prefix: tuple = ()) -> M:
+    try:
+        return model.model_validate(data)
+    except ValidationError as exc:
+        field, message = first_error(exc)
+        if prefix:
+            field = field_path(prefix + tuple(_split(field)))
+        raise InputError(str(file), field or None, message) from None
+
+
+def _split(field: str) -> list[str]:
+    return [p for p in field.replace("[", "").replace("]", "").split(".") if p]

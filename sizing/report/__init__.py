@@ -1,0 +1,1 @@
+"""Reports: text summaries for the terminal and self-contained HTML."""

@@ -1,0 +1,1 @@
+"""Batch simulators: many candidates at once, compiled with numba."""

@@ -1,0 +1,259 @@
+"""Dynamic simulation of the piezohydraulic actuator, many candidates at once.
+
+Model (seed eqs. 1-10 with the corrections of PHYSICS-NOTES):
+- stacks: non-symmetric Bouc-Wen free displacement (eqs. 1-2) behind the
+  stack stiffness (eq. 3), optionally with first-order creep and one-sided
+  contact (no return mechanism: stacks push but cannot pull);
+- wide piston: its mass is negligible against the output mass reflected by
+  R^2 (PHYSICS-NOTES), so it is quasi-static: it sits where the stack force,
+  the oil pressure and its seal friction balance. With friction this is a
+  play (stick band) solved exactly each step, so it cannot chatter;
+- oil: a linear spring p = beta (A_w x - A_n y - V_leak) / V0 (fluid
+  compliance), with optional leakage V_leak' = G p;
+- narrow (output) piston: a mass with the flow loss of eqs. 8-9 written
+  u|u| and direction-aware (PHYSICS-NOTES item 5), viscous damping, Karnopp
+  stick-slip seal friction (breakaway > running) and the load
+  F_load = F0 + k_L y.
+
+Integration: semi-implicit Euler at a fixed step chosen per candidate from
+its fastest mode (dt <= 0.2 / omega_max). A velocity that would change sign
+inside a step under friction is set to zero and the piston sticks, which is
+what keeps stick-slip free of chattering. The initial state is the static
+equilibrium under the load with zero friction; positions are reported from
+that rest point (CONTRACTS.md, "Test campaigns").
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, fields
+
+import numba
+import numpy as np
+
+from ..errors import SimulationError
+from ..physics.bouc_wen import hysteresis_step
+
+# Parameter columns of the matrix handed to the compiled kernel.
+PARAMS = (
+    "k_stacks", "d33", "alpha", "beta", "gamma", "delta", "n_bw", "h0",
+    "wide_area", "narrow_area", "oil_volume", "bulk_modulus", "narrow_mass",
+    "density", "k_contract", "k_expand",
+    "wide_friction", "narrow_friction", "wide_breakaway", "narrow_breakaway",
+    "load_force", "load_stiffness", "viscous_damping", "leak_conductance",
+    "creep_fraction", "creep_time", "slew_rate", "no_return", "dt_max",
+)
+IDX = {name: i for i, name in enumerate(PARAMS)}
+CHANNELS = ("position_m", "pressure_Pa", "wide_position_m", "voltage_V")
+
+
+@dataclass
+class PiezoHydraulicModel:
+    """Parameters of the dynamic model, each a float or an array (n_cand,).
+
+    SI throughout: N/m, m/V, m^2, m^3, Pa, kg, kg/m^3, N, N s/m, m^3/(s Pa),
+    s, V/s. Breakaway fields are ratios static/running friction (>= 1).
+    ``slew_rate`` <= 0 means unlimited; ``creep_time`` <= 0 means no creep.
+    """
+
+    k_stacks: object
+    d33: object
+    alpha: object
+    beta: object
+    gamma: object
+    delta: object
+    n_bw: object
+    wide_area: object
+    narrow_area: object
+    oil_volume: object
+    bulk_modulus: object
+    narrow_mass: object
+    density: object = 870.0
+    k_contract: object = 0.5
+    k_expand: object = 1.0
+    wide_friction: object = 0.0
+    narrow_friction: object = 0.0
+    wide_breakaway: object = 1.0
+    narrow_breakaway: object = 1.0
+    load_force: object = 0.0
+    load_stiffness: object = 0.0
+    viscous_damping: object = 0.0
+    leak_conductance: object = 0.0
+    creep_fraction: object = 0.0
+    creep_time: object = 0.0
+    slew_rate: object = 0.0
+    no_return: object = 0.0
+    h0: object = 0.0
+    dt_max: object = 5e-5
+
+    def matrix(self) -> np.ndarray:
+        """(n_cand, len(PARAMS)) float matrix in the kernel's column order."""
+        values = [np.asarray(getattr(self, name), dtype=float) for name in PARAMS]
+        n = max(v.size for v in values)
+        return np.column_stack([np.broadcast_to(v, (n,)) for v in values]).astype(float)
+
+    @property
+    def n_candidates(self) -> int:
+        return self.matrix().shape[0]
+
+    def replace(self, **changes) -> "PiezoHydraulicModel":
+        data = {f.name: getattr(self, f.name) for f in fields(self)}
+        data.update(changes)
+        return PiezoHydraulicModel(**data)
+
+
+def stable_step(P: np.ndarray) -> np.ndarray:
+    """Per-candidate time step from the stiffest mode of the output piston
+    (oil column with the wide piston stuck, plus the load spring)."""
+    A_n = P[:, IDX["narrow_area"]]
+    k_oil = P[:, IDX["bulk_modulus"]] * A_n**2 / P[:, IDX["oil_volume"]]
+    k = k_oil + np.abs(P[:, IDX["load_stiffness"]])
+    m = P[:, IDX["narrow_mass"]]
+    omega = np.sqrt(k / m)
+    dt = np.minimum(P[:, IDX["dt_max"]], 0.2 / omega)
+    damping = P[:, IDX["viscous_damping"]]
+    dt = np.where(damping > 0, np.minimum(dt, 0.5 * m / np.maximum(damping, 1e-300)), dt)
+    return dt
+
+
+@numba.njit(cache=True)
+def _equilibrium(K, xf, A_w, A_n, V0, bulk, F0, kL):
+    """Static rest under the load, no friction: returns x, y, p."""
+    M = np.array([[K, 0.0, A_w],
+                  [bulk * A_w / V0, -bulk * A_n / V0, -1.0],
+                  [0.0, -kL, A_n]])
+    rhs = np.array([K * xf, 0.0, F0])
+    sol = np.linalg.solve(M, rhs)
+    return sol[0], sol[1], sol[2]
+
+
+@numba.njit(cache=True)
+def _interp(t, t_in, v_row, j):
+    """Linear interpolation with a forward-moving index j (returns v, j)."""
+    n = t_in.shape[0]
+    while j < n - 2 and t_in[j + 1] <= t:
+        j += 1
+    t0, t1 = t_in[j], t_in[j + 1]
+    if t <= t0:
+        return v_row[j], j
+    if t >= t1:
+        return v_row[j + 1], j
+    w = (t - t0) / (t1 - t0)
+    return v_row[j] * (1.0 - w) + v_row[j + 1] * w, j
+
+
+@numba.njit(cache=True)
+def _wide_piston(x, xf, y, v_leak, K, A_w, A_n, V0, bulk, F_run, thr, no_return):
+    """Quasi-static wide piston with friction (play). Returns x, sliding."""
+    kf = bulk * A_w * A_w / V0
+    c = bulk * A_w / V0 * (A_n * y + v_leak)       # N(x) = K(xf-x)+ + c - kf x
+    stack = K * (xf - x)
+    if no_return > 0.5 and stack < 0.0:
+        stack = 0.0
+    N = stack + c - kf * x
+    if abs(N) <= thr:
+        return x, False
+    target = F_run if N > 0.0 else -F_run
+    x_new = (K * xf + c - target) / (K + kf)
+    if no_return > 0.5 and x_new > xf:
+        x_new = (c - target) / kf
+    return x_new, True
+
+
+@numba.njit(cache=True)
+def _narrow_accel(F, u, F_run, F_static, m):
+    """Karnopp friction: acceleration of the output piston (0 when stuck)."""
+    if u == 0.0:
+        if abs(F) <= F_static:
+            return 0.0
+        return (F - (F_run if F > 0.0 else -F_run)) / m
+    return (F - (F_run if u > 0.0 else -F_run)) / m
+
+
+@numba.njit(cache=True, parallel=True)
+def _simulate(P, dts, t_in, V_in, t_out, v_stride):
+    n_cand = P.shape[0]
+    n_out = t_out.shape[0]
+    out = np.empty((n_cand, 4, n_out))
+    for c in numba.prange(n_cand):
+        _simulate_one(P[c], dts[c], t_in, V_in[c * v_stride], t_out, out[c])
+    return out
+
+
+@numba.njit(cache=True)
+def _simulate_one(p, dt_max, t_in, v_row, t_out, rec):
+    K, d33, al, be, ga, de, nb, h = p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]
+    A_w, A_n, V0, bulk, m = p[8], p[9], p[10], p[11], p[12]
+    rho, k_con, k_exp = p[13], p[14], p[15]
+    Fw, Fn, brk_w, brk_n = p[16], p[17], p[18], p[19]
+    F0, kL, cv, G = p[20], p[21], p[22], p[23]
+    kappa, tau, slew, no_ret = p[24], p[25], p[26], p[27]
+    R = A_w / A_n
+    bern = 1.0 - 1.0 / (R * R)
+    j = 0
+    v, j = _interp(t_out[0], t_in, v_row, j)
+    xf_lin = d33 * v + h
+    creep = kappa * xf_lin
+    x, y, pr = _equilibrium(K, xf_lin + creep, A_w, A_n, V0, bulk, F0, kL)
+    y0 = y
+    u = 0.0
+    v_leak = 0.0
+    sliding = False
+    t = t_out[0]
+    rec[0, 0], rec[1, 0], rec[2, 0], rec[3, 0] = 0.0, pr, x, v
+    for k in range(t_out.shape[0] - 1):
+        span = t_out[k + 1] - t
+        nsub = int(np.ceil(span / dt_max - 1e-9))
+        if nsub < 1:
+            nsub = 1
+        dt = span / nsub
+        for _ in range(nsub):
+            t += dt
+            v_cmd, j = _interp(t, t_in, v_row, j)
+            v_new = v_cmd
+            if slew > 0.0:
+                step = slew * dt
+                v_new = min(max(v_cmd, v - step), v + step)
+            h = hysteresis_step(h, v, v_new, dt, al, be, ga, de, nb)
+            v = v_new
+            xf_lin = d33 * v + h
+            if tau > 0.0:
+                creep += dt * (kappa * xf_lin - creep) / tau
+            v_leak += G * pr * dt
+            thr = Fw if sliding else Fw * brk_w
+            x, sliding = _wide_piston(x, xf_lin + creep, y, v_leak, K, A_w, A_n, V0, bulk, Fw, thr, no_ret)
+            pr = bulk * (A_w * x - A_n * y - v_leak) / V0
+            kloss = k_con if u >= 0.0 else k_exp
+            p_n = pr - 0.5 * rho * u * abs(u) * (bern + kloss)
+            F = A_n * p_n - (F0 + kL * y) - cv * u
+            a = _narrow_accel(F, u, Fn, Fn * brk_n, m)
+            u_new = u + a * dt
+            if u != 0.0 and u_new * u < 0.0:
+                u_new = 0.0
+            u = u_new
+            y += u * dt
+        t = t_out[k + 1]
+        rec[0, k + 1] = y - y0
+        rec[1, k + 1] = pr
+        rec[2, k + 1] = x
+        rec[3, k + 1] = v
+    return rec
+
+
+def simulate(model: PiezoHydraulicModel, t_in, v_in, t_out=None) -> dict[str, np.ndarray]:
+    """Simulate every candidate of ``model`` driven by voltage v_in(t_in).
+
+    t_in : (n_in,) s, increasing. v_in : (n_in,) shared or (n_cand, n_in), V.
+    t_out : (n_out,) s, the times to report (default t_in).
+    Returns {channel: (n_cand, n_out)} for CHANNELS, positions from rest.
+    Raises SimulationError when a candidate's state stops being finite.
+    """
+    P = model.matrix()
+    t_in = np.ascontiguousarray(t_in, dtype=float)
+    V = np.ascontiguousarray(np.atleast_2d(np.asarray(v_in, dtype=float)))
+    if V.shape[0] not in (1, P.shape[0]):
+        raise ValueError("v_in must be shared or one row per candidate")
+    t_out = t_in if t_out is None else np.ascontiguousarray(t_out, dtype=float)
+    out = _simulate(P, stable_step(P), t_in, V, t_out, np.int64(V.shape[0] > 1))
+    bad = ~np.all(np.isfinite(out), axis=(1, 2))
+    if bad.any():
+        raise SimulationError(f"simulation diverged for candidates {np.flatnonzero(bad).tolist()}")
+    return {name: out[:, i, :] for i, name in enumerate(CHANNELS)}

@@ -1,0 +1,38 @@
+"""A test campaign folder: rig.toml and runs/*.csv (CONTRACTS.md)."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+from ..errors import InputError
+from .rig import Rig, load_rig
+from .runs import Run, read_runs, split_holdout
+
+
+@dataclass
+class Campaign:
+    folder: Path
+    rig: Rig
+    runs: list[Run]
+
+    @property
+    def kind(self) -> str:
+        return self.rig.kind
+
+
+def load_campaign(folder: str | Path) -> Campaign:
+    folder = Path(folder)
+    if not folder.is_dir():
+        raise InputError(str(folder), None, "expected a campaign folder with rig.toml and runs/*.csv")
+    rig_path = folder / "rig.toml"
+    if not rig_path.exists():
+        raise InputError(str(rig_path), None, "missing: a campaign needs rig.toml (the nominal model)")
+    rig = load_rig(rig_path)
+    paths = sorted((folder / "runs").glob("*.csv"))
+    if not paths:
+        raise InputError(str(folder / "runs"), None, "no runs: expected runs/NAME.csv files")
+    return Campaign(folder=folder, rig=rig, runs=read_runs(paths, rig.kind))
+
+
+def campaign_split(campaign: Campaign, holdout: list[str] | None):
+    return split_holdout(campaign.runs, holdout, str(campaign.folder))

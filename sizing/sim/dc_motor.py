@@ -102,7 +102,7 @@ def _simulate_one(p, t_ref, r_row, t_out, rec):
     e_prev = np.interp(t_out[0], t_ref, r_row) - y
     y_prev = y
     t = t_out[0]
-    i = 0.0
+    i = ki * integ          # the holding current, so the rest is a rest
     j = 0
     n_out = t_out.shape[0]
     while j < n_out:

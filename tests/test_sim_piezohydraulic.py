@@ -1,0 +1,122 @@
+"""Batch simulator of the piezohydraulic actuator: closed-form limits and
+stick-slip behaviour."""
+import numpy as np
+import pytest
+
+from sizing.physics import hydraulics
+from sizing.sim.piezohydraulic import PiezoHydraulicModel, simulate
+
+A_W, A_N = float(hydraulics.area(3.75 * 0.0254)), float(hydraulics.area(0.375 * 0.0254))  # seed Table 3, R = 100
+K = 3 * 1.96e7
+
+
+def prototype(**changes):
+    base = dict(k_stacks=K, d33=6.7e-7, alpha=0.0, beta=0.0, gamma=0.0, delta=0.0, n_bw=1.0,
+                wide_area=A_W, narrow_area=A_N, oil_volume=A_W * 3e-3 + A_N * 0.02, bulk_modulus=1.5e9,
+                narrow_mass=0.02)
+    base.update(changes)
+    return PiezoHydraulicModel(**base)
+
+
+def slow_ramp(v_max=150.0, rise=0.5, hold=0.3):
+    t = np.linspace(0, rise + hold, int((rise + hold) * 2000) + 1)
+    return t, np.clip(t / rise, 0, 1) * v_max
+
+
+def settled(y):
+    """Mean over the last 0.1 s: the frictionless stage rings lightly."""
+    return float(np.mean(y[-200:]))
+
+
+def k_out(model):
+    k_f = model.bulk_modulus * model.wide_area**2 / model.oil_volume
+    return K * k_f / (K + k_f) / (A_W / A_N) ** 2
+
+
+def test_linear_frictionless_stroke_is_R_d33_V():
+    t, v = slow_ramp()
+    y = simulate(prototype(), t, v)["position_m"][0]
+    assert settled(y) == pytest.approx(100 * 6.7e-7 * 150, rel=1e-3)
+
+
+def test_constant_load_does_not_change_travel_from_loaded_rest():
+    """The model starts at static equilibrium under the load (CONTRACTS)."""
+    t, v = slow_ramp()
+    out = simulate(prototype(load_force=np.array([0.0, 30.0])), t, v)
+    y = out["position_m"]
+    assert y[1, -1] == pytest.approx(y[0, -1], rel=1e-3)
+    # Pascal at rest: pressure x narrow area carries the load exactly
+    assert out["pressure_Pa"][1, 0] * A_N == pytest.approx(30.0, rel=1e-9)
+
+
+def test_load_spring_closed_form_with_fluid_compliance():
+    """Output spring k_L against the actuator's output stiffness k_out
+    (stacks and oil in series, reflected by R^2): y = S k_out / (k_out + k_L)."""
+    model = prototype(load_stiffness=5000.0)
+    t, v = slow_ramp()
+    y = settled(simulate(model, t, v)["position_m"][0])
+    S = 100 * 6.7e-7 * 150
+    assert y == pytest.approx(S * k_out(model) / (k_out(model) + 5000.0), rel=1e-3)
+
+
+def test_pascal_principle_held_voltage():
+    """With zero flow the stage obeys Pascal: the stack force equals p A_w
+    and p A_n equals the load."""
+    t = np.linspace(0, 0.5, 1001)
+    v = np.full_like(t, 100.0)
+    model = prototype(load_force=20.0)
+    out = simulate(model, t, v)
+    p = out["pressure_Pa"][0, -1]
+    x = out["wide_position_m"][0, -1]
+    assert K * (6.7e-7 * 100 - x) == pytest.approx(p * A_W, rel=1e-9)
+    assert p * A_N == pytest.approx(20.0, rel=1e-9)
+
+
+def test_coulomb_friction_leaves_a_dead_band():
+    """Narrow seal friction F_c on a frictionless ramp: at the end of the
+    ramp the piston stops short by at most F_c / k_out."""
+    t, v = slow_ramp(rise=0.5, hold=0.5)
+    model = prototype(narrow_friction=2.0)
+    y = simulate(model, t, v)["position_m"][0, -1]
+    S = 100 * 6.7e-7 * 150
+    assert S - 2.0 / k_out(model) - 1e-6 <= y <= S + 1e-9
+
+
+def test_stick_slip_moves_in_steps_without_chattering():
+    """Breakaway 4x running friction on the output seal, slow drive: the
+    output advances in distinct slips separated by stuck intervals, and never
+    reverses (chattering would show as velocity sign flips)."""
+    t, v = slow_ramp(rise=1.0, hold=0.0)
+    model = prototype(narrow_friction=1.0, narrow_breakaway=4.0)
+    y = simulate(model, t, v)["position_m"][0]
+    dy = np.diff(y)
+    stuck = np.abs(dy) < 1e-12
+    assert stuck.mean() > 0.5                   # mostly stuck
+    slips = np.count_nonzero(np.diff(stuck.astype(int)) == -1)
+    assert 3 <= slips < 200                     # a staircase, not a buzz
+    assert np.all(dy > -1e-9)                   # never moves backwards
+
+
+def test_no_return_keeps_the_output_out():
+    """Without a return mechanism the stacks cannot pull the piston back."""
+    t = np.linspace(0, 1.0, 2001)
+    v = np.interp(t, [0, 0.4, 0.8, 1.0], [0, 150, 0, 0])
+    model = prototype(no_return=np.array([0.0, 1.0]), narrow_friction=0.2)
+    y = simulate(model, t, v)["position_m"]
+    assert abs(y[0, -1]) < 1e-4                 # with return: back at rest
+    assert y[1, -1] > 0.9 * y[1].max()          # without: stays out
+
+
+def test_batch_equals_single_runs():
+    t, v = slow_ramp()
+    frictions = np.array([0.0, 0.5, 2.0])
+    batch = simulate(prototype(narrow_friction=frictions), t, v)["position_m"]
+    for i, f in enumerate(frictions):
+        single = simulate(prototype(narrow_friction=f), t, v)["position_m"][0]
+        np.testing.assert_array_equal(batch[i], single)
+
+
+def test_rejects_mismatched_input_rows():
+    t, v = slow_ramp()
+    with pytest.raises(ValueError, match="one row per candidate"):
+        simulate(prototype(narrow_friction=np.array([0.0, 1.0, 2.0])), t, np.vstack([v, v]))

@@ -19,5 +19,74 @@ def evaluate(design_path: str | Path, catalog_dir: str | Path | None = None) -> 
     design = load_design(design_path)
     cat = load_catalog(catalog_dir)
     if isinstance(design, PiezoDesignFile):
-        return evaluate_piezo(design, cat, str(design_path))
-    return evaluate_dc(design, cat, str(design_path))
+        result = evaluate_piezo(design, cat, str(design_path))
+    else:
+        result = evaluate_dc(design, cat, str(design_path))
+    # provenance: the catalog values this result rests on that are assumed
+    from .io.provenance import assumed_values
+    parts = {k: v for k, v in result["design"].items() if k in ("stack", "fluid", "seal", "amplifier", "actuator")}
+    result["assumed"] = assumed_values(cat, parts)
+    return result
+
+
+def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-out",
+          catalog_dir: str | Path | None = None, baseline: str | Path | None = None,
+          progress=None) -> dict:
+    """Size, verify and rank designs for a requirements file (CONTRACTS.md).
+
+    Writes results.json, candidates.csv and report.html into ``out_dir``
+    (atomically, after everything is computed and rendered; nothing when
+    ``out_dir`` is None). ``baseline``: an earlier results.json to compare
+    with ("changes" in the results, "What changed" in the report).
+    ``progress(stage, done, total)`` is called while candidates are sized and
+    simulated. Raises InputError for bad input before writing anything.
+    """
+    import json
+
+    from .engine.solve import solve as run
+    from .io.atomic import write_many
+    from .io.requirements import load_requirements
+    from .report.csv_table import candidates_csv
+    from .report.html import render
+
+    req, sha = load_requirements(requirements_path)
+    cat = load_catalog(catalog_dir)
+    old = _load_baseline(baseline) if baseline is not None else None
+    output = run(req, sha, cat, progress=progress)
+    results = output.results
+    if old is not None:
+        results["changes"] = _rank_changes(old, results)
+        results["baseline_sha256"] = old.get("requirements_sha256")
+    if out_dir is not None:
+        out = Path(out_dir)
+        files = {out / "results.json": json.dumps(results, indent=1, allow_nan=False) + "\n",
+                 out / "candidates.csv": candidates_csv(results),
+                 out / "report.html": render(results, output.traces)}
+        write_many(files)
+    return results
+
+
+def _load_baseline(path: str | Path) -> dict:
+    import json
+
+    from .errors import InputError
+    path = Path(path)
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise InputError(str(path), None, "file not found") from None
+    except (json.JSONDecodeError, UnicodeDecodeError, IsADirectoryError) as exc:
+        raise InputError(str(path), None, f"expected a results.json written by sizing solve ({exc})") from None
+    if not isinstance(data, dict) or not isinstance(data.get("candidates"), list):
+        raise InputError(str(path), "candidates", "expected a results.json with a list of candidates")
+    return data
+
+
+def _rank_changes(baseline: dict, results: dict) -> list[dict]:
+    """engine/changes.rank_changes when it exists (issue 6), else the minimal
+    comparison of candidate ids in engine/solve_changes.py."""
+    try:
+        from .engine.changes import rank_changes
+    except ImportError:
+        from .engine.solve_changes import rank_changes
+    return rank_changes(baseline, results, None)

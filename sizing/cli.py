@@ -63,6 +63,35 @@ def evaluate(design: Path = typer.Argument(..., help="design.toml (CONTRACTS.md)
     typer.echo(evaluation_summary(result))
 
 
+@app.command()
+def solve(requirements: Path = typer.Argument(..., help="requirements.toml (CONTRACTS.md)."),
+          out: Path = typer.Option(Path("sizing-out"), "--out", help="Folder for results.json, candidates.csv and report.html."),
+          catalog: Optional[Path] = CatalogOpt,
+          baseline: Optional[Path] = typer.Option(None, "--baseline", help="An earlier results.json: report what changed."),
+          quiet: bool = typer.Option(False, "--quiet", help="No progress bar and no summary.")):
+    """Size, verify by simulation and rank every design for the requirements."""
+    if quiet:
+        results = api.solve(requirements, out, catalog, baseline)
+    else:
+        from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+        with Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
+                      transient=True) as bar:
+            tasks = {}
+
+            def progress(stage, done, total):
+                if stage not in tasks:
+                    tasks[stage] = bar.add_task(f"{stage} candidates", total=total)
+                bar.update(tasks[stage], completed=done, total=total)
+
+            results = api.solve(requirements, out, catalog, baseline, progress=progress)
+    if not quiet:
+        for group in results["summary"]["groups"]:
+            typer.echo(f"{group['label']}: {group['text']}")
+        typer.echo(results["summary"]["thermal"])
+        typer.echo(f"{out}/report.html, results.json, candidates.csv written "
+                   f"({results['runtime_s']:.1f} s)")
+
+
 @catalog_app.command("list")
 def catalog_list(catalog: Optional[Path] = CatalogOpt):
     """List every catalog entry: id, kind, name and source."""
@@ -98,6 +127,31 @@ def catalog_validate(folder: Optional[Path] = typer.Argument(None, help="Catalog
     for line in report.warnings:
         typer.echo(f"warning: {line}", err=True)
     typer.echo(f"{report.folder}: {report.n_entries} entries valid ({report.n_warnings} warnings)")
+
+
+@catalog_app.command("diff")
+def catalog_diff(old: str = typer.Argument(..., help="Old catalog: a folder, or a git revision (HEAD~3, a tag; REV:DIR for another folder)."),
+                 new: Optional[str] = typer.Argument(None, help="New catalog: a folder or a git revision, as OLD (default: --catalog, else the shipped catalog)."),
+                 json_out: bool = typer.Option(False, "--json", help="Print JSON (added, removed, changed with each field's old and new value and unit)."),
+                 catalog: Optional[Path] = CatalogOpt):
+    """Added, removed and changed entries between two catalogs, field by field."""
+    from .io.catalog_diff import diff_catalogs, format_diff
+    from .io.catalog import DEFAULT_CATALOG
+    diff = diff_catalogs(old, new if new is not None else str(catalog or DEFAULT_CATALOG))
+    if json_out:
+        _print_json(diff.to_dict())
+        return
+    typer.echo(format_diff(diff))
+
+
+@catalog_app.command("add")
+def catalog_add(kind: str = typer.Argument(..., help="Part kind: stack, fluid, seal, amplifier or dc_actuator."),
+                sheet: Path = typer.Argument(..., help="CSV of new parts, one per row; header = field names, units in the header or the cells."),
+                catalog: Optional[Path] = CatalogOpt):
+    """Validate a vendor sheet (CSV) and append its parts to the kind's catalog file."""
+    from .io.catalog_import import add_parts
+    result = add_parts(kind, sheet, catalog)
+    typer.echo(f"{result.file}: added {len(result.ids)} {result.kind} entr{'y' if len(result.ids) == 1 else 'ies'}: {', '.join(result.ids)}")
 
 
 def main() -> None:

@@ -234,7 +234,7 @@ def load_catalog(folder: str | Path | None = None) -> Catalog:
             label = f"[[{array_name}]] {raw.get('id', '#' + str(index + 1))}" if isinstance(raw, dict) else f"[[{array_name}]] #{index + 1}"
             entry = _parse_entry(model, raw, path, label)
             if entry.id in seen:
-                raise InputError(str(path), f"{label}.id", f"duplicate id, already defined in {seen[entry.id]}")
+                raise InputError(str(path), f"{label}: id", f"duplicate id, already defined in {seen[entry.id]}")
             seen[entry.id] = file_name
             group[entry.id] = entry
     if not found:

@@ -40,6 +40,9 @@ def evaluation_summary(result: dict) -> str:
             f"{_label(k)} {_fmt(k, v)}" for k, v in case.items()
             if k in ("stroke_m", "time_to_stroke_s", "speed_m_s", "overshoot")))
     lines.append("metrics: " + ", ".join(f"{_label(k)} {_fmt(k, v)}" for k, v in result["metrics"].items()))
+    if result.get("assumed"):
+        lines.append("rests on assumed catalog values (status \"assumed\"; see `sizing catalog show ID`):")
+        lines += [f"  {entry_id}: {', '.join(fields)}" for entry_id, fields in result["assumed"].items()]
     return "\n".join(lines)
 
 

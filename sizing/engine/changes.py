@@ -1,0 +1,174 @@
+"""What a catalog (or model) change did to the ranking (issue 6, point 4).
+
+``rank_changes(baseline, results, catalog_diff)`` compares two results.json
+dicts (CONTRACTS.md) candidate by candidate, matched by ``id``, and lists
+the designs that entered or left the feasible set or the Pareto front,
+appeared or disappeared, or moved in rank, with the catalog fields
+responsible: the changed, added or removed entries among the candidate's
+``components`` (from ``catalog_diff``), and, without a diff, the
+``stack_params`` that differ between the two runs.
+
+Pure data in, data out: no files, no printing.
+"""
+from __future__ import annotations
+
+import math
+
+# order of the events in the list, most important first
+EVENTS = ("entered_feasible", "left_feasible", "entered_pareto", "left_pareto",
+          "new_candidate", "dropped_candidate", "rank_up", "rank_down")
+_PARAM_TOL = 1e-9
+
+
+def _as_dict(catalog_diff) -> dict | None:
+    if catalog_diff is None:
+        return None
+    if isinstance(catalog_diff, dict):
+        return catalog_diff
+    return catalog_diff.to_dict()
+
+
+def _index(results: dict) -> dict[str, dict]:
+    return {c["id"]: c for c in (results or {}).get("candidates", [])}
+
+
+def _component_ids(candidate: dict) -> list[str]:
+    comps = candidate.get("components") or {}
+    return [v for v in comps.values() if isinstance(v, str)]
+
+
+def _catalog_causes(candidate: dict, diff: dict | None) -> list[dict]:
+    if not diff:
+        return []
+    ids = set(_component_ids(candidate))
+    causes = []
+    for entry in diff.get("changed", []):
+        if entry["id"] in ids:
+            for f in entry.get("fields", []):
+                causes.append({"entry": entry["id"], "kind": entry.get("kind"), "field": f["field"],
+                               "old": f.get("old"), "new": f.get("new"), "unit": f.get("unit"),
+                               "relative_change": f.get("relative_change")})
+    for key, word in (("added", "added"), ("removed", "removed")):
+        for entry in diff.get(key, []):
+            if entry["id"] in ids:
+                causes.append({"entry": entry["id"], "kind": entry.get("kind"), "field": None,
+                               "old": None, "new": None, "unit": None, "change": f"entry {word}"})
+    return causes
+
+
+def _param_causes(old: dict | None, new: dict | None) -> list[dict]:
+    """Differences of ``stack_params`` between the two runs (SI, unit in the key)."""
+    if not old or not new:
+        return []
+    a, b = old.get("stack_params") or {}, new.get("stack_params") or {}
+    causes = []
+    for key in sorted(set(a) | set(b)):
+        x, y = a.get(key), b.get(key)
+        if isinstance(x, (int, float)) and isinstance(y, (int, float)):
+            if math.isclose(x, y, rel_tol=_PARAM_TOL, abs_tol=0.0):
+                continue
+        elif x == y:
+            continue
+        stack = (new.get("components") or {}).get("stack")
+        causes.append({"entry": stack, "kind": "stack", "field": key, "old": x, "new": y, "unit": None,
+                       "relative_change": (y / x - 1) if isinstance(x, (int, float)) and isinstance(y, (int, float)) and x else None,
+                       "change": "stack_params differ between the runs"})
+    return causes
+
+
+def _summary(cid: str, events: list[str], old_rank, new_rank, causes: list[dict], indirect: bool = False) -> str:
+    words = {"entered_feasible": "became feasible", "left_feasible": "is no longer feasible",
+             "entered_pareto": "entered the Pareto front", "left_pareto": "left the Pareto front",
+             "new_candidate": "is a new candidate", "dropped_candidate": "is no longer a candidate"}
+    parts = [words[e] for e in events if e in words]
+    if old_rank is not None and new_rank is not None and old_rank != new_rank:
+        parts.append(f"rank {old_rank} -> {new_rank}")
+    text = f"{cid}: " + ", ".join(parts)
+    named = []
+    for c in causes:
+        if c.get("field") is None:
+            named.append(f"{c['entry']} {c.get('change', 'changed')}")
+        elif isinstance(c.get("old"), (int, float)) and isinstance(c.get("new"), (int, float)):
+            unit = f" {c['unit']}" if c.get("unit") else ""
+            named.append(f"{c['entry']}.{c['field']} {c['old']:.4g} -> {c['new']:.4g}{unit}")
+        else:
+            named.append(f"{c['entry']}.{c['field']}")
+    if named:
+        text += "; because of " + ", ".join(named[:4]) + (f" and {len(named) - 4} more" if len(named) > 4 else "")
+    elif indirect:
+        text += " (its own parts did not change: other designs moved)"
+    return text
+
+
+def rank_changes(baseline: dict, results: dict, catalog_diff=None) -> list[dict]:
+    """Designs whose standing changed between ``baseline`` and ``results``.
+
+    Parameters
+    ----------
+    baseline, results : dict
+        Two results.json dicts (CONTRACTS.md); candidates matched by ``id``.
+    catalog_diff : CatalogDiff, its ``to_dict()``, or None
+        The catalog change between the two runs; used to name the fields
+        responsible (entries among each candidate's ``components``).
+
+    Returns
+    -------
+    list of dict, most important first, one per design that moved:
+    ``id``, ``technology``, ``events`` (subset of ``EVENTS``),
+    ``feasible`` / ``pareto`` / ``rank`` as [old, new] (None where absent),
+    ``rank_move`` (old rank - new rank: positive is better, None if absent
+    on one side), ``driver`` [old, new], ``causes`` (list of
+    {entry, kind, field, old, new, unit, ...}) and a one-line ``summary``.
+    """
+    diff = _as_dict(catalog_diff)
+    old_by_id, new_by_id = _index(baseline), _index(results)
+    order = list(new_by_id) + [cid for cid in old_by_id if cid not in new_by_id]
+    changes = []
+    for cid in order:
+        old, new = old_by_id.get(cid), new_by_id.get(cid)
+        events = []
+        if old is None:
+            events.append("new_candidate")
+        if new is None:
+            events.append("dropped_candidate")
+        of, nf = bool(old and old.get("feasible")), bool(new and new.get("feasible"))
+        op, np_ = bool(old and old.get("pareto")), bool(new and new.get("pareto"))
+        if nf and not of:
+            events.append("entered_feasible")
+        if of and not nf:
+            events.append("left_feasible")
+        if np_ and not op:
+            events.append("entered_pareto")
+        if op and not np_:
+            events.append("left_pareto")
+        old_rank, new_rank = (old or {}).get("rank"), (new or {}).get("rank")
+        move = old_rank - new_rank if old_rank is not None and new_rank is not None else None
+        if move:
+            events.append("rank_up" if move > 0 else "rank_down")
+        if not events:
+            continue
+        # a candidate absent on one side: the diff decides from whichever side exists
+        causes = _catalog_causes(new or old, diff)
+        if not causes and diff is None:
+            causes = _param_causes(old, new)
+        events.sort(key=EVENTS.index)
+        changes.append({
+            "id": cid,
+            "technology": (new or old).get("technology"),
+            "events": events,
+            "feasible": [old.get("feasible") if old else None, new.get("feasible") if new else None],
+            "pareto": [old.get("pareto") if old else None, new.get("pareto") if new else None],
+            "rank": [old_rank, new_rank],
+            "rank_move": move,
+            "driver": [old.get("driver") if old else None, new.get("driver") if new else None],
+            "causes": causes,
+            "summary": _summary(cid, events, old_rank, new_rank, causes, indirect=diff is not None),
+        })
+    changes.sort(key=_importance)
+    return changes
+
+
+def _importance(change: dict):
+    first = min(EVENTS.index("rank_up" if e == "rank_down" else e) for e in change["events"])
+    best_rank = min((r for r in change["rank"] if r is not None), default=math.inf)
+    return (first, -abs(change["rank_move"] or 0), best_rank)

@@ -11,12 +11,13 @@ Many candidates run at once; positions are reported from the rest position.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, fields
+from dataclasses import dataclass
 
 import numba
 import numpy as np
 
 from ..errors import SimulationError
+from .params import ParameterSet
 
 PARAMS = (
     "c1", "c2", "lead", "rate", "kp", "ki", "kd", "derivative_on_measurement",
@@ -27,7 +28,8 @@ CHANNELS = ("position_m", "velocity_m_s", "current_A")
 
 
 @dataclass
-class DCMotorModel:
+class DCMotorModel(ParameterSet):
+    PARAMS = PARAMS  # the kernel's column order
     """Parameters (float or (n_cand,) array), SI: c1 1/s, c2 rad/(s^2 A),
     lead m, rate Hz, kp A/m, ki A/(m s), kd A s/m, current_limit A, load N and
     N/m, efficiency -, torque_constant N m/A, coulomb_friction N."""
@@ -47,15 +49,6 @@ class DCMotorModel:
     torque_constant: object = 1.0
     coulomb_friction: object = 0.0
 
-    def matrix(self) -> np.ndarray:
-        values = [np.asarray(getattr(self, name), dtype=float) for name in PARAMS]
-        n = max(v.size for v in values)
-        return np.column_stack([np.broadcast_to(v, (n,)) for v in values]).astype(float)
-
-    def replace(self, **changes) -> "DCMotorModel":
-        data = {f.name: getattr(self, f.name) for f in fields(self)}
-        data.update(changes)
-        return DCMotorModel(**data)
 
 
 @numba.njit(cache=True)

@@ -24,12 +24,13 @@ that rest point (CONTRACTS.md, "Test campaigns").
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, fields
+from dataclasses import dataclass
 
 import numba
 import numpy as np
 
 from ..errors import SimulationError
+from .params import ParameterSet
 from ..physics.bouc_wen import hysteresis_step
 
 # Parameter columns of the matrix handed to the compiled kernel.
@@ -46,7 +47,8 @@ CHANNELS = ("position_m", "pressure_Pa", "wide_position_m", "voltage_V")
 
 
 @dataclass
-class PiezoHydraulicModel:
+class PiezoHydraulicModel(ParameterSet):
+    PARAMS = PARAMS  # the kernel's column order
     """Parameters of the dynamic model, each a float or an array (n_cand,).
 
     SI throughout: N/m, m/V, m^2, m^3, Pa, kg, kg/m^3, N, N s/m, m^3/(s Pa),
@@ -84,20 +86,6 @@ class PiezoHydraulicModel:
     h0: object = 0.0
     dt_max: object = 5e-5
 
-    def matrix(self) -> np.ndarray:
-        """(n_cand, len(PARAMS)) float matrix in the kernel's column order."""
-        values = [np.asarray(getattr(self, name), dtype=float) for name in PARAMS]
-        n = max(v.size for v in values)
-        return np.column_stack([np.broadcast_to(v, (n,)) for v in values]).astype(float)
-
-    @property
-    def n_candidates(self) -> int:
-        return self.matrix().shape[0]
-
-    def replace(self, **changes) -> "PiezoHydraulicModel":
-        data = {f.name: getattr(self, f.name) for f in fields(self)}
-        data.update(changes)
-        return PiezoHydraulicModel(**data)
 
 
 STEP_FACTOR = 0.2   # dt * omega_max: ~30 steps per period of the fastest mode

@@ -83,10 +83,61 @@ def _load_baseline(path: str | Path) -> dict:
 
 
 def _rank_changes(baseline: dict, results: dict) -> list[dict]:
-    """engine/changes.rank_changes when it exists (issue 6), else the minimal
-    comparison of candidate ids in engine/solve_changes.py."""
-    try:
-        from .engine.changes import rank_changes
-    except ImportError:
-        from .engine.solve_changes import rank_changes
+    """Designs whose standing changed (engine/changes.py, issue 6). The
+    baseline's catalog folder is not known here, so no catalog diff."""
+    from .engine.changes import rank_changes
     return rank_changes(baseline, results, None)
+
+
+def diagnose(campaign_dir: str | Path, holdout: list[str], out_dir: str | Path | None = None,
+             recalibrate: list[str] | None = None, seed: int = 0):
+    """Diagnose the sim-to-real gap of a campaign (CONTRACTS.md). Writes
+    diagnosis.json and diagnosis.html into ``out_dir`` when given; returns
+    the Diagnosis (``.to_json()`` is diagnosis.json)."""
+    import json
+
+    from .diagnose.diagnosis import diagnose_runs
+    from .io.atomic import write_many
+    from .io.campaign import campaign_split, load_campaign
+
+    campaign = load_campaign(campaign_dir)
+    campaign_split(campaign, holdout)
+    result = diagnose_runs(campaign.kind, campaign.rig, campaign.runs, list(holdout), recalibrate=recalibrate,
+                           seed=seed)
+    if out_dir is not None:
+        from .report.diagnose_html import render
+        out = Path(out_dir)
+        files = {out / "diagnosis.json": json.dumps(result.to_json(), indent=2),
+                 out / "diagnosis.html": render(result, f"Sim-to-real gap: {Path(campaign_dir).name}")}
+        write_many(files)
+    return result
+
+
+def diagnose_check(campaign_dir: str | Path, holdout: list[str] | None = None, seed: int = 0, progress=None):
+    """The withheld-effect check on a campaign's own excitations and rig."""
+    from .diagnose.bench import Bench
+    from .diagnose.check import campaign_noise, check_runs, clean_inputs
+    from .io.campaign import campaign_split, load_campaign
+
+    campaign = load_campaign(campaign_dir)
+    holdout = list(holdout) if holdout else [campaign.runs[-1].name]
+    campaign_split(campaign, holdout)
+    bench = Bench(campaign.kind, campaign.rig, campaign.runs, holdout)
+    return check_runs(campaign.kind, campaign.rig, clean_inputs(bench), holdout, campaign_noise(bench, seed),
+                      seed=seed, progress=progress)
+
+
+def fit_hysteresis(paths, holdout=None, model: str = "bouc-wen", out=None, **options) -> dict:
+    """Fit Bouc-Wen (seed eq. 1-2) and Prandtl-Ishlinskii to run CSVs; the
+    TOML carries ``model``. Writes OUT and OUT.html when ``out`` is given.
+    Returns {"toml", "warnings", "result", "written"}."""
+    from .fit.workflow import fit_hysteresis as run
+
+    return run(paths, holdout=holdout, model=model, out=out, **options)
+
+
+def fit_dc_motor(paths, rig, holdout=None, out=None, **options) -> dict:
+    """Fit c1, c2 (optionally the PID gains) of a dc_motor rig to run CSVs."""
+    from .fit.workflow import fit_dc_motor as run
+
+    return run(paths, rig, holdout=holdout, out=out, **options)

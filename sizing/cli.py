@@ -10,7 +10,7 @@ from typing import List, Optional
 import typer
 
 from . import __version__, api
-from .errors import InputError
+from .errors import FitError, InputError
 
 app = typer.Typer(help="Size smart-material actuators for glide-body control surfaces, "
                        "fit their models to test data and diagnose the sim-to-real gap.",
@@ -154,11 +154,118 @@ def catalog_add(kind: str = typer.Argument(..., help="Part kind: stack, fluid, s
     typer.echo(f"{result.file}: added {len(result.ids)} {result.kind} entr{'y' if len(result.ids) == 1 else 'ies'}: {', '.join(result.ids)}")
 
 
+@app.command()
+def diagnose(campaign: Path = typer.Argument(..., help="Campaign folder: rig.toml and runs/NAME.csv (CONTRACTS.md)."),
+             holdout: Optional[List[str]] = typer.Option(None, "--holdout", help="Run (CSV name without .csv) never used for fitting; repeatable. Required unless --check."),
+             out: Path = typer.Option(Path("diagnose-out"), "--out", help="Folder for diagnosis.json and diagnosis.html."),
+             recalibrate: Optional[List[str]] = typer.Option(None, "--recalibrate", help="Re-fit this nominal parameter on the training runs first (piezo: d33, wide_friction, narrow_friction; DC: c1, c2); repeatable."),
+             check: bool = typer.Option(False, "--check", help="Inject each library effect into the campaign's own excitations, diagnose blind and print the confusion matrix."),
+             seed: int = typer.Option(0, "--seed", help="Seed of the screening and of --check's noise.")):
+    """Say where the model and the hardware disagree, which unmodelled effect explains it, and how far the gap shrinks."""
+    if check:
+        def progress(case):
+            typer.echo(f"  {case.truth:>22} size {case.size} -> {case.predicted} ({case.seconds:.1f} s)", err=True)
+        result = api.diagnose_check(campaign, holdout, seed=seed, progress=progress)
+        typer.echo(result.table())
+        typer.echo(f"right effect first: {100 * result.accuracy:.0f} %, null cases naming an effect: "
+                   f"{100 * result.null_false_positive:.0f} %, median holdout shrink when right: "
+                   f"{100 * result.median_shrink:.0f} %")
+        return
+    if not holdout:
+        raise InputError(str(campaign), "--holdout", "expected at least one --holdout RUN (the runs never used for fitting)")
+    result = api.diagnose(campaign, holdout, out, recalibrate=recalibrate, seed=seed)
+    v = result.verdict
+    typer.echo(f"baseline holdout NRMSE {result.baseline_holdout:.4f} (noise floor {result.noise_floor_holdout:.4f})")
+    for f in result.fits[:5]:
+        typer.echo(f"  {f.name:<40} holdout NRMSE {f.nrmse_holdout:.4f}  shrink {100 * (1 - f.nrmse_holdout / result.baseline_holdout):5.1f} %")
+    if v["effect"]:
+        typer.echo(f"verdict: {v['effect']} (holdout shrink {100 * v['shrink_holdout']:.0f} %)")
+    else:
+        typer.echo(f"verdict: {'no significant gap' if v['status'] == 'no_significant_gap' else 'unexplained'}: {v['reason']}")
+    typer.echo(f"wrote {out / 'diagnosis.json'} and {out / 'diagnosis.html'}")
+
+
+class _LazyProgress:
+    """A rich progress bar on stderr that appears only once a fit has run
+    for more than a second (the library reports fractions done)."""
+
+    def __init__(self, label: str):
+        import time
+        self.label, self.start, self.bar, self.task = label, time.monotonic(), None, None
+
+    def __call__(self, fraction: float, message: str = "") -> None:
+        import time
+        if self.bar is None:
+            if time.monotonic() - self.start < 1.0:
+                return
+            from rich.console import Console
+            from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+            self.bar = Progress(TextColumn("{task.description}"), BarColumn(), TimeElapsedColumn(),
+                                console=Console(stderr=True), transient=True)
+            self.bar.start()
+            self.task = self.bar.add_task(self.label, total=1.0)
+        self.bar.update(self.task, completed=fraction, description=f"{self.label}: {message}")
+
+    def close(self) -> None:
+        if self.bar is not None:
+            self.bar.stop()
+
+
+def _fit_output(result: dict, out: Optional[Path]) -> None:
+    for warning in result["warnings"]:
+        typer.echo(f"warning: {warning}", err=True)
+    if out is None:
+        typer.echo(result["toml"])
+    for path in result["written"]:
+        typer.echo(f"wrote {path}", err=True)
+
+
+@fit_app.command("hysteresis")
+def fit_hysteresis(data: List[Path] = typer.Argument(..., help="Run CSVs (time_s,voltage_V,position_m), one run each; position is the stack's displacement."),
+                   holdout: Optional[List[str]] = typer.Option(None, "--holdout", help="Run (CSV name without .csv) kept out of the fit for validation; repeatable."),
+                   out: Optional[Path] = typer.Option(None, "--out", help="TOML file to write ([stack], [stack.bouc_wen], [fit]); the HTML report goes beside it (OUT.html). Default: print the TOML."),
+                   model: str = typer.Option("bouc-wen", "--model", help="Model whose parameters the TOML carries: bouc-wen or prandtl-ishlinskii (both are fitted and compared)."),
+                   report: Optional[Path] = typer.Option(None, "--report", help="HTML report path (default: OUT with .html; none without --out)."),
+                   cutoff_hz: Optional[float] = typer.Option(None, "--cutoff-hz", help="Low-pass cut-off of the measured voltage, Hz (default: 20 x the excitation frequency, at least 5 Hz; 0: no filter)."),
+                   offset: bool = typer.Option(False, "--offset", help="Also fit a constant sensor offset per run (beside each run's initial hysteresis state)."),
+                   starts: int = typer.Option(4, "--starts", help="Starting points refined by least squares (best of a seeded random screen)."),
+                   operators: int = typer.Option(16, "--operators", help="Play operators of the Prandtl-Ishlinskii model."),
+                   seed: int = typer.Option(0, "--seed", help="Seed of the random starting points.")):
+    """Fit the seed's Bouc-Wen model (d33, alpha, beta, gamma, delta, n) and a Prandtl-Ishlinskii model to voltage/displacement runs."""
+    progress = _LazyProgress("fit hysteresis")
+    try:
+        result = api.fit_hysteresis(data, holdout, model=model, out=out, report=report, cutoff_hz=cutoff_hz,
+                                    fit_offset=offset, n_starts=starts, n_operators=operators, seed=seed,
+                                    progress=progress)
+    finally:
+        progress.close()
+    _fit_output(result, out)
+
+
+@fit_app.command("dc-motor")
+def fit_dc_motor(data: List[Path] = typer.Argument(..., help="Run CSVs (time_s,reference_m,position_m), one run each."),
+                 rig: Path = typer.Option(..., "--rig", help="rig.toml of kind dc_motor: screw, controller, current limit, load (CONTRACTS.md)."),
+                 holdout: Optional[List[str]] = typer.Option(None, "--holdout", help="Run (CSV name without .csv) kept out of the fit for validation; repeatable."),
+                 out: Optional[Path] = typer.Option(None, "--out", help="TOML file to write ([motor], [fit]); the HTML report goes beside it. Default: print the TOML."),
+                 report: Optional[Path] = typer.Option(None, "--report", help="HTML report path (default: OUT with .html; none without --out)."),
+                 gains: bool = typer.Option(False, "--gains", help="Also fit the rig's nonzero PID gains (kp, ki, kd)."),
+                 starts: int = typer.Option(3, "--starts", help="Starting points refined by least squares."),
+                 seed: int = typer.Option(0, "--seed", help="Seed of the random starting points.")):
+    """Identify c1, c2 of the seed's eq. 13-14 (optionally the PID gains) through the rig's closed loop."""
+    progress = _LazyProgress("fit dc-motor")
+    try:
+        result = api.fit_dc_motor(data, rig, holdout, out=out, report=report, fit_gains=gains,
+                                  n_starts=starts, seed=seed, progress=progress)
+    finally:
+        progress.close()
+    _fit_output(result, out)
+
+
 def main() -> None:
     """Console entry point: maps errors to exit codes."""
     try:
         app(standalone_mode=False)
-    except InputError as exc:
+    except (InputError, FitError) as exc:
         typer.echo(f"error: {exc}", err=True)
         sys.exit(2)
     except typer.Exit as exc:

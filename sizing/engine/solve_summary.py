@@ -1,0 +1,191 @@
+"""What ``solve`` says about its results: the requirements in SI, the
+assumptions it made, a summary per technology (what blocks it), and the
+time traces of the top designs for the report."""
+from __future__ import annotations
+
+import math
+from collections import Counter
+
+import numpy as np
+
+from ..io.requirements import RequirementsFile
+from ..physics import stack as stack_phys
+from . import dc as dc_engine
+from .dc_candidates import dc_duration
+from .verify import simulate_cases
+
+TRACE_POINTS = 600
+GROUPS = (("piezohydraulic", "uncompensated"), ("piezohydraulic", "compensated"), ("dc_motor", "catalog"))
+LABELS = {("piezohydraulic", "uncompensated"): "piezohydraulic, as built (no thermal compensation)",
+          ("piezohydraulic", "compensated"): "piezohydraulic with thermal compensator",
+          ("dc_motor", "catalog"): "DC motor lead-screw actuators (catalog)"}
+
+
+def _requirements_si(req: RequirementsFile) -> dict:
+    r, o = req.requirements, req.options
+    return {"stroke_m": r.stroke, "blocked_force_N": r.blocked_force, "speed_m_s": r.speed,
+            "max_temperature_degC": r.max_temperature, "stroke_time_s": req.stroke_time,
+            "min_natural_frequency_Hz": req.natural_frequency, "max_overshoot": o.max_overshoot,
+            "max_thermal_drift_m": o.max_drift_fraction * r.stroke,
+            "options": o.model_dump()}
+
+
+def _assumptions(req: RequirementsFile) -> list[str]:
+    o, r = req.options, req.requirements
+    amp = ("the amplifier sits at the actuator and must work at the required temperature"
+           if o.amplifier_location == "actuator" else
+           f"the amplifier sits in a conditioned electronics bay at {o.electronics_bay_temperature:g} degC, "
+           f"not at the actuator (options.amplifier_location = \"actuator\" to require {r.max_temperature:g} degC of it)")
+    return [
+        f"stack counts 1 to {o.max_stacks}; every stack, fluid, seal and amplifier of the catalog combined",
+        f"static sizing margin {o.design_margin:.0%} on stroke and blocked force (the simulation then checks them)",
+        f"wide-chamber oil gap {o.wide_gap * 1e3:g} mm; oil volume = A_wide gap + A_narrow stroke",
+        "blocked force includes the oil column spring (bulk modulus at the required temperature) in series with the stacks",
+        "pressure: the stack force over the wide piston must stay within the seal's pressure rating",
+        f"drive current: the charge n C_large V that reaches the stroke must flow within stroke/speed = {req.stroke_time:g} s; "
+        f"C_large = {stack_phys.LARGE_SIGNAL_CAPACITANCE_FACTOR:g} x the small-signal capacitance",
+        "drive profile for the simulation: a voltage ramp that reaches the stroke in half the allowed time, "
+        "slowed to what the amplifier's current and slew rate allow",
+        f"natural frequency at least {req.natural_frequency:.3g} Hz (10 cycles per stroke time unless options.min_natural_frequency); "
+        f"simulated overshoot at most {o.max_overshoot:.0%}",
+        "stroke under load: the aerodynamic load is a constant force; strokes are measured from the loaded rest; "
+        "speed = required stroke / time to reach it (DC motor: 98 % of it)",
+        f"thermal drift of the enclosed oil from {o.drift_reference_temperature:g} to {r.max_temperature:g} degC must stay "
+        f"within {o.max_drift_fraction:.0%} of the stroke unless compensated",
+        (f"compensated designs carry an assumed spring-loaded accumulator: +{o.compensator_mass:g} kg, "
+         f"+{o.compensator_cost_usd:g} USD" if o.thermal_compensation else "no compensated designs evaluated"),
+        amp,
+        "temperature margin = (rated - required) / required, temperatures in kelvin",
+        "Bouc-Wen hysteresis of stacks without their own data is transferred in normalised form from the measured stack",
+        "masses and costs of the hydraulic stage from physics/geometry.py (6061-T6, plate and thin-wall formulas, "
+        "60 USD/kg machining, 1500 USD assembly)",
+    ]
+
+
+def _group(c) -> tuple[str, str]:
+    return c["technology"], c.get("variant", "catalog")
+
+
+def _summary(req: RequirementsFile, candidates: list[dict], catalog) -> dict:
+    groups = []
+    for key in GROUPS:
+        members = [c for c in candidates if _group(c) == key]
+        feasible = [c for c in members if c["feasible"]]
+        entry = {"technology": key[0], "variant": key[1], "label": LABELS[key], "n_candidates": len(members),
+                 "n_feasible": len(feasible)}
+        if not members:
+            entry["text"] = "none in the catalog" if key[0] == "dc_motor" else "not evaluated"
+            groups.append(entry)
+            continue
+        best = min(members, key=lambda c: c["rank"])
+        furthest = max(members, key=_progress_key)
+        entry["best"] = best["id"]
+        entry["drivers"] = dict(Counter(c["driver"] for c in members if not c["feasible"]).most_common())
+        if feasible:
+            entry["text"] = f"{len(feasible)} feasible; best ranked {best['id']} (driver: {best['driver']})"
+        else:
+            m = furthest["margins"][furthest["driver"]]
+            entry["blocking"] = furthest["driver"]
+            entry["closest"] = furthest["id"]
+            entry["text"] = (f"no feasible design: blocked by {furthest['driver']} - the candidate that gets furthest, "
+                             f"{furthest['id']} ({furthest['stage']}), misses it by {_pct(m)}")
+        groups.append(entry)
+    return {"groups": groups, "thermal": _thermal_statement(req, candidates),
+            "feasible": sum(1 for c in candidates if c["feasible"]),
+            "pareto": [c["id"] for c in candidates if c["pareto"]]}
+
+
+STAGES = {"pruned": 0, "gp_failed": 0, "gp_infeasible": 1, "sized": 2, "simulated": 3}
+
+
+def _progress_key(c):
+    """How far a candidate got (simulated > sized > pruned), then how close
+    to feasible it is: the one that names what really blocks a technology."""
+    m = c["margins"].get(c["driver"]) if c["driver"] else None
+    return STAGES.get(c.get("stage"), 0), (m if m is not None and math.isfinite(m) else -math.inf)
+
+
+def _pct(margin) -> str:
+    if margin is None or not math.isfinite(margin):
+        return "an unbounded amount"
+    return f"{-margin:.0%}" if margin < 0 else f"{margin:.0%}"
+
+
+def _thermal_statement(req, candidates) -> str:
+    T = req.requirements.max_temperature
+    plain = [c for c in candidates if _group(c) == ("piezohydraulic", "uncompensated") and "thermal_drift" in c["margins"]]
+    if not plain:
+        return "No piezohydraulic design got as far as the thermal drift check."
+    drifting = [c for c in plain if c["margins"]["thermal_drift"] < 0]
+    smallest = min(plain, key=lambda c: abs(c["static"].get("thermal_drift_m", math.inf)))
+    drift = abs(smallest["static"]["thermal_drift_m"])
+    text = (f"Thermal expansion of the enclosed oil moves the output by V alpha_T dT / A_narrow: between "
+            f"{req.options.drift_reference_temperature:g} and {T:g} degC the smallest drift of any sized design is "
+            f"{drift * 1e3:.1f} mm ({smallest['id']}) against a stroke of {req.requirements.stroke * 1e3:g} mm "
+            f"(allowed: {req.options.max_drift_fraction:.0%}). ")
+    if len(drifting) == len(plain):
+        text += ("The drift makes EVERY uncompensated piezohydraulic design infeasible. "
+                 "Compensated designs (with an assumed thermal compensator) are shown separately.")
+    else:
+        text += f"{len(drifting)} of {len(plain)} sized uncompensated designs fail it."
+    return text
+
+
+def _downsample(t, y):
+    t, y = np.asarray(t), np.asarray(y)
+    step = max(1, len(t) // TRACE_POINTS)
+    return t[::step].tolist(), y[::step].tolist()
+
+
+def _traces(req, candidates, designs, dc, loads, top=3) -> list[dict]:
+    """Time traces of the top designs: the best feasible ones, the best of
+    each technology group, re-simulated with their traces kept."""
+    by_key = {d["combo"].key: d for d in designs if d.get("index") is not None}
+    chosen = [c for c in candidates if c["feasible"]][:top]
+    for key in GROUPS:
+        members = [c for c in candidates if _group(c) == key and c.get("stage") in ("simulated", "sized")]
+        if members and members[0] not in chosen:
+            chosen.append(members[0])
+    out, seen = [], set()
+    S = req.requirements.stroke
+    for c in chosen:
+        base = c["id"].removesuffix("-tc")
+        if base in seen:
+            continue
+        seen.add(base)
+        if c["technology"] == "dc_motor":
+            act = dc["actuators"][c["components"]["actuator"]]
+            sims = dc_engine.step_cases(act, S, loads, dc_duration(req), keep_traces=True)
+            cases = []
+            for s in sims:
+                t, y = _downsample(s["t"], s["position_m"])
+                cases.append({"load_N": s["load_N"], "t": t, "position_m": y})
+        else:
+            d = by_key.get(base)
+            if d is None:
+                continue
+            sims = simulate_cases(d["cand"], loads, np.array([d["ramp"]]), target_stroke=S, keep_traces=True)
+            cases = []
+            for s in sims:
+                t, y = _downsample(s["t"], s["position_m"][0])
+                cases.append({"load_N": float(s["load_N"][0]), "t": t, "position_m": y})
+        out.append({"id": c["id"], "technology": c["technology"], "feasible": c["feasible"], "cases": cases})
+    return out
+
+
+def _clean(obj):
+    """JSON-safe: numpy to Python, non-finite floats to None."""
+    if isinstance(obj, dict):
+        return {str(k): _clean(v) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [_clean(v) for v in obj]
+    if isinstance(obj, np.ndarray):
+        return _clean(obj.tolist())
+    if isinstance(obj, (np.floating, float)):
+        v = float(obj)
+        return v if math.isfinite(v) else None
+    if isinstance(obj, np.integer):
+        return int(obj)
+    if isinstance(obj, np.bool_):
+        return bool(obj)
+    return obj

@@ -1,0 +1,131 @@
+"""Plotly figures of a solve, built from the results only (results.json and
+the time traces), never from the engine's objects."""
+from __future__ import annotations
+
+import plotly.graph_objects as go
+from plotly.subplots import make_subplots
+
+UNITS = {"mass": ("mass_kg", 1.0, "mass (kg)"), "cost": ("cost_usd", 1.0, "cost (USD)"),
+         "volume": ("volume_m3", 1e3, "volume (L)"), "power": ("power_W", 1.0, "peak power (W)")}
+SHOWN_STAGES = ("simulated", "sized", "gp_infeasible")
+MARGIN_ORDER = ("stroke", "blocked_force", "speed", "temperature", "amplifier_temperature", "pressure",
+                "drive_current", "natural_frequency", "overshoot", "thermal_drift", "holding_force", "work")
+
+
+def _axes(objectives: list[str]) -> tuple[str, str]:
+    x = objectives[0]
+    y = objectives[1] if len(objectives) > 1 else ("cost" if x != "cost" else "mass")
+    return x, y
+
+
+def hover_text(c: dict) -> str:
+    comp = c["components"]
+    if c["technology"] == "dc_motor":
+        head = f"DC actuator {comp['actuator']}"
+    else:
+        ratio = comp.get("ratio")
+        head = (f"{comp['n_stacks']} x {comp['stack']}, R = {ratio:.0f}<br>{comp['fluid']}, {comp['seal']}, "
+                f"{comp['amplifier']}" if ratio else f"{comp['n_stacks']} x {comp['stack']}")
+        if c.get("variant") == "compensated":
+            head += "<br>with thermal compensator"
+    margins = "<br>".join(f"{k}: {v:+.0%}" if v is not None else f"{k}: n/a" for k, v in c["margins"].items())
+    state = "feasible" if c["feasible"] else "infeasible"
+    return f"<b>{c['id']}</b><br>{head}<br>rank {c['rank']}, {state}, driver {c['driver']}<br>{margins}"
+
+
+def pareto_figure(results: dict) -> go.Figure:
+    """Objective space: feasible and infeasible distinct, DC options marked,
+    the Pareto front joined by a line."""
+    xo, yo = _axes(results["objectives"])
+    (xk, xs, xl), (yk, ys, yl) = UNITS[xo], UNITS[yo]
+    groups = {
+        "piezohydraulic, compensated, feasible": dict(symbol="circle", color="#1f77b4"),
+        "piezohydraulic, compensated, infeasible": dict(symbol="circle-open", color="#1f77b4"),
+        "piezohydraulic, uncompensated, feasible": dict(symbol="square", color="#2ca02c"),
+        "piezohydraulic, uncompensated, infeasible": dict(symbol="x-thin-open", color="#7f7f7f"),
+        "DC motor, feasible": dict(symbol="diamond", color="#d62728"),
+        "DC motor, infeasible": dict(symbol="diamond-open", color="#d62728"),
+    }
+    pts = {k: ([], [], []) for k in groups}
+    front = []
+    for c in results["candidates"]:
+        m = c.get("metrics") or {}
+        if m.get(xk) is None or m.get(yk) is None:
+            continue
+        if c["technology"] == "dc_motor":
+            key = "DC motor"
+        elif c.get("stage") in SHOWN_STAGES:
+            key = f"piezohydraulic, {c.get('variant', 'uncompensated')}"
+        else:
+            continue
+        key += ", feasible" if c["feasible"] else ", infeasible"
+        pts[key][0].append(m[xk] * xs)
+        pts[key][1].append(m[yk] * ys)
+        pts[key][2].append(hover_text(c))
+        if c["pareto"]:
+            front.append((m[xk] * xs, m[yk] * ys))
+    fig = go.Figure()
+    for key, style in groups.items():
+        x, y, text = pts[key]
+        if not x:
+            continue
+        size = 13 if key.startswith("DC") else 8
+        fig.add_trace(go.Scatter(x=x, y=y, mode="markers", name=key, text=text, hoverinfo="text",
+                                 marker=dict(symbol=style["symbol"], color=style["color"], size=size,
+                                             line=dict(width=1.5, color=style["color"]))))
+    if front:
+        front.sort()
+        fig.add_trace(go.Scatter(x=[p[0] for p in front], y=[p[1] for p in front], mode="lines",
+                                 name="Pareto front (feasible)", line=dict(color="black", dash="dot"),
+                                 hoverinfo="skip"))
+    fig.update_layout(title=f"Designs in objective space ({xo} vs {yo}); hover for the design",
+                      xaxis_title=xl, yaxis_title=yl, xaxis_type="log", yaxis_type="log",
+                      template="plotly_white", height=520,
+                      legend=dict(orientation="h", y=-0.2))
+    return fig
+
+
+def traces_figure(results: dict, traces: list[dict]) -> go.Figure:
+    """Output position against time of the top designs, one panel per load case."""
+    cases = results["load_cases"]
+    n = max(1, len(cases))
+    titles = [f"load case {i + 1}: {c['load_N']:.0f} N" + (f" ({c['dynamic_pressure_Pa'] / 1e3:g} kPa)"
+                                                            if "dynamic_pressure_Pa" in c else "")
+              for i, c in enumerate(cases)] or ["no load"]
+    fig = make_subplots(rows=1, cols=n, subplot_titles=titles, shared_yaxes=True)
+    stroke = results["requirements"]["stroke_m"] * 1e3
+    palette = ["#1f77b4", "#ff7f0e", "#2ca02c", "#9467bd", "#8c564b", "#d62728", "#e377c2", "#17becf"]
+    for k, tr in enumerate(traces):
+        color = palette[k % len(palette)]
+        for i, case in enumerate(tr["cases"][:n]):
+            fig.add_trace(go.Scatter(x=case["t"], y=[v * 1e3 for v in case["position_m"]], mode="lines",
+                                     name=tr["id"] + ("" if tr["feasible"] else " (infeasible)"),
+                                     legendgroup=tr["id"], showlegend=(i == 0),
+                                     line=dict(color=color, dash="solid" if tr["technology"] != "dc_motor" else "dash")),
+                          row=1, col=i + 1)
+    t_req = results["requirements"]["stroke_time_s"]
+    for i in range(n):
+        fig.add_hline(y=stroke, line=dict(color="gray", dash="dot"), row=1, col=i + 1)
+        fig.add_vline(x=t_req, line=dict(color="gray", dash="dot"), row=1, col=i + 1)
+        fig.update_xaxes(title_text="time (s)", row=1, col=i + 1)
+    fig.update_yaxes(title_text="output position from loaded rest (mm)", row=1, col=1)
+    fig.update_layout(title="Time traces of the top designs (dotted: required stroke and the time allowed for it)",
+                      template="plotly_white", height=480, legend=dict(orientation="h", y=-0.25))
+    return fig
+
+
+def comparison_figure(results: dict, picks: list[dict]) -> go.Figure:
+    """Margins of the best piezohydraulic designs against the DC options."""
+    fig = go.Figure()
+    keys = [k for k in MARGIN_ORDER if any(k in c["margins"] for c in picks)]
+    for c in picks:
+        y = [c["margins"].get(k) for k in keys]
+        fig.add_trace(go.Bar(x=keys, y=[v * 100 if v is not None else None for v in y], name=c["id"],
+                             hovertext=[f"{c['id']}<br>{k}: {v:+.1%}" if v is not None else f"{k}: n/a"
+                                        for k, v in zip(keys, y)], hoverinfo="text"))
+    fig.add_hline(y=0, line=dict(color="black"))
+    fig.update_layout(barmode="group", title="Piezohydraulic against DC motor: margin per requirement "
+                      "(below zero: requirement missed)", yaxis_title="margin (%)", template="plotly_white",
+                      height=480, legend=dict(orientation="h", y=-0.3))
+    fig.update_yaxes(range=[-100, 200])
+    return fig

@@ -1,0 +1,231 @@
+"""The solve report: one self-contained HTML file (plotly.js embedded once,
+no network access when opened)."""
+from __future__ import annotations
+
+import html
+from collections import Counter
+
+import plotly.offline
+
+from .figures import MARGIN_ORDER, comparison_figure, pareto_figure, traces_figure
+
+CSS = """
+body{font-family:system-ui,-apple-system,Segoe UI,Roboto,sans-serif;margin:2em auto;max-width:1200px;color:#222;padding:0 1em}
+table{border-collapse:collapse;margin:0.6em 0;font-size:0.86em}
+td,th{border:1px solid #ccc;padding:3px 6px;text-align:right}
+th{background:#f3f3f3}
+td.l,th.l{text-align:left}
+td.id{text-align:left;white-space:nowrap;font-family:monospace;font-size:0.95em}
+.scroll{overflow-x:auto}
+td.parts{text-align:left;min-width:30em}
+.neg{background:#fbdada}.drv{font-weight:bold;outline:2px solid #444}
+.box{border-left:6px solid #d62728;background:#fff4f4;padding:0.6em 1em;margin:1em 0}
+.ok{border-left-color:#2ca02c;background:#f3fbf3}
+.stamp{font-family:monospace;font-size:0.8em;color:#555}
+"""
+
+CHECKS = {
+    "stroke": "simulated stroke from the loaded rest (static: free stroke R d33 V) against the required stroke",
+    "blocked_force": "blocked force with the oil column spring in series with the stacks (fluid compliance)",
+    "speed": "required stroke / simulated time to reach it, slowest load case (static: planned drive ramp)",
+    "temperature": "every actuator component's rating (stacks, fluid, seals; DC actuator) against the required maximum",
+    "amplifier_temperature": "amplifier rating against where it sits (electronics bay or actuator, see assumptions)",
+    "pressure": "seal pressure rating against the blocked pressure in the wide chamber",
+    "drive_current": "amplifier peak current against n C_large dV/dt needed to reach the stroke in time",
+    "natural_frequency": "sqrt(k / (m_wide + R^2 m_narrow)) with the fluid spring, against the minimum",
+    "overshoot": "simulated overshoot against the allowed overshoot",
+    "thermal_drift": "output drift V alpha_T dT / A_narrow of the enclosed oil against the allowed drift",
+    "holding_force": "DC actuator continuous force against the largest load case",
+    "work": "work bound n k_s (d33 V)^2 >= F S",
+    "amplifier_voltage": "amplifier voltage against the voltage the work bound needs",
+}
+
+
+def _e(x) -> str:
+    return html.escape(str(x))
+
+
+def _num(v, scale=1.0, fmt="{:.4g}") -> str:
+    return "n/a" if v is None else fmt.format(v * scale)
+
+
+def _margin_table(cands: list[dict]) -> str:
+    keys = [k for k in MARGIN_ORDER if any(k in c["margins"] for c in cands)]
+    keys += sorted({k for c in cands for k in c["margins"]} - set(keys))
+    head = "".join(f"<th>{_e(k)}</th>" for k in keys)
+    rows = []
+    for c in cands:
+        cells = []
+        for k in keys:
+            v = c["margins"].get(k, "")
+            cls = []
+            if isinstance(v, float) and v < 0:
+                cls.append("neg")
+            if k == c["driver"]:
+                cls.append("drv")
+            text = "" if v == "" else ("n/a" if v is None else f"{v:+.1%}")
+            cells.append(f"<td class='{' '.join(cls)}'>{text}</td>")
+        rows.append(f"<tr><td>{c['rank']}</td><td class='id'>{_e(c['id'])}</td>"
+                    f"<td>{'yes' if c['feasible'] else 'no'}</td><td class='l'>{_e(c['driver'])}</td>{''.join(cells)}</tr>")
+    return (f"<div class='scroll'><table><tr><th>rank</th><th class='l'>design</th><th>feasible</th>"
+            f"<th class='l'>driver</th>{head}</tr>" + "".join(rows) + "</table></div>")
+
+
+def _design_table(cands: list[dict]) -> str:
+    rows = []
+    for c in cands:
+        m, s, sim = c.get("metrics", {}), c.get("static", {}), c.get("simulated", {})
+        if c["technology"] == "dc_motor":
+            parts = f"DC actuator {c['components']['actuator']}"
+        else:
+            k = c["components"]
+            parts = (f"{k['n_stacks']} x {k['stack']}, R = {_num(k['ratio'], fmt='{:.1f}')}, "
+                     f"bores {_num(s.get('wide_diameter_m'), 1e3, '{:.0f}')}/{_num(s.get('narrow_diameter_m'), 1e3, '{:.1f}')} mm, "
+                     f"{k['fluid']}, {k['seal']}, {k['amplifier']}")
+        rows.append(
+            f"<tr><td>{c['rank']}</td><td class='id'>{_e(c['id'])}</td><td class='parts'>{_e(parts)}</td>"
+            f"<td>{_num(m.get('mass_kg'), fmt='{:.1f}')}</td><td>{_num(m.get('cost_usd'), fmt='{:,.0f}')}</td>"
+            f"<td>{_num(m.get('volume_m3'), 1e3, '{:.2f}')}</td><td>{_num(m.get('power_W'), fmt='{:.0f}')}</td>"
+            f"<td>{_num(s.get('free_stroke_m'), 1e3, '{:.1f}')}</td>"
+            f"<td>{_num(s.get('blocked_force_compliant_N', s.get('blocked_force_N')), fmt='{:.0f}')}</td>"
+            f"<td>{_num(sim.get('stroke_m'), 1e3, '{:.1f}')}</td><td>{_num(sim.get('speed_m_s'), 1e3, '{:.0f}')}</td>"
+            f"<td>{_num(sim.get('overshoot'), 100, '{:.1f}')}</td></tr>")
+    return ("<div class='scroll'><table><tr><th>rank</th><th class='l'>design</th><th class='l'>parts</th><th>mass kg</th><th>cost USD</th>"
+            "<th>volume L</th><th>power W</th><th>static stroke mm</th><th>blocked force N (compliant)</th>"
+            "<th>sim. stroke mm</th><th>sim. speed mm/s</th><th>overshoot %</th></tr>" + "".join(rows) + "</table></div>")
+
+
+def _checks_table(cands: list[dict]) -> str:
+    """The physics checks beyond the seed, with their values."""
+    rows = []
+    for c in cands:
+        if c["technology"] != "piezohydraulic" or not c.get("static"):
+            continue
+        s, f = c["static"], c.get("fluid_at_temperature", {})
+        temps = "; ".join(f"{k} {v['rated_degC']:g}/{v['required_degC']:g}" for k, v in c.get("temperatures", {}).items())
+        rows.append(
+            f"<tr><td class='id'>{_e(c['id'])}</td><td>{_num(s.get('blocked_pressure_Pa'), 1e-6, '{:.1f}')}</td>"
+            f"<td>{_num(s.get('compliance_force_fraction'), 100, '{:.0f}')}</td>"
+            f"<td>{_num(s.get('required_current_A'), fmt='{:.2f}')}</td>"
+            f"<td>{_num(s.get('natural_frequency_Hz'), fmt='{:.0f}')}</td>"
+            f"<td>{_num(c.get('simulated', {}).get('overshoot'), 100, '{:.1f}')}</td>"
+            f"<td>{_num(f.get('kinematic_viscosity_m2_s'), 1e6, '{:.2f}')}</td>"
+            f"<td>{_num(f.get('bulk_modulus_Pa'), 1e-9, '{:.2f}')}</td>"
+            f"<td>{_num(s.get('thermal_drift_m'), 1e3, '{:.1f}')}</td><td class='l'>{_e(temps)}</td></tr>")
+    return ("<div class='scroll'><table><tr><th class='l'>design</th><th>blocked pressure MPa</th><th>force kept with fluid compliance %</th>"
+            "<th>drive current needed A</th><th>natural freq. Hz</th><th>sim. overshoot %</th>"
+            "<th>viscosity at T mm&sup2;/s</th><th>bulk modulus at T GPa</th><th>thermal drift mm</th>"
+            "<th class='l'>rated/required degC</th></tr>" + "".join(rows) + "</table></div>")
+
+
+def _pruned_table(results: dict) -> str:
+    pruned = [c for c in results["candidates"] if c.get("stage") == "pruned"]
+    by = Counter((c["components"]["stack"], c["driver"]) for c in pruned)
+    rows = "".join(f"<tr><td class='l'>{_e(s)}</td><td class='l'>{_e(d)}</td><td>{n}</td></tr>"
+                   for (s, d), n in sorted(by.items()))
+    return (f"<p>{len(pruned)} combinations were ruled out before sizing; each stays in results.json with its "
+            f"margins. By stack and the requirement that rules them out:</p><table><tr><th class='l'>stack</th>"
+            f"<th class='l'>ruled out by</th><th>combinations</th></tr>{rows}</table>")
+
+
+def _changes(results: dict, limit: int = 60) -> str:
+    changes = results.get("changes")
+    if changes is None:
+        return ""
+    if not changes:
+        return "<h2>What changed</h2><p>Nothing changed against the baseline.</p>"
+    items = []
+    for ch in changes[:limit]:
+        text = ch.get("summary") or ", ".join(f"{k}: {v}" for k, v in ch.items() if k != "id")
+        items.append(f"<li><code>{_e(ch.get('id', ''))}</code>: {_e(text)}</li>")
+    more = f"<p>... and {len(changes) - limit} more in results.json (\"changes\").</p>" if len(changes) > limit else ""
+    return (f"<h2>What changed</h2><p>{len(changes)} candidates changed standing against the baseline "
+            f"(most important first):</p><ul>{''.join(items)}</ul>{more}")
+
+
+def _pick_comparison(cands: list[dict]) -> list[dict]:
+    picks = []
+    for tech, variant in (("piezohydraulic", "compensated"), ("piezohydraulic", "uncompensated")):
+        group = [c for c in cands if c["technology"] == tech and c.get("variant") == variant and c.get("stage") != "pruned"]
+        if group:
+            picks.append(group[0])
+    picks += [c for c in cands if c["technology"] == "dc_motor"]
+    return picks
+
+
+def render(results: dict, traces: list[dict]) -> str:
+    cands = results["candidates"]
+    figs = [pareto_figure(results), traces_figure(results, traces), comparison_figure(results, _pick_comparison(cands))]
+    divs = [f.to_html(full_html=False, include_plotlyjs=False, div_id=f"plot-{i}",
+                      config={"displaylogo": False, "responsive": True}) for i, f in enumerate(figs)]
+    req = results["requirements"]
+    summary = results["summary"]
+    feasible = [c for c in cands if c["feasible"]]
+    top = feasible[:10]
+    shown_ids = {c["id"] for c in top}
+    best_each = []
+    for g in summary["groups"]:
+        for key in ("best", "closest"):
+            cid = g.get(key)
+            if cid and cid not in shown_ids:
+                best_each.extend(c for c in cands if c["id"] == cid)
+                shown_ids.add(cid)
+    verdicts = "".join(f"<li><b>{_e(g['label'])}</b>: {_e(g['text'])}</li>" for g in summary["groups"])
+    headline = ("<div class='box ok'>" + f"{len(feasible)} feasible designs; Pareto front: "
+                + _e(", ".join(summary["pareto"]) or "empty") + "</div>") if feasible else (
+        "<div class='box'><b>No design meets every requirement.</b> What blocks each technology is listed below.</div>")
+    comp = [c for c in cands if c.get("variant") == "compensated" and c.get("stage") != "pruned"][:10]
+    plain = [c for c in cands if c.get("variant") == "uncompensated" and c.get("stage") not in ("pruned",)][:10]
+    dc = [c for c in cands if c["technology"] == "dc_motor"]
+    checks = "".join(f"<li><b>{_e(k)}</b>: {_e(v)}</li>" for k, v in CHECKS.items())
+    assumptions = "".join(f"<li>{_e(a)}</li>" for a in results["assumptions"])
+    dis = results["disagreements"]
+    dis_html = ("<p>The static screen and the simulation agree within 10 % on stroke and speed for every "
+                "simulated design, and never disagree on a verdict.</p>" if not dis else
+                "<table><tr><th class='l'>design</th><th class='l'>requirement</th><th>static</th><th>simulated</th>"
+                "<th>static margin</th><th>simulated margin</th><th>verdict changes</th></tr>" + "".join(
+                    f"<tr><td class='l'>{_e(d['id'])}</td><td class='l'>{_e(d['requirement'])}</td>"
+                    f"<td>{d['static']:.4g}</td><td>{d['simulated']:.4g}</td><td>{d['static_margin']:+.1%}</td>"
+                    f"<td>{d['simulated_margin']:+.1%}</td><td>{'yes' if d['verdict_changes'] else 'no'}</td></tr>"
+                    for d in dis[:50]) + "</table>")
+    loads = ", ".join(f"{c['load_N']:.0f} N" + (f" ({c['dynamic_pressure_Pa'] / 1e3:g} kPa)" if "dynamic_pressure_Pa" in c else "")
+                      for c in results["load_cases"])
+    counts = results["counts"]
+    stamp = (f"sizing {_e(results['tool_version'])} &middot; requirements sha256 {_e(results['requirements_sha256'])}"
+             f" &middot; catalog sha256 {_e(results['catalog_sha256'])} &middot; solved in {results.get('runtime_s', 0):.1f} s")
+    body = f"""
+<h1>Sizing report</h1>
+<p class="stamp">{stamp}</p>
+<p>Requirements: stroke {req['stroke_m'] * 1e3:g} mm, blocked force {req['blocked_force_N'] / 1e3:g} kN,
+speed {req['speed_m_s'] * 1e3:g} mm/s (stroke within {req['stroke_time_s']:g} s), every component to
+{req['max_temperature_degC']:g} degC. Load cases: {_e(loads)}. Objectives: minimise {_e(', '.join(results['objectives']))}.
+{counts['combinations']} piezohydraulic combinations ({counts['pruned']} ruled out before sizing,
+{counts['sized']} sized by geometric programs, {counts['simulated']} verified by simulation) and
+{len(dc)} DC actuators.</p>
+{headline}
+<h2>Verdict per technology</h2><ul>{verdicts}</ul>
+<h2>100 degC: thermal drift of the enclosed oil</h2>
+<div class="box">{_e(summary['thermal'])}</div>
+<h2>Pareto front</h2>{divs[0]}
+<h2>Margins per requirement</h2>
+<p>Margin = achieved / required - 1 (ceilings: 1 - achieved / allowed); below zero the requirement is missed
+(red). The outlined cell is the design driver, the smallest margin. Simulated figures replace static ones where
+they exist. Top feasible designs, then the best candidate of each technology:</p>
+{_margin_table(top + best_each)}
+{_design_table(top + best_each)}
+<h2>Compensated designs (thermal compensator assumed)</h2>
+{_margin_table(comp) if comp else '<p>None evaluated.</p>'}
+<h2>Uncompensated designs (as built)</h2>
+{_margin_table(plain) if plain else '<p>No combination reached sizing.</p>'}
+<h2>Checks beyond the seed</h2><ul>{checks}</ul>
+{_checks_table(top + best_each)}
+<h2>Time traces under each load case</h2>{divs[1]}
+<h2>Piezohydraulic against the DC motor</h2>{divs[2]}
+{_margin_table(_pick_comparison(cands))}
+<h2>Where the static screen and the simulation disagree</h2>{dis_html}
+<h2>Ruled out before sizing</h2>{_pruned_table(results)}
+{_changes(results)}
+<h2>Assumptions</h2><ul>{assumptions}</ul>
+"""
+    return (f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>sizing report</title><style>{CSS}</style>"
+            f"<script type='text/javascript'>{plotly.offline.get_plotlyjs()}</script></head><body>{body}</body></html>")

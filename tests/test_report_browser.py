@@ -1,0 +1,151 @@
+"""report.html in headless Chromium: the plots render, the console stays
+clean and the page makes no network request (plotly.js is embedded).
+
+The browser is driven over the DevTools protocol on a pipe
+(--remote-debugging-pipe: commands on fd 3, replies on fd 4, each message
+JSON ended by a NUL byte), so no websocket library is needed. Requests the
+browser makes for itself (updates, accounts) belong to no page session and
+are not counted; every request of the report's own session is.
+"""
+from __future__ import annotations
+
+import fcntl
+import json
+import os
+import select
+import shutil
+import subprocess
+import time
+
+import pytest
+
+from sizing.engine.solve import solve
+from sizing.io.catalog import Catalog, load_catalog
+from sizing.io.requirements import load_requirements
+from sizing.report.html import render
+
+from .conftest import CATALOGS, STUDIES
+
+CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
+
+
+def _pipe_fds(read_fd, write_fd):
+    """In the child: the browser's command pipe on fd 3, its replies on fd 4
+    (moved above 10 first so that neither dup2 clobbers the other)."""
+    a = fcntl.fcntl(read_fd, fcntl.F_DUPFD, 10)
+    b = fcntl.fcntl(write_fd, fcntl.F_DUPFD, 10)
+    os.dup2(a, 3)
+    os.dup2(b, 4)
+
+
+class DevTools:
+    def __init__(self, user_data_dir):
+        to_r, to_w = os.pipe()      # we write commands, the browser reads fd 3
+        from_r, from_w = os.pipe()  # the browser writes fd 4, we read
+        self.proc = subprocess.Popen(
+            [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+             "--disable-component-update", "--disable-sync", "--no-first-run", f"--user-data-dir={user_data_dir}",
+             "--remote-debugging-pipe", "about:blank"],
+            pass_fds=(to_r, from_w, 3, 4), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+            preexec_fn=lambda: _pipe_fds(to_r, from_w))
+        os.close(to_r)
+        os.close(from_w)
+        self.w, self.r = to_w, from_r
+        self.buffer = b""
+        self.events: list[dict] = []
+        self.next_id = 0
+
+    def send(self, method, params=None, session=None, timeout=30.0):
+        self.next_id += 1
+        msg = {"id": self.next_id, "method": method, "params": params or {}}
+        if session:
+            msg["sessionId"] = session
+        os.write(self.w, json.dumps(msg).encode() + b"\0")
+        deadline = time.monotonic() + timeout
+        while True:
+            reply = self._read(deadline)
+            if reply.get("id") == self.next_id:
+                if "error" in reply:
+                    raise RuntimeError(f"{method}: {reply['error']}")
+                return reply.get("result", {})
+            self.events.append(reply)
+
+    def wait_for(self, method, timeout=30.0):
+        deadline = time.monotonic() + timeout
+        while not any(e.get("method") == method for e in self.events):
+            self.events.append(self._read(deadline))
+
+    def _read(self, deadline) -> dict:
+        while b"\0" not in self.buffer:
+            left = deadline - time.monotonic()
+            if left <= 0 or not select.select([self.r], [], [], left)[0]:
+                raise TimeoutError("no reply from chromium")
+            chunk = os.read(self.r, 1 << 16)
+            if not chunk:
+                raise RuntimeError("chromium closed the pipe")
+            self.buffer += chunk
+        raw, self.buffer = self.buffer.split(b"\0", 1)
+        return json.loads(raw)
+
+    def close(self):
+        try:
+            self.send("Browser.close", timeout=5)
+        except Exception:
+            pass
+        try:
+            self.proc.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            self.proc.kill()
+        os.close(self.w)
+        os.close(self.r)
+
+
+@pytest.fixture(scope="module")
+def report_file(tmp_path_factory):
+    req, sha = load_requirements(STUDIES / "seed-requirements.toml")
+    full = load_catalog(CATALOGS)
+    cat = Catalog(folder=full.folder, stacks={"pi-p-056.90": full.stacks["pi-p-056.90"]},
+                  fluids={"mil-prf-87257": full.fluids["mil-prf-87257"]},
+                  seals={"ptfe-spring-energised": full.seals["ptfe-spring-energised"]},
+                  amplifiers={"pi-e-481": full.amplifiers["pi-e-481"]},
+                  dc_actuators=dict(full.dc_actuators), files=dict(full.files))
+    out = solve(req, sha, cat)
+    path = tmp_path_factory.mktemp("report") / "report.html"
+    path.write_text(render(out.results, out.traces), encoding="utf-8")
+    return path
+
+
+@pytest.mark.skipif(CHROMIUM is None, reason="chromium is not installed")
+def test_report_renders_offline_without_console_errors(report_file, tmp_path):
+    dt = DevTools(tmp_path / "profile")
+    try:
+        target = dt.send("Target.createTarget", {"url": "about:blank"})["targetId"]
+        session = dt.send("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
+        for domain in ("Page", "Runtime", "Network", "Log"):
+            dt.send(f"{domain}.enable", session=session)
+        dt.send("Page.navigate", {"url": report_file.as_uri()}, session=session)
+        dt.wait_for("Page.loadEventFired")
+        expr = ("Array.from(document.querySelectorAll('.plotly-graph-div'))"
+                ".map(d => d.querySelectorAll('svg.main-svg').length)")
+        counts = []
+        for _ in range(50):      # plotly draws right after load; allow it a moment
+            counts = dt.send("Runtime.evaluate", {"expression": expr, "returnByValue": True},
+                             session=session)["result"]["value"]
+            if counts and all(n > 0 for n in counts):
+                break
+            time.sleep(0.1)
+        title = dt.send("Runtime.evaluate", {"expression": "document.title", "returnByValue": True},
+                        session=session)["result"]["value"]
+    finally:
+        dt.close()
+    assert title == "sizing report"
+    assert len(counts) == 3 and all(n > 0 for n in counts), counts
+    mine = [e for e in dt.events if e.get("sessionId") == session]
+    errors = [e for e in mine if e.get("method") == "Runtime.exceptionThrown"
+              or (e.get("method") == "Runtime.consoleAPICalled" and e["params"]["type"] in ("error", "assert"))
+              or (e.get("method") == "Log.entryAdded" and e["params"]["entry"]["level"] == "error")]
+    assert not errors, errors
+    requests = [e["params"]["request"]["url"] for e in mine if e.get("method") == "Network.requestWillBeSent"]
+    external = [u for u in requests if not u.startswith(("file:", "data:", "about:", "blob:"))]
+    assert not external, external
+    assert any(u.startswith("file:") for u in requests)     # the network domain did see the page itself

@@ -1,0 +1,263 @@
+"""sizing solve: the geometric program, Pareto and rank, and the whole run."""
+from __future__ import annotations
+
+import dataclasses
+import json
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings, strategies as st
+
+from sizing import api
+from sizing.engine import convex
+from sizing.engine.convex import GPSizer, SizingInput
+from sizing.engine.rank import dominates, nondominated_levels, pareto_mask, rank_order, verdict
+from sizing.engine.solve import solve
+from sizing.io.catalog import Catalog, load_catalog
+from sizing.io.requirements import load_requirements
+from sizing.physics import geometry
+
+from .conftest import CATALOGS, STUDIES, run_cli
+
+CONTRACT_KEYS = {"id", "technology", "components", "static", "simulated", "margins", "feasible", "driver",
+                 "pareto", "rank", "metrics"}
+
+# the seed's full-scale stack (Table 2) with the PAO fluid, a 21 MPa seal and the PI amplifier
+BASE = SizingInput(
+    n_stiffness=10 * 4.33e8, stack_stroke=180e-6, rated_voltage=1000.0, max_fraction=1.0, force=2500.0,
+    stroke=0.04, bulk_modulus=1.5e9, wide_gap=3e-3, pressure_rating=21e6, natural_frequency=25.0,
+    stroke_time=0.4, n_capacitance=10 * 31e-6, max_current=2.0, margin=0.05, fixed_mass=41.9,
+    fixed_cost=216500.0, fixed_volume=0.01, oil_density=850.0, oil_cost=10_000.0)
+
+
+def constraint_values(s: SizingInput, R, A, v) -> dict:
+    """The requirements of the GP evaluated with numpy, written out again by hand."""
+    x = s.stack_stroke * v
+    k_stacks = s.n_stiffness
+    k_fluid = s.bulk_modulus * A / (s.wide_gap + x)          # beta A_w^2 / (A_w (g + x))
+    k_wide = k_stacks * k_fluid / (k_stacks + k_fluid)
+    m_w = geometry.wide_piston_mass(A, s.pressure_rating)
+    m_n = geometry.narrow_piston_mass(A / R, R * x)
+    f_n = math.sqrt(k_wide / (m_w + R**2 * m_n)) / (2 * math.pi)
+    c_large = s.n_capacitance * 1.7
+    current = c_large * s.rated_voltage * s.stroke / (R * s.stack_stroke * s.stroke_time)
+    return {"stroke": R * x / s.stroke, "blocked_force": k_wide * x / R / s.force,
+            "pressure": s.pressure_rating * A / (k_stacks * x), "drive_current": s.max_current / current,
+            "natural_frequency": f_n / s.natural_frequency}
+
+
+def hydraulic_mass(s, R, A, v):
+    x = s.stack_stroke * v
+    return geometry.hydraulic_mass(A, A / R, s.pressure_rating, s.wide_gap, R * x, s.oil_density)
+
+
+def test_gp_solution_meets_every_requirement_with_its_margin():
+    res = GPSizer(("mass", "cost")).solve(BASE)
+    assert res.success
+    values = constraint_values(BASE, res.ratio, res.wide_area, res.voltage_fraction)
+    for name in ("stroke", "blocked_force"):
+        assert values[name] >= (1 + BASE.margin) * (1 - 1e-6), name
+    for name in ("pressure", "drive_current", "natural_frequency"):
+        assert values[name] >= 1 - 1e-6, name
+    # binding at the optimum: the blocked force (with the oil spring) holds at its margin
+    assert values["blocked_force"] == pytest.approx(1 + BASE.margin, rel=1e-4)
+
+
+def test_gp_matches_brute_force_optimum_of_the_mass():
+    """Cross-check: minimise mass alone and compare with a dense grid search
+    over (R, A_w, v) using the numpy formulas."""
+    s = dataclasses.replace(BASE, natural_frequency=1.0)
+    res = GPSizer(("mass",)).solve(s)
+    assert res.success
+    gp_mass = hydraulic_mass(s, res.ratio, res.wide_area, res.voltage_fraction)
+    R, A, v = np.meshgrid(np.linspace(150, 300, 301), np.geomspace(0.02, 0.2, 301), np.linspace(0.7, 1.0, 61),
+                          indexing="ij")
+    vals = constraint_values(s, R, A, v) if False else None  # noqa: F841 (math.sqrt is scalar; vectorise below)
+    x = s.stack_stroke * v
+    k_fluid = s.bulk_modulus * A / (s.wide_gap + x)
+    k_wide = s.n_stiffness * k_fluid / (s.n_stiffness + k_fluid)
+    ok = ((R * x >= s.stroke * (1 + s.margin)) & (k_wide * x / R >= s.force * (1 + s.margin))
+          & (s.n_stiffness * x <= A * s.pressure_rating))
+    grid_mass = np.where(ok, hydraulic_mass(s, R, A, v), np.inf).min()
+    assert gp_mass <= grid_mass * (1 + 1e-6)
+    assert gp_mass == pytest.approx(grid_mass, rel=0.02)
+
+
+def test_gp_names_the_binding_requirement_when_infeasible():
+    # hand-computed work bound: 5 stacks give 5 x 4.33e8 x (180e-6)^2 = 70 J < 2.5 kN x 40 mm x 1.05^2 = 110 J
+    s = dataclasses.replace(BASE, n_stiffness=5 * 4.33e8, n_capacitance=5 * 31e-6)
+    res = GPSizer().solve(s)
+    assert not res.success
+    assert set(res.binding) <= {"stroke", "blocked_force"} and res.binding
+    # an amplifier far too weak: the drive current binds
+    res = GPSizer().solve(dataclasses.replace(BASE, max_current=1e-4))
+    assert not res.success and res.driver == "drive_current"
+
+
+def test_gp_reuses_the_compiled_problem():
+    sizer = GPSizer()
+    first = sizer.solve(BASE)
+    again = sizer.solve(dataclasses.replace(BASE, n_stiffness=12 * 4.33e8, n_capacitance=12 * 31e-6))
+    back = sizer.solve(BASE)
+    assert first.success and again.success
+    assert back.ratio == pytest.approx(first.ratio, rel=1e-6)
+    assert again.ratio != pytest.approx(first.ratio, rel=1e-3)
+    assert convex.SOLVER in ("CLARABEL", "ECOS", "SCS")
+
+
+objective_rows = st.lists(st.tuples(st.integers(0, 20), st.integers(0, 20)), min_size=1, max_size=40)
+
+
+@settings(max_examples=60, deadline=None)
+@given(objective_rows, st.randoms(use_true_random=False))
+def test_pareto_front_is_mutually_nondominated_and_order_free(rows, rnd):
+    F = np.array(rows, dtype=float)
+    mask = pareto_mask(F)
+    front = F[mask]
+    assert mask.any()
+    for i in range(len(front)):
+        for j in range(len(front)):
+            assert not dominates(front[i], front[j])
+    for i in np.flatnonzero(~mask):
+        assert any(dominates(f, F[i]) for f in front)
+    perm = list(range(len(F)))
+    rnd.shuffle(perm)
+    assert set(map(tuple, F[perm][pareto_mask(F[perm])])) == set(map(tuple, front))
+    assert np.array_equal(nondominated_levels(F[perm]), nondominated_levels(F)[perm])
+
+
+def test_rank_puts_feasible_first_and_verdict_names_the_driver():
+    feasible, drv = verdict({"stroke": 0.2, "speed": -0.1, "temperature": 0.5})
+    assert not feasible and drv == "speed"
+    assert verdict({"stroke": 0.0, "speed": 0.3}) == (True, "stroke")
+    assert verdict({"stroke": float("nan"), "speed": 0.3}) == (False, "stroke")
+    F = np.array([[1.0, 1.0], [2.0, 2.0], [0.5, 0.5], [3.0, 0.1]])
+    rank = rank_order(np.array([False, True, False, True]), F, np.array([-0.5, 0.1, -0.01, 0.2]))
+    assert sorted(rank[[1, 3]]) == [1, 2]
+    assert rank[2] == 3 and rank[0] == 4     # closest to feasible first among the infeasible
+
+
+@pytest.fixture(scope="module")
+def seed_requirements():
+    return load_requirements(STUDIES / "seed-requirements.toml")
+
+
+@pytest.fixture(scope="module")
+def small_catalog():
+    """The shipped parts that matter for the seed, plus every DC actuator."""
+    full = load_catalog(CATALOGS)
+    pick = lambda group, ids: {k: v for k, v in group.items() if k in ids}  # noqa: E731
+    return Catalog(folder=full.folder,
+                   stacks=pick(full.stacks, {"pi-p-056.90", "thorlabs-pk4ga7p1"}),
+                   fluids=pick(full.fluids, {"mil-prf-87257", "iso-vg-15-mineral"}),
+                   seals=pick(full.seals, {"ptfe-spring-energised"}),
+                   amplifiers=pick(full.amplifiers, {"pi-e-481", "piezodrive-pd200"}),
+                   dc_actuators=dict(full.dc_actuators), files=dict(full.files))
+
+
+def test_small_solve_keeps_every_combination_and_names_reasons(seed_requirements, small_catalog):
+    req, sha = seed_requirements
+    out = solve(req, sha, small_catalog)
+    r = out.results
+    piezo = [c for c in r["candidates"] if c["technology"] == "piezohydraulic" and c["variant"] == "uncompensated"]
+    assert len(piezo) == 2 * 2 * 1 * 2 * req.options.max_stacks
+    assert all(c["driver"] for c in r["candidates"])
+    thorlabs = [c for c in piezo if c["components"]["stack"] == "thorlabs-pk4ga7p1"]
+    assert all(not c["feasible"] for c in thorlabs)
+    assert all(c["margins"]["temperature"] < 0 for c in thorlabs)      # rated 85 degC
+    mineral = [c for c in piezo if c["components"]["fluid"] == "iso-vg-15-mineral"]
+    assert all(c["margins"]["temperature"] < 0 for c in mineral)       # rated 80 degC
+    ranks = sorted(c["rank"] for c in r["candidates"])
+    assert ranks == list(range(1, len(r["candidates"]) + 1))
+    feasible = [c for c in r["candidates"] if c["feasible"]]
+    assert feasible and all(c["rank"] <= len(feasible) for c in feasible)
+    assert all(c["variant"] == "compensated" for c in feasible if c["technology"] == "piezohydraulic")
+    assert "EVERY uncompensated" in r["summary"]["thermal"]
+    F = np.array([[c["metrics"]["mass_kg"], c["metrics"]["cost_usd"]] for c in feasible])
+    assert [c["pareto"] for c in feasible] == pareto_mask(F).tolist()
+    assert out.traces and all(case["t"] for tr in out.traces for case in tr["cases"])
+
+
+def test_seed_solve_end_to_end(tmp_path, seed_requirements):
+    """Acceptance: exit 0, three files, a feasible (compensated) piezohydraulic
+    design whose static figures agree with `sizing evaluate`, DC margins
+    including temperature, the drift stated."""
+    out = tmp_path / "out"
+    code, stdout, stderr = run_cli("solve", STUDIES / "seed-requirements.toml", "--out", out, "--quiet")
+    assert code == 0, stderr
+    assert {p.name for p in out.iterdir()} == {"results.json", "candidates.csv", "report.html"}
+    r = json.loads((out / "results.json").read_text())
+    assert {"tool_version", "requirements_sha256", "catalog_sha256", "candidates"} <= set(r)
+    assert r["requirements_sha256"] == seed_requirements[1]
+    for c in r["candidates"]:
+        assert CONTRACT_KEYS <= set(c), c["id"]
+    best = next(c for c in r["candidates"] if c["technology"] == "piezohydraulic" and c["feasible"])
+    assert best["variant"] == "compensated" and best["rank"] >= 1
+    assert {"stroke", "blocked_force", "speed", "temperature"} <= set(best["margins"])
+    assert set(best["components"]) >= {"stack", "n_stacks", "ratio", "fluid", "seal", "amplifier"}
+    cases = best["simulated"]["cases"]
+    at25 = next(c for c in cases if c["load_N"] == pytest.approx(1209.675))
+    assert at25["stroke_m"] >= 0.04 and at25["speed_m_s"] >= 0.1
+    # the same design through `sizing evaluate`
+    d = best["design"]
+    load = r["requirements"]
+    design = tmp_path / "design.toml"
+    design.write_text("\n".join([
+        'technology = "piezohydraulic"', f'stack = "{d["stack"]}"', f'n_stacks = {d["n_stacks"]}',
+        f'voltage = {d["voltage"]!r}', f'wide_diameter = {d["wide_diameter"]!r}',
+        f'narrow_diameter = {d["narrow_diameter"]!r}', f'fluid = "{d["fluid"]}"', f'seal = "{d["seal"]}"',
+        f'amplifier = "{d["amplifier"]}"', f'wide_gap = {d["wide_gap"]!r}', f'rise_time = {d["rise_time"]!r}',
+        f'temperature = {d["temperature"]!r}', "[load]", 'dynamic_pressure = ["10 kPa", "25 kPa"]']) + "\n")
+    ev = api.evaluate(design)
+    for key in ("free_stroke_m", "blocked_force_N", "blocked_force_compliant_N", "natural_frequency_Hz",
+                "blocked_pressure_Pa", "drive_current_A", "thermal_drift_per_K_m"):
+        assert ev["static"][key] == pytest.approx(best["static"][key], rel=1e-6), key
+    assert load["stroke_m"] == pytest.approx(0.04)
+    dc = [c for c in r["candidates"] if c["technology"] == "dc_motor"]
+    assert dc and all("temperature" in c["margins"] for c in dc)
+    plain = [c for c in r["candidates"] if c["technology"] == "piezohydraulic" and c["variant"] == "uncompensated"]
+    assert not any(c["feasible"] for c in plain)
+    html = (out / "report.html").read_text()
+    assert "EVERY uncompensated piezohydraulic design infeasible" in html
+    assert "<script src=" not in html and "Plotly.newPlot" in html and r["catalog_sha256"] in html and r["requirements_sha256"] in html
+    header = (out / "candidates.csv").read_text().splitlines()[0]
+    assert header.startswith("rank,id,technology")
+
+
+def test_impossible_requirements_exit_0_and_name_the_blocker(tmp_path):
+    req = tmp_path / "impossible.toml"
+    req.write_text((STUDIES / "seed-requirements.toml").read_text()
+                   .replace('"2.5 kN"', '"500 kN"').replace('"100 degC"', '"400 degC"'))
+    out = tmp_path / "out"
+    code, _, stderr = run_cli("solve", req, "--out", out, "--quiet")
+    assert code == 0, stderr
+    r = json.loads((out / "results.json").read_text())
+    assert not any(c["feasible"] for c in r["candidates"])
+    assert not any(c["pareto"] for c in r["candidates"])
+    groups = {g["variant"]: g for g in r["summary"]["groups"]}
+    assert groups["uncompensated"]["blocking"] in {"temperature", "work"}
+    assert groups["catalog"]["blocking"]
+    html = (out / "report.html").read_text()
+    assert "No design meets every requirement" in html
+    for g in r["summary"]["groups"]:
+        if g["n_candidates"]:
+            assert f"blocked by {g['blocking']}" in html
+
+
+def test_baseline_adds_what_changed(tmp_path):
+    out1, out2 = tmp_path / "a", tmp_path / "b"
+    base = STUDIES / "seed-requirements.toml"
+    assert run_cli("solve", base, "--out", out1, "--quiet")[0] == 0
+    harder = tmp_path / "harder.toml"
+    harder.write_text(base.read_text().replace('"2.5 kN"', '"2.9 kN"'))
+    code, _, stderr = run_cli("solve", harder, "--out", out2, "--quiet", "--baseline", out1 / "results.json")
+    assert code == 0, stderr
+    r = json.loads((out2 / "results.json").read_text())
+    assert isinstance(r["changes"], list) and r["changes"]
+    assert "What changed" in (out2 / "report.html").read_text()
+    bad = tmp_path / "bad.json"
+    bad.write_text("{not json")
+    code, _, stderr = run_cli("solve", base, "--out", tmp_path / "c", "--quiet", "--baseline", bad)
+    assert code == 2 and "bad.json" in stderr
+    assert not (tmp_path / "c").exists()

@@ -54,16 +54,26 @@ def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-ou
     old = _load_baseline(baseline) if baseline is not None else None
     output = run(req, sha, cat, progress=progress)
     results = output.results
+    results["catalog_dir"] = str(cat.folder.resolve())
     if old is not None:
-        results["changes"] = _rank_changes(old, results)
+        results["changes"] = _rank_changes(old, results, baseline, cat.folder)
         results["baseline_sha256"] = old.get("requirements_sha256")
     if out_dir is not None:
         out = Path(out_dir)
         files = {out / "results.json": json.dumps(results, indent=1, allow_nan=False) + "\n",
                  out / "candidates.csv": candidates_csv(results),
                  out / "report.html": render(results, output.traces)}
+        # the catalog these results rest on, so a later --baseline can diff it
+        files.update(_catalog_snapshot(cat.folder, out))
         write_many(files)
     return results
+
+
+def _catalog_snapshot(folder: Path, out: Path) -> dict[Path, str]:
+    from .io.catalog import KINDS
+    from .io.catalog_diff import SNAPSHOT_DIR
+    return {out / SNAPSHOT_DIR / name: (folder / name).read_text(encoding="utf-8")
+            for name in KINDS if (folder / name).exists()}
 
 
 def _load_baseline(path: str | Path) -> dict:
@@ -82,11 +92,15 @@ def _load_baseline(path: str | Path) -> dict:
     return data
 
 
-def _rank_changes(baseline: dict, results: dict) -> list[dict]:
-    """Designs whose standing changed (engine/changes.py, issue 6). The
-    baseline's catalog folder is not known here, so no catalog diff."""
+def _rank_changes(baseline: dict, results: dict, baseline_path, catalog_folder: Path) -> list[dict]:
+    """Designs whose standing changed (engine/changes.py, issue 6), with the
+    catalog fields responsible when the baseline's catalog is known (the
+    snapshot ``sizing solve`` writes beside its results.json)."""
     from .engine.changes import rank_changes
-    return rank_changes(baseline, results, None)
+    from .io.catalog_diff import baseline_catalog, diff_catalogs
+    old_catalog = baseline_catalog(baseline_path, baseline)
+    diff = diff_catalogs(old_catalog, catalog_folder) if old_catalog is not None else None
+    return rank_changes(baseline, results, diff)
 
 
 def diagnose(campaign_dir: str | Path, holdout: list[str], out_dir: str | Path | None = None,

@@ -186,7 +186,9 @@ def test_seed_solve_end_to_end(tmp_path, seed_requirements):
     out = tmp_path / "out"
     code, stdout, stderr = run_cli("solve", STUDIES / "seed-requirements.toml", "--out", out, "--quiet")
     assert code == 0, stderr
-    assert {p.name for p in out.iterdir()} == {"results.json", "candidates.csv", "report.html"}
+    # the three files of the contract, plus the catalog snapshot a later
+    # --baseline diffs against
+    assert {p.name for p in out.iterdir()} == {"results.json", "candidates.csv", "report.html", "catalog"}
     r = json.loads((out / "results.json").read_text())
     assert {"tool_version", "requirements_sha256", "catalog_sha256", "candidates"} <= set(r)
     assert r["requirements_sha256"] == seed_requirements[1]

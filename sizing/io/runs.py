@@ -56,7 +56,8 @@ def read_run(path: str | Path, required=PIEZO_COLUMNS, optional=PIEZO_OPTIONAL) 
     wanted = list(required) + [name for name in optional if name in header]
     data = _numbers(path, rows[1:], header, wanted)
     if len(data[wanted[0]]) < MIN_SAMPLES:
-        raise InputError(str(path), "line 2", f"expected at least {MIN_SAMPLES} samples, got {len(data[wanted[0]])}")
+        raise InputError(str(path), f"line {len(data[wanted[0]]) + 2}, column {wanted[0]}",
+                         f"expected at least {MIN_SAMPLES} samples, got {len(data[wanted[0]])}")
     time = data.pop("time_s")
     steps = np.diff(time)
     if np.any(steps <= 0):

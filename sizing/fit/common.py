@@ -1,0 +1,187 @@
+"""Pieces shared by the estimators: measured records, input checks and
+treatment, and the statistics of a least-squares fit (covariance from the
+Jacobian, 95 % intervals, identifiability warnings).
+
+Pure numerics: nothing here opens files or prints. Records arrive as arrays
+(SI) with the name and path of the run they came from, so that a FitError
+can name the file.
+"""
+from __future__ import annotations
+
+import warnings
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import FitError
+from ..sim.signals import excitation_cutoff, lowpass_zero_phase
+
+MIN_FIT_SAMPLES = 20          # per run
+MIN_REVERSALS = 1             # per training set: a loop needs the input to turn
+Z95 = 1.959963984540054
+
+
+class ConvergenceWarning(UserWarning):
+    """The solver stopped before it converged (STYLE.md: scikit-learn)."""
+
+
+class IdentifiabilityWarning(UserWarning):
+    """A parameter is poorly determined by the data: strongly correlated with
+    another, at a bound, or with a confidence interval wider than its value."""
+
+
+@dataclass
+class HysteresisRecord:
+    """One run for a hysteresis fit: time (n,) s, voltage (n,) V, measured
+    displacement (n,) m. ``source`` names the file in messages."""
+
+    name: str
+    time: np.ndarray
+    voltage: np.ndarray
+    position: np.ndarray
+    source: str = ""
+    voltage_filtered: np.ndarray | None = field(default=None, repr=False)
+
+    @property
+    def label(self) -> str:
+        return self.source or self.name
+
+
+def count_reversals(v: np.ndarray, tol: float) -> int:
+    """Turns of the input by more than ``tol`` (a hysteresis loop needs one)."""
+    turns, direction = 0, 0
+    hi = lo = ext = float(v[0])
+    for value in np.asarray(v, float)[1:]:
+        if direction == 0:
+            hi, lo = max(hi, value), min(lo, value)
+            if hi - lo > tol:
+                direction, ext = (1 if value == hi else -1), value
+        elif direction == 1:
+            if value > ext:
+                ext = value
+            elif ext - value > tol:
+                turns, direction, ext = turns + 1, -1, value
+        else:
+            if value < ext:
+                ext = value
+            elif value - ext > tol:
+                turns, direction, ext = turns + 1, 1, value
+    return turns
+
+
+def check_hysteresis_records(records: list[HysteresisRecord]) -> None:
+    """Raise FitError when the records cannot support a hysteresis fit."""
+    if not records:
+        raise FitError("no run to fit")
+    for rec in records:
+        if len(rec.time) < MIN_FIT_SAMPLES:
+            raise FitError(f"{rec.label}: too short for a fit: {len(rec.time)} samples, "
+                           f"expected at least {MIN_FIT_SAMPLES}")
+        span_v = float(np.ptp(rec.voltage))
+        if span_v <= 1e-9 * max(1.0, float(np.max(np.abs(rec.voltage)))):
+            raise FitError(f"{rec.label}: column voltage_V: constant input "
+                           f"({rec.voltage[0]:g} V throughout); a hysteresis fit needs a varying voltage")
+        if float(np.ptp(rec.position)) == 0.0:
+            raise FitError(f"{rec.label}: column position_m: constant displacement; nothing to fit")
+    v_scale = max(float(np.ptp(r.voltage)) for r in records)
+    if sum(count_reversals(r.voltage_filtered if r.voltage_filtered is not None else r.voltage,
+                           0.05 * v_scale) for r in records) < MIN_REVERSALS:
+        names = ", ".join(r.label for r in records)
+        raise FitError(f"{names}: column voltage_V: no reversal of the input (it only rises or only falls); "
+                       "a hysteresis loop needs the voltage to turn at least once")
+
+
+def filter_inputs(records: list[HysteresisRecord], cutoff_hz: float | None) -> list[float]:
+    """Low-pass each record's voltage on purpose (zero phase, no delay) so that
+    sensor noise cannot ratchet the hysteresis state. Returns the cut-off used
+    per record (Hz); ``cutoff_hz=None`` picks it with ``excitation_cutoff``
+    (20 x the dominant frequency, at least 5 Hz); ``0`` disables filtering."""
+    used = []
+    for rec in records:
+        if cutoff_hz == 0:
+            rec.voltage_filtered = np.asarray(rec.voltage, float).copy()
+            used.append(0.0)
+            continue
+        fc = excitation_cutoff(rec.time, rec.voltage) if cutoff_hz is None else float(cutoff_hz)
+        rec.voltage_filtered = padded_lowpass(rec.time, rec.voltage, fc)
+        used.append(fc)
+    return used
+
+
+def padded_lowpass(t: np.ndarray, v: np.ndarray, cutoff_hz: float) -> np.ndarray:
+    """``lowpass_zero_phase`` with long, smooth extensions at both ends, so
+    that the filter's start-up transient stays outside the record: a mirror
+    image (even extension) where the record ends at a turning point of the
+    input, a point reflection (odd extension, value and slope kept) where it
+    ends mid-stroke. The filter's own short padding would otherwise bend the
+    first and last tenths of a second by up to 0.3 % of the range."""
+    v = np.asarray(v, float)
+    n = len(v)
+    fs = 1.0 / float(np.median(np.diff(t)))
+    if cutoff_hz <= 0 or cutoff_hz >= 0.45 * fs or n < 8:
+        return lowpass_zero_phase(t, v, cutoff_hz)
+    n_pad = min(int(3 * fs / cutoff_hz) + 1, n - 1)
+    window = max(3, min(int(fs / cutoff_hz), n // 4))
+
+    w_c = 2 * np.pi * cutoff_hz / fs   # rad per sample
+
+    def extension(seg, edge):          # seg runs away from the edge
+        # the mirror breaks the slope (error ~ 2|s|/w_c), the point
+        # reflection the curvature (~ 2|c|/w_c^2): take the smaller
+        curv2, slope, _ = np.polyfit(np.arange(window), seg[:window], 2)
+        turning = abs(slope) * w_c < abs(2 * curv2)
+        mirrored = seg[1:n_pad + 1][::-1]
+        return mirrored if turning else 2 * edge - mirrored
+
+    head = extension(v, v[0])
+    tail = extension(v[::-1], v[-1])[::-1]
+    padded = np.concatenate([head, v, tail])
+    dt = 1.0 / fs
+    tp = np.concatenate([t[0] - dt * np.arange(len(head), 0, -1), t, t[-1] + dt * np.arange(1, len(tail) + 1)])
+    return lowpass_zero_phase(tp, padded, cutoff_hz)[len(head):len(head) + n]
+
+
+def covariance(jac: np.ndarray, residual: np.ndarray, n_free: int | None = None) -> np.ndarray:
+    """Gauss-Newton covariance s^2 (J^T J)^+ of the parameters of a
+    least-squares fit, with s^2 the residual variance (m - p dof)."""
+    m, p = jac.shape
+    dof = max(m - (n_free if n_free is not None else p), 1)
+    s2 = float(residual @ residual) / dof
+    _, sv, vt = np.linalg.svd(jac, full_matrices=False)
+    keep = sv > sv[0] * 1e-12 if sv.size and sv[0] > 0 else np.zeros_like(sv, bool)
+    inv = (vt[keep].T / sv[keep] ** 2) @ vt[keep]
+    return s2 * inv
+
+
+def correlation(cov: np.ndarray) -> np.ndarray:
+    sd = np.sqrt(np.clip(np.diag(cov), 0, None))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        corr = cov / np.outer(sd, sd)
+    return np.nan_to_num(corr, nan=0.0)
+
+
+def identifiability(names: list[str], values: np.ndarray, half_width: np.ndarray, corr: np.ndarray,
+                    at_bound: np.ndarray, max_corr: float = 0.95) -> list[str]:
+    """Messages for parameters the data do not pin down; also issued as
+    IdentifiabilityWarning."""
+    out = []
+    for i, name in enumerate(names):
+        if at_bound[i]:
+            out.append(f"{name} = {values[i]:.4g} is at a bound of its physical range; "
+                       "the data push it outside, or do not determine it")
+        if not np.isfinite(half_width[i]) or half_width[i] > abs(values[i]):
+            out.append(f"{name}: the 95% confidence interval (+/- {half_width[i]:.3g}) is wider "
+                       f"than the value ({values[i]:.4g}); not identifiable from these runs")
+    for i in range(len(names)):
+        for j in range(i + 1, len(names)):
+            if abs(corr[i, j]) > max_corr:
+                out.append(f"{names[i]} and {names[j]} are strongly correlated (r = {corr[i, j]:+.3f}); "
+                           "the data determine a combination of them better than each one")
+    for message in out:
+        warnings.warn(message, IdentifiabilityWarning, stacklevel=3)
+    return out
+
+
+def fd_columns(base: np.ndarray, perturbed: np.ndarray, steps: np.ndarray) -> np.ndarray:
+    """Forward-difference Jacobian columns: (perturbed - base) / step."""
+    return ((perturbed - base[None, :]) / steps[:, None]).T

@@ -1,0 +1,82 @@
+"""What an unmodelled effect is: a model augmentation with a few physical
+parameters, their bounds, and two realistic sizes.
+
+An effect acts in one or both of two places:
+- ``model_changes``: fields of the simulator's model (PiezoHydraulicModel or
+  DCMotorModel) set from the effect's parameters, vectorised over candidate
+  parameter sets: values {param: (n_cand,)} -> {field: (n_cand,)};
+- ``measure``: the measurement path, a pure post-processing of one simulated
+  position trace (sensor delay, backlash, sensor vibration).
+Effects are plain data plus these two hooks (scikit-learn habit: bounds are
+declared as data).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+
+@dataclass(frozen=True)
+class Param:
+    """One effect parameter, SI. ``log``: searched on a log scale."""
+
+    name: str            # key in diagnosis.json, with its unit suffix
+    lo: float
+    hi: float
+    log: bool = False
+    doc: str = ""
+
+    def to_unit(self, value):
+        """Physical value -> [0, 1] search coordinate."""
+        value = np.asarray(value, float)
+        if self.log:
+            return (np.log(value) - np.log(self.lo)) / (np.log(self.hi) - np.log(self.lo))
+        return (value - self.lo) / (self.hi - self.lo)
+
+    def from_unit(self, z):
+        """[0, 1] search coordinate -> physical value."""
+        z = np.clip(np.asarray(z, float), 0.0, 1.0)
+        if self.log:
+            return np.exp(np.log(self.lo) + z * (np.log(self.hi) - np.log(self.lo)))
+        return self.lo + z * (self.hi - self.lo)
+
+
+@dataclass(frozen=True)
+class Effect:
+    """A candidate unmodelled effect (see the module docstring)."""
+
+    name: str
+    technology: str                  # "piezohydraulic" or "dc_motor"
+    params: tuple = ()
+    sizes: tuple = ()                # two realistic sizes: ({param: value}, {param: value})
+    source: str = ""                 # where the physics and the sizes come from
+    post: bool = False               # True when only ``measure`` acts (no re-simulation)
+    extra: dict = field(default_factory=dict)
+
+    @property
+    def names(self) -> list[str]:
+        return [p.name for p in self.params]
+
+    def values(self, Z: np.ndarray) -> dict[str, np.ndarray]:
+        """Z (n_cand, n_par) in [0, 1] -> {param: (n_cand,)} physical."""
+        Z = np.atleast_2d(np.asarray(Z, float))
+        return {p.name: p.from_unit(Z[:, i]) for i, p in enumerate(self.params)}
+
+    def unit(self, values: dict) -> np.ndarray:
+        """{param: value} -> (n_par,) search coordinates."""
+        return np.array([float(p.to_unit(values[p.name])) for p in self.params])
+
+    def applicable(self, rig, model) -> bool:
+        """False when the nominal model already contains the effect."""
+        return True
+
+    def sizes_for(self, rig, model) -> tuple:
+        """Two realistic sizes for this rig (default: the declared ones)."""
+        return self.sizes
+
+    def model_changes(self, model, values: dict) -> dict:
+        return {}
+
+    def measure(self, t: np.ndarray, y: np.ndarray, values: dict) -> np.ndarray:
+        return y

@@ -1,0 +1,93 @@
+"""Treatment of a measured piezo voltage before it drives the model.
+
+The Bouc-Wen model (seed eq. 2) reacts to the sign of dv/dt at every
+instant: its delta term adds delta v sgn(v') dt whatever the rate, so raw
+sensor noise, which reverses the input hundreds of times a second, ratchets
+the hysteresis state and creates a gap that is not in the hardware. A plain
+low-pass is not enough (any wiggle left is a reversal), and a sharp one
+rings at the edges of voltage steps. The treatment, stated in every report:
+
+1. a zero-phase Gaussian low-pass (symmetric kernel: no delay, no overshoot
+   at steps) of standard deviation SMOOTH_SAMPLES samples;
+2. the significant reversals: the turning points of a zig-zag with a
+   threshold of REVERSAL_SIGMAS times the noise of the logged voltage
+   (estimated from its second differences) and at least 0.5 % of its range;
+3. between two significant reversals the input is monotone: each piece is
+   replaced by its isotonic (least-squares monotone) regression, so holds
+   become flat and ramps never reverse.
+"""
+from __future__ import annotations
+
+import numpy as np
+from scipy.ndimage import gaussian_filter1d
+from scipy.optimize import isotonic_regression
+
+SMOOTH_SAMPLES = 4.0
+REVERSAL_SIGMAS = 6.0
+JUMP_SIGMAS = 8.0
+
+
+def noise_sigma(x: np.ndarray) -> float:
+    """Robust rms of white noise on x: MAD of second differences / sqrt(6)."""
+    d2 = np.diff(np.asarray(x, float), 2)
+    if d2.size == 0:
+        return 0.0
+    return float(1.4826 * np.median(np.abs(d2 - np.median(d2))) / np.sqrt(6.0))
+
+
+def reversals(x: np.ndarray, threshold: float) -> list[int]:
+    """Indices of the turning points of a zig-zag that ignores moves smaller
+    than ``threshold``; starts with 0 and ends with len(x) - 1."""
+    pivots = [0]
+    i_hi = i_lo = 0
+    direction = 0
+    for k in range(1, len(x)):
+        if direction >= 0:
+            if x[k] > x[i_hi]:
+                i_hi = k
+            if direction == 0 and x[k] < x[i_lo]:
+                i_lo = k
+        if direction <= 0:
+            if x[k] < x[i_lo]:
+                i_lo = k
+        if direction == 0:
+            if x[i_hi] - x[0] > threshold:
+                direction, i_lo = 1, i_hi
+            elif x[0] - x[i_lo] > threshold:
+                direction, i_hi = -1, i_lo
+        elif direction > 0 and x[i_hi] - x[k] > threshold:
+            pivots.append(i_hi)
+            direction, i_lo = -1, k
+        elif direction < 0 and x[k] - x[i_lo] > threshold:
+            pivots.append(i_lo)
+            direction, i_hi = 1, k
+    if pivots[-1] != len(x) - 1:
+        pivots.append(len(x) - 1)
+    return pivots
+
+
+def treat_voltage(v: np.ndarray) -> np.ndarray:
+    """The treated input (see the module docstring)."""
+    v = np.asarray(v, float)
+    if len(v) < 8:
+        return v.copy()
+    sigma = noise_sigma(v)
+    # steps: jumps between two samples far above the noise are kept sharp by
+    # smoothing each stretch between jumps on its own
+    jumps = np.flatnonzero(np.abs(np.diff(v)) > JUMP_SIGMAS * max(sigma, 1e-12)) + 1
+    smooth = np.empty_like(v)
+    for a, b in zip(np.r_[0, jumps], np.r_[jumps, len(v)]):
+        smooth[a:b] = gaussian_filter1d(v[a:b], SMOOTH_SAMPLES, mode="nearest") if b - a > 1 else v[a:b]
+    threshold = max(REVERSAL_SIGMAS * sigma, 0.005 * float(np.ptp(v)), 1e-12)
+    pivots = reversals(smooth, threshold)
+    out = smooth.copy()
+    for a, b in zip(pivots[:-1], pivots[1:]):
+        piece = smooth[a:b + 1]
+        increasing = piece[-1] >= piece[0]
+        out[a:b + 1] = isotonic_regression(piece, increasing=increasing).x
+    return out
+
+
+def describe() -> str:
+    return (f"voltage: zero-phase Gaussian low-pass (sigma {SMOOTH_SAMPLES:g} samples), then monotone "
+            f"(isotonic) between reversals larger than {REVERSAL_SIGMAS:g} x the voltage noise")

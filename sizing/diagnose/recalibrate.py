@@ -1,0 +1,54 @@
+"""Optional re-calibration of a small, named set of nominal parameters on
+the training runs before the effects are tried (the gap is reported before
+and after). Only parameters a rig file states and a bench test can pin
+down are offered.
+"""
+from __future__ import annotations
+
+import numpy as np
+from scipy.optimize import least_squares
+
+from ..errors import InputError
+from ..sim.signals import nrmse
+
+# name -> (model field, lower factor, upper factor) relative to the nominal value
+RECALIBRATABLE = {
+    "piezohydraulic": {"d33": ("d33", 0.7, 1.3), "wide_friction": ("wide_friction", 0.0, 5.0),
+                       "narrow_friction": ("narrow_friction", 0.0, 5.0)},
+    "dc_motor": {"c1": ("c1", 0.5, 2.0), "c2": ("c2", 0.5, 2.0)},
+}
+
+
+def recalibrate(bench, names: list[str]):
+    """Fit ``names`` on the training runs. Returns (report dict, new model)."""
+    table = RECALIBRATABLE[bench.kind]
+    for name in names:
+        if name not in table:
+            raise InputError("--recalibrate", name, f"expected one of {', '.join(table)} for a {bench.kind} rig")
+    nominal = {n: float(np.atleast_1d(getattr(bench.model, table[n][0]))[0]) for n in names}
+    before = {r.name: float(nrmse(r.y, s)) for r, s in zip(bench.runs, bench.nominal())}
+
+    def model_at(x):
+        changes = {}
+        for n, xi in zip(names, x):
+            field, lo, hi = table[n]
+            value = nominal[n] if nominal[n] != 0 else 1.0
+            changes[field] = value * (lo + xi * (hi - lo)) if nominal[n] != 0 else xi * hi
+        return bench.model.replace(**changes)
+
+    def residual(x):
+        b = bench.with_model(model_at(x))
+        parts = [(b.runs[i].y - b.nominal()[i]) / (b.runs[i].span * np.sqrt(len(b.runs[i].y))) for i in b.train]
+        return np.concatenate(parts)
+
+    x0 = []
+    for n in names:
+        field, lo, hi = table[n]
+        x0.append((1.0 - lo) / (hi - lo) if nominal[n] != 0 else 0.0)
+    res = least_squares(residual, np.array(x0), bounds=(0.0, 1.0), diff_step=0.01, max_nfev=30)
+    model = model_at(res.x)
+    after_bench = bench.with_model(model)
+    after = {r.name: float(nrmse(r.y, s)) for r, s in zip(after_bench.runs, after_bench.nominal())}
+    values = {n: float(np.atleast_1d(getattr(model, table[n][0]))[0]) for n in names}
+    return {"params": names, "nominal": nominal, "recalibrated": values,
+            "nrmse_before": before, "nrmse_after": after}, model

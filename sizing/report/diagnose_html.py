@@ -1,0 +1,108 @@
+"""diagnosis.html: a self-contained plotly page (plotly.js embedded) built
+from a Diagnosis only: measured against simulated traces (baseline and best
+effect), the gap map and the ranking of effects."""
+from __future__ import annotations
+
+import html
+
+import numpy as np
+import plotly.graph_objects as go
+from plotly.subplots import make_subplots
+
+
+def _traces(diagnosis) -> go.Figure:
+    runs = diagnosis.bench.runs
+    fig = make_subplots(rows=len(runs), cols=1, shared_xaxes=False,
+                        subplot_titles=[f"run {r.name}{' (holdout)' if r.holdout else ' (training)'}" for r in runs])
+    best_name = diagnosis.fits[0].name if diagnosis.fits else None
+    for k, r in enumerate(runs):
+        row = k + 1
+        fig.add_trace(go.Scattergl(x=r.t, y=r.y * 1e3, name="measured", mode="lines",
+                                   line=dict(color="black", width=1), showlegend=k == 0), row=row, col=1)
+        fig.add_trace(go.Scattergl(x=r.t, y=diagnosis.baseline_sim[k] * 1e3, name="baseline model",
+                                   line=dict(color="#d62728"), showlegend=k == 0), row=row, col=1)
+        if diagnosis.best_sim is not None:
+            fig.add_trace(go.Scattergl(x=r.t, y=diagnosis.best_sim[k] * 1e3, name=f"with {best_name}",
+                                       line=dict(color="#1f77b4", dash="dash"), showlegend=k == 0), row=row, col=1)
+        fig.update_yaxes(title_text="position, mm", row=row, col=1)
+        fig.update_xaxes(title_text="time, s", row=row, col=1)
+    fig.update_layout(height=320 * len(runs), title="Measured against simulated position")
+    return fig
+
+
+def _gap_map(diagnosis) -> go.Figure:
+    colors = {"rising": "#2ca02c", "falling": "#ff7f0e", "hold": "#7f7f7f", "reversal": "#9467bd",
+              "steady_state": "#8c564b", "high_frequency": "#e377c2", "low_frequency": "#17becf"}
+    entries = [e for e in diagnosis.where if e["label"] not in ("high_frequency", "low_frequency")]
+    names = [r.name for r in diagnosis.bench.runs]
+    fig = go.Figure()
+    for label, color in colors.items():
+        sel = [e for e in entries if e["label"] == label]
+        if not sel:
+            continue
+        fig.add_trace(go.Bar(y=[e["run"] for e in sel], x=[e["t_end_s"] - e["t_start_s"] for e in sel],
+                             base=[e["t_start_s"] for e in sel], orientation="h", name=label,
+                             marker=dict(color=color, opacity=[min(1.0, 0.15 + 3 * e["share"]) for e in sel]),
+                             text=[f"{100 * e['share']:.0f}%" if e["share"] > 0.03 else "" for e in sel],
+                             hovertemplate="%{y} %{base:.3f}-%{x:.3f} s<br>share %{text}<extra>" + label + "</extra>"))
+    fig.update_layout(barmode="overlay", title="Gap map: share of the residual energy by segment (top entries)",
+                      xaxis_title="time, s", yaxis=dict(categoryorder="array", categoryarray=names), height=300)
+    return fig
+
+
+def _ranking(diagnosis) -> go.Figure:
+    fits = diagnosis.fits[:12]
+    fig = go.Figure(go.Bar(x=[f.nrmse_holdout for f in fits], y=[f.name for f in fits], orientation="h",
+                           marker_color=["#1f77b4" if i == 0 else "#aec7e8" for i in range(len(fits))]))
+    fig.add_vline(x=diagnosis.baseline_holdout, line=dict(color="#d62728"), annotation_text="baseline")
+    fig.add_vline(x=diagnosis.noise_floor_holdout, line=dict(color="gray", dash="dot"), annotation_text="noise floor")
+    fig.update_layout(title="Effects ranked by the holdout NRMSE they leave (lower is better)",
+                      xaxis_title="holdout NRMSE", yaxis=dict(autorange="reversed"),
+                      height=120 + 28 * len(fits))
+    return fig
+
+
+def render(diagnosis, title: str = "Sim-to-real gap diagnosis") -> str:
+    data = diagnosis.to_json()
+    v = data["verdict"]
+    verdict = (f"<b>{html.escape(v['effect'])}</b> explains the gap: holdout NRMSE "
+               f"{diagnosis.baseline_holdout:.4f} &rarr; {diagnosis.fits[0].nrmse_holdout:.4f} "
+               f"(shrink {100 * v['shrink_holdout']:.0f} %)" if v["effect"] else
+               f"<b>{'no significant gap' if v['status'] == 'no_significant_gap' else 'unexplained'}</b>")
+    rows = []
+    for c in data["candidates"][:12]:
+        params = ", ".join(f"{k} = {val:.3g} [{c['params_ci95'].get(k, [np.nan, np.nan])[0]:.3g}, "
+                           f"{c['params_ci95'].get(k, [np.nan, np.nan])[1]:.3g}]" for k, val in c["params"].items())
+        rows.append(f"<tr><td>{html.escape(c['effect'])}</td><td>{c['nrmse_train']:.4f}</td>"
+                    f"<td>{c['nrmse_holdout']:.4f}</td><td>{100 * c['shrink_holdout']:.0f} %</td>"
+                    f"<td>{html.escape(params) or '-'}</td></tr>")
+    tests = "".join(
+        f"<tr><td>{html.escape(run)}</td><td>{t['whiteness']['max_autocorrelation']:.2f} "
+        f"({'white' if t['whiteness']['white'] else 'not white'})</td>"
+        f"<td>{t['cross_correlation_input']['max']:.2f} at {1e3 * t['cross_correlation_input']['lag_s']:.0f} ms</td>"
+        f"<td>{t['cross_correlation_velocity']['max']:.2f} at {1e3 * t['cross_correlation_velocity']['lag_s']:.0f} ms</td></tr>"
+        for run, t in data["residual_tests"].items())
+    figs = [_traces(diagnosis), _gap_map(diagnosis), _ranking(diagnosis)]
+    body = [figs[0].to_html(full_html=False, include_plotlyjs=True)]
+    body += [f.to_html(full_html=False, include_plotlyjs=False) for f in figs[1:]]
+    baseline = ", ".join(f"{k}: {val:.4f}" for k, val in data["baseline"]["nrmse"].items())
+    recal = ""
+    if diagnosis.recalibration:
+        r = diagnosis.recalibration
+        recal = (f"<p>Re-calibrated on the training runs: {html.escape(', '.join(r['params']))} "
+                 f"{html.escape(str(r['recalibrated']))}; NRMSE before {html.escape(str({k: round(x, 4) for k, x in r['nrmse_before'].items()}))}, "
+                 f"after {html.escape(str({k: round(x, 4) for k, x in r['nrmse_after'].items()}))}.</p>")
+    return f"""<!DOCTYPE html><html><head><meta charset="utf-8"><title>{html.escape(title)}</title>
+<style>body{{font-family:sans-serif;margin:2em;max-width:1100px}} td,th{{padding:2px 8px;text-align:left}}
+table{{border-collapse:collapse}} tr:nth-child(even){{background:#f4f4f4}}</style></head><body>
+<h1>{html.escape(title)}</h1>
+<p>Verdict: {verdict}. {html.escape(v.get('reason', ''))}</p>
+<p>Baseline NRMSE per run: {html.escape(baseline)}; holdout {diagnosis.baseline_holdout:.4f};
+noise floor (holdout) {diagnosis.noise_floor_holdout:.4f}. Input treatment: {html.escape(diagnosis.bench.input_treatment)}.</p>
+{recal}
+<h2>Effects</h2><table><tr><th>effect</th><th>NRMSE train</th><th>NRMSE holdout</th><th>shrink</th>
+<th>fitted parameters [95 % CI]</th></tr>{''.join(rows)}</table>
+<h2>Residual tests (baseline)</h2><table><tr><th>run</th><th>whiteness (max autocorrelation)</th>
+<th>cross-correlation with input</th><th>with velocity</th></tr>{tests}</table>
+{''.join(body)}
+</body></html>"""

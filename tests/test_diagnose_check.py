@@ -1,0 +1,27 @@
+"""Smoke version of the withheld-effect check and of the benchmark (the
+full benchmark lives in benchmarks/diagnose_benchmark.py)."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from sizing import api
+from sizing.diagnose.check import NONE
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def test_check_on_the_dc_campaign_tells_effects_apart():
+    lines = []
+    result = api.diagnose_check(ROOT / "studies/campaigns/dc-motor", ["steps_b"], seed=1,
+                                progress=lambda case: lines.append(case))
+    M = result.matrix()
+    assert M.shape == (len(result.labels), len(result.labels)) and result.labels[-1] == NONE
+    assert M.sum() == len(result.cases) == len(lines)
+    assert result.accuracy >= 0.9
+    assert result.null_false_positive == 0.0
+    assert result.median_shrink >= 0.7
+    table = result.table()
+    assert table.splitlines()[0].startswith("| true \\ diagnosed |")
+    assert np.trace(M) >= 0.9 * M.sum()

@@ -118,25 +118,27 @@ def _equilibrium(K, xf, A_w, A_n, V0, bulk, F0, kL):
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _interp(t, t_in, v_row, j):
-    """Linear interpolation with a forward-moving index j (returns v, j)."""
+def _interp(t, t_in, inv_dt, v_row, j):
+    """Linear interpolation with a forward-moving index j (returns v, j);
+    inv_dt[j] = 1 / (t_in[j+1] - t_in[j]), precomputed once."""
     n = t_in.shape[0]
     while j < n - 2 and t_in[j + 1] <= t:
         j += 1
-    t0, t1 = t_in[j], t_in[j + 1]
+    t0 = t_in[j]
     if t <= t0:
         return v_row[j], j
-    if t >= t1:
+    if t >= t_in[j + 1]:
         return v_row[j + 1], j
-    w = (t - t0) / (t1 - t0)
+    w = (t - t0) * inv_dt[j]
     return v_row[j] * (1.0 - w) + v_row[j + 1] * w, j
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _wide_piston(x, xf, y, v_leak, K, A_w, A_n, V0, bulk, F_run, thr, no_return):
-    """Quasi-static wide piston with friction (play). Returns x, sliding."""
-    kf = bulk * A_w * A_w / V0
-    c = bulk * A_w / V0 * (A_n * y + v_leak)       # N(x) = K(xf-x)+ + c - kf x
+def _wide_piston(x, xf, y, v_leak, K, aA_w, A_n, kf, inv_Kkf, inv_kf, F_run, thr, no_return):
+    """Quasi-static wide piston with friction (play). Returns x, sliding.
+    aA_w = bulk A_w / V0 and kf = bulk A_w^2 / V0 (reciprocals precomputed:
+    this runs every step)."""
+    c = aA_w * (A_n * y + v_leak)       # N(x) = K(xf-x)+ + c - kf x
     stack = K * (xf - x)
     if no_return > 0.5 and stack < 0.0:
         stack = 0.0
@@ -144,20 +146,20 @@ def _wide_piston(x, xf, y, v_leak, K, A_w, A_n, V0, bulk, F_run, thr, no_return)
     if abs(N) <= thr:
         return x, False
     target = F_run if N > 0.0 else -F_run
-    x_new = (K * xf + c - target) / (K + kf)
+    x_new = (K * xf + c - target) * inv_Kkf
     if no_return > 0.5 and x_new > xf:
-        x_new = (c - target) / kf
+        x_new = (c - target) * inv_kf
     return x_new, True
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _narrow_accel(F, u, F_run, F_static, m):
+def _narrow_accel(F, u, F_run, F_static, inv_m):
     """Karnopp friction: acceleration of the output piston (0 when stuck)."""
     if u == 0.0:
         if abs(F) <= F_static:
             return 0.0
-        return (F - (F_run if F > 0.0 else -F_run)) / m
-    return (F - (F_run if u > 0.0 else -F_run)) / m
+        return (F - (F_run if F > 0.0 else -F_run)) * inv_m
+    return (F - (F_run if u > 0.0 else -F_run)) * inv_m
 
 
 @numba.njit(cache=True, parallel=True, error_model="numpy")
@@ -165,13 +167,14 @@ def _simulate(P, dts, t_in, V_in, t_out, v_stride):
     n_cand = P.shape[0]
     n_out = t_out.shape[0]
     out = np.empty((n_cand, 4, n_out))
+    inv_dt = 1.0 / (t_in[1:] - t_in[:-1])
     for c in numba.prange(n_cand):
-        _simulate_one(P[c], dts[c], t_in, V_in[c * v_stride], t_out, out[c])
+        _simulate_one(P[c], dts[c], t_in, inv_dt, V_in[c * v_stride], t_out, out[c])
     return out
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _simulate_one(p, dt_max, t_in, v_row, t_out, rec):
+def _simulate_one(p, dt_max, t_in, inv_dt, v_row, t_out, rec):
     K, d33, al, be, ga, de, nb, h = p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]
     A_w, A_n, V0, bulk, m = p[8], p[9], p[10], p[11], p[12]
     rho, k_con, k_exp = p[13], p[14], p[15]
@@ -180,8 +183,15 @@ def _simulate_one(p, dt_max, t_in, v_row, t_out, rec):
     kappa, tau, slew, no_ret = p[24], p[25], p[26], p[27]
     R = A_w / A_n
     bern = 1.0 - 1.0 / (R * R)
+    # constants of the step, so the loop multiplies instead of dividing
+    a_oil = bulk / V0
+    aA_w = a_oil * A_w
+    kf = aA_w * A_w
+    inv_Kkf, inv_kf, inv_m = 1.0 / (K + kf), 1.0 / kf, 1.0 / m
+    inv_tau = 1.0 / tau if tau > 0.0 else 0.0
+    loss_fwd, loss_back = 0.5 * rho * (bern + k_con), 0.5 * rho * (bern + k_exp)
     j = 0
-    v, j = _interp(t_out[0], t_in, v_row, j)
+    v, j = _interp(t_out[0], t_in, inv_dt, v_row, j)
     xf_lin = d33 * v + h
     creep = kappa * xf_lin
     x, y, pr = _equilibrium(K, xf_lin + creep, A_w, A_n, V0, bulk, F0, kL)
@@ -199,7 +209,7 @@ def _simulate_one(p, dt_max, t_in, v_row, t_out, rec):
         dt = span / nsub
         for _ in range(nsub):
             t += dt
-            v_cmd, j = _interp(t, t_in, v_row, j)
+            v_cmd, j = _interp(t, t_in, inv_dt, v_row, j)
             v_new = v_cmd
             if slew > 0.0:
                 step = slew * dt
@@ -208,15 +218,15 @@ def _simulate_one(p, dt_max, t_in, v_row, t_out, rec):
             v = v_new
             xf_lin = d33 * v + h
             if tau > 0.0:
-                creep += dt * (kappa * xf_lin - creep) / tau
+                creep += dt * (kappa * xf_lin - creep) * inv_tau
             v_leak += G * pr * dt
             thr = Fw if sliding else Fw * brk_w
-            x, sliding = _wide_piston(x, xf_lin + creep, y, v_leak, K, A_w, A_n, V0, bulk, Fw, thr, no_ret)
-            pr = bulk * (A_w * x - A_n * y - v_leak) / V0
-            kloss = k_con if u >= 0.0 else k_exp
-            p_n = pr - 0.5 * rho * u * abs(u) * (bern + kloss)
+            x, sliding = _wide_piston(x, xf_lin + creep, y, v_leak, K, aA_w, A_n, kf, inv_Kkf, inv_kf,
+                                      Fw, thr, no_ret)
+            pr = a_oil * (A_w * x - A_n * y - v_leak)
+            p_n = pr - u * abs(u) * (loss_fwd if u >= 0.0 else loss_back)
             F = A_n * p_n - (F0 + kL * y) - cv * u
-            a = _narrow_accel(F, u, Fn, Fn * brk_n, m)
+            a = _narrow_accel(F, u, Fn, Fn * brk_n, inv_m)
             u_new = u + a * dt
             if u != 0.0 and u_new * u < 0.0:
                 u_new = 0.0

@@ -73,7 +73,6 @@ def test_gp_matches_brute_force_optimum_of_the_mass():
     gp_mass = hydraulic_mass(s, res.ratio, res.wide_area, res.voltage_fraction)
     R, A, v = np.meshgrid(np.linspace(150, 300, 301), np.geomspace(0.02, 0.2, 301), np.linspace(0.7, 1.0, 61),
                           indexing="ij")
-    vals = constraint_values(s, R, A, v) if False else None  # noqa: F841 (math.sqrt is scalar; vectorise below)
     x = s.stack_stroke * v
     k_fluid = s.bulk_modulus * A / (s.wide_gap + x)
     k_wide = s.n_stiffness * k_fluid / (s.n_stiffness + k_fluid)

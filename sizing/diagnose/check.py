@@ -15,7 +15,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..io.runs import Run
-from . import attribution
 from .bench import Bench
 from .diagnosis import diagnose_runs
 from .effects import library

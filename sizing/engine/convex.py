@@ -115,7 +115,7 @@ class GPSizer:
         return x, narrow, stroke
 
     def _constraint_terms(self) -> dict:
-        P, R, A, v = self.par, self.R, self.A, self.v
+        P, R, A = self.par, self.R, self.A
         x, narrow, stroke = self._geometry()
         compliance = 1 / P["nk"] + (P["g"] + x) / (P["beta"] * A)     # 1 / k_wide
         reflected = (geometry.wide_piston_mass(A, P["p"])

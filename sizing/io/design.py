@@ -6,7 +6,7 @@ from typing import Literal, Optional, Union
 
 from pydantic import Field, model_validator
 
-from .schema import Qty, Strict, load_toml, parse_model
+from .schema import Qty, Strict, parse_tagged
 
 
 class LoadTable(Strict):
@@ -71,11 +71,4 @@ DesignFile = Union[PiezoDesignFile, DCDesignFile]
 
 
 def load_design(path: str | Path) -> DesignFile:
-    data = load_toml(path)
-    technology = data.get("technology")
-    if technology == "piezohydraulic":
-        return parse_model(PiezoDesignFile, data, path)
-    if technology == "dc_motor":
-        return parse_model(DCDesignFile, data, path)
-    from ..errors import InputError
-    raise InputError(str(path), "technology", f'expected "piezohydraulic" or "dc_motor", got {technology!r}')
+    return parse_tagged(path, "technology", {"piezohydraulic": PiezoDesignFile, "dc_motor": DCDesignFile})

@@ -6,8 +6,7 @@ from typing import Literal, Optional, Union
 
 from pydantic import Field, model_validator
 
-from ..errors import InputError
-from .schema import Qty, Strict, load_toml, parse_model
+from .schema import Qty, Strict, parse_tagged
 
 
 class BoucWenRig(Strict):
@@ -101,10 +100,4 @@ Rig = Union[PiezoRig, DCRig]
 
 
 def load_rig(path: str | Path) -> Rig:
-    data = load_toml(path)
-    kind = data.get("kind")
-    if kind == "piezohydraulic":
-        return parse_model(PiezoRig, data, path)
-    if kind == "dc_motor":
-        return parse_model(DCRig, data, path)
-    raise InputError(str(path), "kind", f'expected "piezohydraulic" or "dc_motor", got {kind!r}')
+    return parse_tagged(path, "kind", {"piezohydraulic": PiezoRig, "dc_motor": DCRig})

@@ -106,5 +106,16 @@ def parse_model(model: type[M], data: Any, file: str | Path, prefix: tuple = ())
         raise InputError(str(file), field or None, message) from None
 
 
+def parse_tagged(path: str | Path, key: str, models: dict[str, type[M]]) -> M:
+    """Read a TOML file whose ``key`` says which model validates it
+    (``technology`` of a design, ``kind`` of a rig)."""
+    data = load_toml(path)
+    tag = data.get(key)
+    if tag not in models:
+        choices = " or ".join(f'"{name}"' for name in models)
+        raise InputError(str(path), key, f"expected {choices}, got {tag!r}")
+    return parse_model(models[tag], data, path)
+
+
 def _split(field: str) -> list[str]:
     return [p for p in field.replace("[", "").replace("]", "").split(".") if p]

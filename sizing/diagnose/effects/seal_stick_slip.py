@@ -11,8 +11,6 @@ running friction; spring-energised seals break away at 1.5-2.5 times it.
 """
 from __future__ import annotations
 
-import numpy as np
-
 from .base import Effect, Param
 
 

@@ -56,10 +56,18 @@ def _ranking(diagnosis) -> go.Figure:
                            marker_color=["#1f77b4" if i == 0 else "#aec7e8" for i in range(len(fits))]))
     fig.add_vline(x=diagnosis.baseline_holdout, line=dict(color="#d62728"), annotation_text="baseline")
     fig.add_vline(x=diagnosis.noise_floor_holdout, line=dict(color="gray", dash="dot"), annotation_text="noise floor")
+    # log axis: a wrong effect can leave a gap 100x the best one's
     fig.update_layout(title="Effects ranked by the holdout NRMSE they leave (lower is better)",
-                      xaxis_title="holdout NRMSE", yaxis=dict(autorange="reversed"),
+                      xaxis_title="holdout NRMSE (log scale)", xaxis_type="log", yaxis=dict(autorange="reversed"),
                       height=120 + 28 * len(fits))
     return fig
+
+
+def _interval(ci) -> str:
+    """A 95 % interval, or why there is none (parameter not identifiable)."""
+    if ci is None or not all(np.isfinite(ci)):
+        return "[CI n/a: not identifiable from these runs]"
+    return f"[{ci[0]:.3g}, {ci[1]:.3g}]"
 
 
 def render(diagnosis, title: str = "Sim-to-real gap diagnosis") -> str:
@@ -71,8 +79,7 @@ def render(diagnosis, title: str = "Sim-to-real gap diagnosis") -> str:
                f"<b>{'no significant gap' if v['status'] == 'no_significant_gap' else 'unexplained'}</b>")
     rows = []
     for c in data["candidates"][:12]:
-        params = ", ".join(f"{k} = {val:.3g} [{c['params_ci95'].get(k, [np.nan, np.nan])[0]:.3g}, "
-                           f"{c['params_ci95'].get(k, [np.nan, np.nan])[1]:.3g}]" for k, val in c["params"].items())
+        params = ", ".join(f"{k} = {val:.3g} {_interval(c['params_ci95'].get(k))}" for k, val in c["params"].items())
         rows.append(f"<tr><td>{html.escape(c['effect'])}</td><td>{c['nrmse_train']:.4f}</td>"
                     f"<td>{c['nrmse_holdout']:.4f}</td><td>{100 * c['shrink_holdout']:.0f} %</td>"
                     f"<td>{html.escape(params) or '-'}</td></tr>")

@@ -69,14 +69,20 @@ def count_reversals(v: np.ndarray, tol: float) -> int:
     return turns
 
 
-def check_hysteresis_records(records: list[HysteresisRecord]) -> None:
-    """Raise FitError when the records cannot support a hysteresis fit."""
+def require_runs(records) -> None:
+    """Raise FitError unless there is a run and each is long enough to fit."""
     if not records:
         raise FitError("no run to fit")
     for rec in records:
         if len(rec.time) < MIN_FIT_SAMPLES:
             raise FitError(f"{rec.label}: too short for a fit: {len(rec.time)} samples, "
                            f"expected at least {MIN_FIT_SAMPLES}")
+
+
+def check_hysteresis_records(records: list[HysteresisRecord]) -> None:
+    """Raise FitError when the records cannot support a hysteresis fit."""
+    require_runs(records)
+    for rec in records:
         span_v = float(np.ptp(rec.voltage))
         if span_v <= 1e-9 * max(1.0, float(np.max(np.abs(rec.voltage)))):
             raise FitError(f"{rec.label}: column voltage_V: constant input "

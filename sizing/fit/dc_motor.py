@@ -22,9 +22,8 @@ from scipy.optimize import least_squares
 from ..errors import FitError, SimulationError
 from ..sim.dc_motor import DCMotorModel, simulate
 from ..sim.signals import nrmse
-from .common import Z95, ConvergenceWarning, correlation, covariance, identifiability
+from .common import Z95, ConvergenceWarning, correlation, covariance, identifiability, require_runs
 
-MIN_SAMPLES = 20
 GAIN_NAMES = ("kp", "ki", "kd")
 LOG_BOUND = 6.0        # each parameter within e^{+/-6} (x 400) of the rig's value
 
@@ -151,12 +150,8 @@ class DCMotorEstimator:
 
 
 def _check(records: list[DCRecord]) -> None:
-    if not records:
-        raise FitError("no run to fit")
+    require_runs(records)
     for rec in records:
-        if len(rec.time) < MIN_SAMPLES:
-            raise FitError(f"{rec.label}: too short for a fit: {len(rec.time)} samples, "
-                           f"expected at least {MIN_SAMPLES}")
         if np.ptp(rec.reference) == 0.0:
             raise FitError(f"{rec.label}: column reference_m: constant reference; "
                            "the fit needs a step or another change of the reference")

@@ -219,6 +219,10 @@ def test_seed_solve_end_to_end(tmp_path, seed_requirements):
     assert dc and all("temperature" in c["margins"] for c in dc)
     plain = [c for c in r["candidates"] if c["technology"] == "piezohydraulic" and c["variant"] == "uncompensated"]
     assert not any(c["feasible"] for c in plain)
+    # no catalog amplifier is rated to 100 degC: the verdict says the
+    # compensated designs rest on the electronics-bay assumption
+    compensated = next(g for g in r["summary"]["groups"] if g["variant"] == "compensated")
+    assert "electronics bay" in compensated["text"] and "none is feasible" in compensated["text"]
     html = (out / "report.html").read_text()
     assert "EVERY uncompensated piezohydraulic design infeasible" in html
     assert "<script src=" not in html and "Plotly.newPlot" in html and r["catalog_sha256"] in html and r["requirements_sha256"] in html

@@ -83,6 +83,8 @@ def _summary(req: RequirementsFile, candidates: list[dict], catalog) -> dict:
         entry["drivers"] = dict(Counter(c["driver"] for c in members if not c["feasible"]).most_common())
         if feasible:
             entry["text"] = f"{len(feasible)} feasible; best ranked {best['id']} (driver: {best['driver']})"
+            if key[0] == "piezohydraulic":
+                entry["text"] += _amplifier_caveat(req, feasible, catalog)
         else:
             m = furthest["margins"][furthest["driver"]]
             entry["blocking"] = furthest["driver"]
@@ -93,6 +95,22 @@ def _summary(req: RequirementsFile, candidates: list[dict], catalog) -> dict:
     return {"groups": groups, "thermal": _thermal_statement(req, candidates),
             "feasible": sum(1 for c in candidates if c["feasible"]),
             "pareto": [c["id"] for c in candidates if c["pareto"]]}
+
+
+def _amplifier_caveat(req: RequirementsFile, feasible: list[dict], catalog) -> str:
+    """Feasible only because the amplifier sits in the electronics bay: say so
+    next to the verdict, not only among the assumptions."""
+    T = req.requirements.max_temperature
+    if req.options.amplifier_location != "bay":
+        return ""
+    ratings = {c["components"]["amplifier"]: catalog.amplifiers[c["components"]["amplifier"]].max_temperature
+               for c in feasible if c["components"].get("amplifier") in catalog.amplifiers}
+    below = {k: v for k, v in ratings.items() if v < T}
+    if not below or len(below) < len(ratings):
+        return ""
+    return (f"; every one relies on its amplifier sitting in an electronics bay at "
+            f"{req.options.electronics_bay_temperature:g} degC (rated {max(below.values()):g} degC at best, below "
+            f"{T:g} degC): with the amplifier at the actuator none is feasible")
 
 
 STAGES = {"pruned": 0, "gp_failed": 0, "gp_infeasible": 1, "sized": 2, "simulated": 3}

@@ -20,7 +20,7 @@ from sizing.physics import geometry
 
 from .conftest import CATALOGS, STUDIES, run_cli
 
-CONTRACT_KEYS = {"id", "technology", "components", "static", "simulated", "margins", "feasible", "driver",
+CONTRACT_KEYS = {"id", "technology", "components", "stack_params", "static", "simulated", "margins", "feasible", "driver",
                  "pareto", "rank", "metrics"}
 
 # the seed's full-scale stack (Table 2) with the PAO fluid, a 21 MPa seal and the PI amplifier
@@ -217,6 +217,7 @@ def test_seed_solve_end_to_end(tmp_path, seed_requirements):
     assert load["stroke_m"] == pytest.approx(0.04)
     dc = [c for c in r["candidates"] if c["technology"] == "dc_motor"]
     assert dc and all("temperature" in c["margins"] for c in dc)
+    assert all(CONTRACT_KEYS <= set(c) and c["components"] == {"actuator": c["components"]["actuator"]} for c in dc)
     plain = [c for c in r["candidates"] if c["technology"] == "piezohydraulic" and c["variant"] == "uncompensated"]
     assert not any(c["feasible"] for c in plain)
     # no catalog amplifier is rated to 100 degC: the verdict says the

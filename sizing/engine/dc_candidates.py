@@ -42,6 +42,7 @@ def dc_candidates(req: RequirementsFile, catalog: Catalog, loads: list[float]) -
         out.append({
             "id": f"dc-{act.id}", "technology": "dc_motor", "variant": "catalog", "stage": "simulated",
             "components": {"actuator": act.id},
+            "stack_params": {},          # no stacks: the key is kept so every candidate has the same keys
             "static": static,
             "simulated": {"stroke_m": worst["stroke_m"], "time_to_stroke_s": worst["time_to_stroke_s"],
                           "speed_m_s": min(c["speed_m_s"] for c in cases), "overshoot": worst["overshoot"],

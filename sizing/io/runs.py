@@ -57,7 +57,8 @@ def read_run(path: str | Path, required=PIEZO_COLUMNS, optional=PIEZO_OPTIONAL) 
     data = _numbers(path, rows[1:], header, wanted)
     if len(data[wanted[0]]) < MIN_SAMPLES:
         raise InputError(str(path), f"line {len(data[wanted[0]]) + 2}, column {wanted[0]}",
-                         f"expected at least {MIN_SAMPLES} samples, got {len(data[wanted[0]])}")
+                         f"the data end before this line: expected at least {MIN_SAMPLES} samples, "
+                         f"got {len(data[wanted[0]])}")
     time = data.pop("time_s")
     steps = np.diff(time)
     if np.any(steps <= 0):

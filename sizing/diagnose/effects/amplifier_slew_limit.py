@@ -11,16 +11,9 @@ from __future__ import annotations
 from .base import Effect, Param
 
 
-class AmplifierSlewLimit(Effect):
-    def applicable(self, rig, model):
-        return True
-
-    def model_changes(self, model, values):
-        return {"slew_rate": values["slew_rate_V_s"]}
-
-
-EFFECT = AmplifierSlewLimit(
+EFFECT = Effect(
     name="amplifier_slew_limit", technology="piezohydraulic",
     params=(Param("slew_rate_V_s", 20.0, 2e5, log=True, doc="largest dV/dt the amplifier delivers"),),
     sizes=({"slew_rate_V_s": 1000.0}, {"slew_rate_V_s": 300.0}),
+    fields={"slew_rate_V_s": "slew_rate"},
     source="PHYSICS-NOTES (drive current i = C dV/dt)")

@@ -53,6 +53,11 @@ class Effect:
     source: str = ""                 # where the physics and the sizes come from
     post: bool = False               # True when only ``measure`` acts (no re-simulation)
     extra: dict = field(default_factory=dict)
+    # The common case as data: each parameter sets one model field
+    # ({param: field}), and the two sizes may be fractions of that field's
+    # nominal value (``nominal_factors``) instead of fixed ``sizes``.
+    fields: dict = field(default_factory=dict)
+    nominal_factors: tuple = ()
 
     @property
     def names(self) -> list[str]:
@@ -72,11 +77,16 @@ class Effect:
         return True
 
     def sizes_for(self, rig, model) -> tuple:
-        """Two realistic sizes for this rig (default: the declared ones)."""
-        return self.sizes
+        """Two realistic sizes for this rig: the declared ones, or the
+        nominal value of the one field times each of ``nominal_factors``."""
+        if not self.nominal_factors:
+            return self.sizes
+        (param, model_field), = self.fields.items()
+        nominal = float(np.min(getattr(model, model_field)))
+        return tuple({param: factor * nominal} for factor in self.nominal_factors)
 
     def model_changes(self, model, values: dict) -> dict:
-        return {}
+        return {model_field: values[param] for param, model_field in self.fields.items()}
 
     def measure(self, t: np.ndarray, y: np.ndarray, values: dict) -> np.ndarray:
         return y

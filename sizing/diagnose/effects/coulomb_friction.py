@@ -11,13 +11,9 @@ from __future__ import annotations
 from .base import Effect, Param
 
 
-class CoulombFriction(Effect):
-    def model_changes(self, model, values):
-        return {"coulomb_friction": values["coulomb_friction_N"]}
-
-
-EFFECT = CoulombFriction(
+EFFECT = Effect(
     name="coulomb_friction", technology="dc_motor",
     params=(Param("coulomb_friction_N", 0.5, 500.0, log=True, doc="running friction at the output"),),
     sizes=({"coulomb_friction_N": 20.0}, {"coulomb_friction_N": 60.0}),
+    fields={"coulomb_friction_N": "coulomb_friction"},
     source="Karnopp (1985); Olsson et al., Eur. J. Control 4 (1998) 176")

@@ -7,21 +7,11 @@ Model: the controller's current clipped at a lower limit. Sizes: 50 % and
 """
 from __future__ import annotations
 
-import numpy as np
-
 from .base import Effect, Param
 
 
-class CurrentSaturation(Effect):
-    def sizes_for(self, rig, model):
-        i_max = float(np.min(model.current_limit))
-        return ({"current_limit_A": 0.5 * i_max}, {"current_limit_A": 0.25 * i_max})
-
-    def model_changes(self, model, values):
-        return {"current_limit": values["current_limit_A"]}
-
-
-EFFECT = CurrentSaturation(
+EFFECT = Effect(
     name="current_saturation", technology="dc_motor",
     params=(Param("current_limit_A", 0.05, 20.0, log=True, doc="actual current limit of the drive"),),
+    fields={"current_limit_A": "current_limit"}, nominal_factors=(0.5, 0.25),
     source="seed eq. 13 with a saturated input; PHYSICS-NOTES (DC motor under load)")

@@ -12,16 +12,8 @@ from __future__ import annotations
 from .base import Effect, Param
 
 
-class FluidCompressibility(Effect):
-    def sizes_for(self, rig, model):
-        beta = float(model.bulk_modulus)
-        return ({"bulk_modulus_Pa": beta / 10}, {"bulk_modulus_Pa": beta / 40})
-
-    def model_changes(self, model, values):
-        return {"bulk_modulus": values["bulk_modulus_Pa"]}
-
-
-EFFECT = FluidCompressibility(
+EFFECT = Effect(
     name="fluid_compressibility", technology="piezohydraulic",
     params=(Param("bulk_modulus_Pa", 5e6, 2e9, log=True, doc="effective bulk modulus of the oil"),),
+    fields={"bulk_modulus_Pa": "bulk_modulus"}, nominal_factors=(1 / 10, 1 / 40),
     source="PHYSICS-NOTES (fluid compliance, entrained air); Merritt, Hydraulic Control Systems (1967) ch. 2")

@@ -10,13 +10,9 @@ from __future__ import annotations
 from .base import Effect, Param
 
 
-class Leakage(Effect):
-    def model_changes(self, model, values):
-        return {"leak_conductance": values["leak_conductance_m3_s_Pa"]}
-
-
-EFFECT = Leakage(
+EFFECT = Effect(
     name="leakage", technology="piezohydraulic",
     params=(Param("leak_conductance_m3_s_Pa", 1e-15, 1e-11, log=True, doc="laminar leak conductance"),),
     sizes=({"leak_conductance_m3_s_Pa": 1e-13}, {"leak_conductance_m3_s_Pa": 4e-13}),
+    fields={"leak_conductance_m3_s_Pa": "leak_conductance"},
     source="laminar annular leakage, Q = G dp (Merritt 1967, sec. 3)")

@@ -11,13 +11,9 @@ from __future__ import annotations
 from .base import Effect, Param
 
 
-class ViscousDamping(Effect):
-    def model_changes(self, model, values):
-        return {"viscous_damping": values["viscous_damping_N_s_m"]}
-
-
-EFFECT = ViscousDamping(
+EFFECT = Effect(
     name="viscous_damping", technology="piezohydraulic",
     params=(Param("viscous_damping_N_s_m", 1.0, 1e4, log=True, doc="viscous damping of the output piston"),),
     sizes=({"viscous_damping_N_s_m": 200.0}, {"viscous_damping_N_s_m": 600.0}),
+    fields={"viscous_damping_N_s_m": "viscous_damping"},
     source="linear viscous friction of a lubricated seal (Merritt 1967, sec. 6)")

@@ -66,11 +66,20 @@ class OptionsTable(Strict):
     dc_motors: bool = True                                # rank the catalog's DC actuators too
 
 
+class DutyTable(Strict):
+    """What the actuator does repeatedly (CONTRACTS.md, second round): the
+    thermal checks (winding temperature, amplifier continuous current) use
+    the RMS over this cycle. One full stroke out and back counts as one."""
+
+    strokes_per_second: float = Field(1.0, gt=0.0, allow_inf_nan=False)
+
+
 class RequirementsFile(Strict):
     requirements: RequirementsTable
     load: LoadTable
     objectives: ObjectivesTable = Field(default_factory=ObjectivesTable)
     options: OptionsTable = Field(default_factory=OptionsTable)
+    duty: DutyTable = Field(default_factory=DutyTable)
     notes: Optional[str] = None
 
     @property

@@ -141,9 +141,9 @@ def diagnose_check(campaign_dir: str | Path, holdout: list[str] | None = None, s
                       seed=seed, progress=progress)
 
 
-def fit_hysteresis(paths, holdout=None, model: str = "bouc-wen", out=None, **options) -> dict:
+def fit_hysteresis(paths, holdout=None, model: str = "auto", out=None, **options) -> dict:
     """Fit Bouc-Wen (seed eq. 1-2) and Prandtl-Ishlinskii to run CSVs; the
-    TOML carries ``model``. Writes OUT and OUT.html when ``out`` is given.
+    TOML carries ``model`` ("auto": the better on the holdout). Writes OUT and OUT.html when ``out`` is given.
     Returns {"toml", "warnings", "result", "written"}."""
     from .fit.workflow import fit_hysteresis as run
 

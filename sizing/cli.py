@@ -224,19 +224,24 @@ def _fit_output(result: dict, out: Optional[Path]) -> None:
 def fit_hysteresis(data: List[Path] = typer.Argument(..., help="Run CSVs (time_s,voltage_V,position_m), one run each; position is the stack's displacement."),
                    holdout: Optional[List[str]] = typer.Option(None, "--holdout", help="Run (CSV name without .csv) kept out of the fit for validation; repeatable."),
                    out: Optional[Path] = typer.Option(None, "--out", help="TOML file to write ([stack], [stack.bouc_wen], [fit]); the HTML report goes beside it (OUT.html). Default: print the TOML."),
-                   model: str = typer.Option("bouc-wen", "--model", help="Model whose parameters the TOML carries: bouc-wen or prandtl-ishlinskii (both are fitted and compared)."),
+                   model: str = typer.Option("auto", "--model", help="Model the TOML carries: auto (the one with the lower holdout NRMSE), bouc-wen or prandtl-ishlinskii (both are always fitted and compared)."),
                    report: Optional[Path] = typer.Option(None, "--report", help="HTML report path (default: OUT with .html; none without --out)."),
-                   cutoff_hz: Optional[float] = typer.Option(None, "--cutoff-hz", help="Low-pass cut-off of the measured voltage, Hz (default: 20 x the excitation frequency, at least 5 Hz; 0: no filter)."),
-                   offset: bool = typer.Option(False, "--offset", help="Also fit a constant sensor offset per run (beside each run's initial hysteresis state)."),
+                   cutoff_hz: Optional[float] = typer.Option(None, "--cutoff-hz", help="Low-pass cut-off of the measured voltage, Hz (default: per run from its sample rate and excitation, at most a quarter of Nyquist; 0: no filter)."),
+                   offset: bool = typer.Option(True, "--offset/--no-offset", help="Fit a constant sensor offset per run (default) beside each run's initial hysteresis state."),
                    starts: int = typer.Option(4, "--starts", help="Starting points refined by least squares (best of a seeded random screen)."),
                    operators: int = typer.Option(16, "--operators", help="Play operators of the Prandtl-Ishlinskii model."),
-                   seed: int = typer.Option(0, "--seed", help="Seed of the random starting points.")):
+                   seed: int = typer.Option(0, "--seed", help="Seed of the random starting points."),
+                   prior_stack: Optional[str] = typer.Option(None, "--prior-stack", help="Catalog stack id whose datasheet (and Bouc-Wen values, if any) regularise the parameters the data leave free. Default: the seed's Table 1 loop rescaled to the record."),
+                   prior_sigma: float = typer.Option(0.5, "--prior-sigma", help="Relative 1-sigma of the prior on each dimensionless Bouc-Wen group."),
+                   catalog_entry: Optional[str] = typer.Option(None, "--catalog-entry", help="Also write ID.toml (beside --out): a [[stack]] catalog entry with the fitted Bouc-Wen values under status measured."),
+                   catalog: Optional[Path] = CatalogOpt):
     """Fit the seed's Bouc-Wen model (d33, alpha, beta, gamma, delta, n) and a Prandtl-Ishlinskii model to voltage/displacement runs."""
     progress = _LazyProgress("fit hysteresis")
     try:
         result = api.fit_hysteresis(data, holdout, model=model, out=out, report=report, cutoff_hz=cutoff_hz,
                                     fit_offset=offset, n_starts=starts, n_operators=operators, seed=seed,
-                                    progress=progress)
+                                    prior_stack=prior_stack, prior_sigma=prior_sigma, catalog_entry=catalog_entry,
+                                    catalog=catalog, progress=progress)
     finally:
         progress.close()
     _fit_output(result, out)

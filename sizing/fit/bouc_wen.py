@@ -12,11 +12,13 @@ How the fit works
   V = the largest |voltage|: [d33/d, alpha/d, beta H^n/d, gamma H^n/d,
   delta/d, n] with d = H/V. They are all of order one.
 - Initial state: each run gets its own initial hysteresis state h0 (a run
-  cut from a longer record starts mid-loop), and optionally its own sensor
-  offset; both are fitted with the parameters and reported.
+  cut from a longer record starts mid-loop) and, by default, its own sensor
+  offset; both are fitted with the parameters and reported. Runs may have
+  different sample rates: each run's residuals are weighted by
+  sqrt(dt_k / mean dt) so the cost is an integral over time.
 - Input: the measured voltage is low-passed on purpose (zero phase, cut-off
-  20 x the excitation frequency, at least 5 Hz; sim.signals) before it
-  drives the model, so that sensor noise cannot ratchet h.
+  from the record's sample rate and excitation: common.fit_cutoff) before
+  it drives the model, so that sensor noise cannot ratchet h.
 - Solver: scipy ``least_squares`` (trust region, bounds from physics:
   d33 > 0, 0.5 <= n <= 5, the groups within +/-20..100). Many seeded random
   starts are screened in one batch simulation; the best few are refined.
@@ -27,6 +29,9 @@ How the fit works
   assumed: with coloured residuals they are too narrow). A parameter that is
   at a bound, strongly correlated (|r| > 0.95) with another, or has an
   interval wider than itself gets an IdentifiabilityWarning.
+- Prior (optional, ``prior=``): a second, regularised fit (fit.prior) pulls
+  the groups toward catalog values where the data leave them free; it is
+  stored beside the plain least-squares result, never instead of it.
 """
 from __future__ import annotations
 
@@ -38,8 +43,8 @@ from scipy.optimize import least_squares
 from ..errors import FitError
 from ..physics.bouc_wen import BoucWen, free_displacement
 from ..sim.signals import nrmse
-from .common import (Z95, ConvergenceWarning, HysteresisRecord, check_hysteresis_records, correlation,
-                     covariance, filter_inputs, identifiability)
+from .common import (Z95, ConvergenceWarning, HysteresisRecord, IdentifiabilityWarning, check_hysteresis_records, correlation,
+                     covariance, filter_inputs, identifiability, run_weights)
 
 PARAM_NAMES = ("d33", "alpha", "beta", "gamma", "delta", "n")
 # bounds of the dimensionless groups (physics: d33 > 0, n of order one)
@@ -92,14 +97,18 @@ class BoucWenEstimator:
     random_state : seed of the starting points.
     cutoff_hz : low-pass cut-off of the voltage (Hz); None chooses it from the
         excitation, 0 disables the filter.
-    fit_offset : also fit a constant sensor offset per run.
+    fit_offset : also fit a constant sensor offset per run (default: yes;
+        real sensors carry one).
     max_nfev : function evaluations per start.
     progress : optional callable(fraction done, message).
+    prior : optional (6,) physical parameters to regularise toward
+        (fit.prior.regularise); the result is ``regularised_``.
+    prior_sigma : relative 1-sigma of the prior on each group.
     """
 
     def __init__(self, n_starts: int = 4, n_screen: int = 96, random_state: int = 0,
-                 cutoff_hz: float | None = None, fit_offset: bool = False, max_nfev: int = 200,
-                 progress=None):
+                 cutoff_hz: float | None = None, fit_offset: bool = True, max_nfev: int = 200,
+                 progress=None, prior=None, prior_sigma: float = 0.5):
         self.n_starts = n_starts
         self.n_screen = n_screen
         self.random_state = random_state
@@ -107,6 +116,8 @@ class BoucWenEstimator:
         self.fit_offset = fit_offset
         self.max_nfev = max_nfev
         self.progress = progress
+        self.prior = prior
+        self.prior_sigma = prior_sigma
 
     # ---- model evaluation -------------------------------------------------
     def _unpack(self, z):
@@ -121,7 +132,7 @@ class BoucWenEstimator:
         parts = []
         for k, rec in enumerate(records):
             x = free_displacement(rec.time, rec.voltage_filtered, theta[None, :], np.array([h0[k]]))[0]
-            parts.append((x + off[k] - rec.position) / self.scales_[0])
+            parts.append((x + off[k] - rec.position) * (self._weights[k] / self.scales_[0]))
         return _finite(np.concatenate(parts))
 
     def _jacobian(self, z, records):
@@ -144,7 +155,7 @@ class BoucWenEstimator:
             J[:, 6 + k] = (X[7] - X[0]) / dh
             if self.fit_offset:
                 J[:, 6 + K + k] = 1.0
-            rows.append(J)
+            rows.append(J * self._weights[k])
         return _finite(np.vstack(rows))
 
     # ---- fitting ----------------------------------------------------------
@@ -152,6 +163,7 @@ class BoucWenEstimator:
         self.cutoff_hz_ = dict(zip([r.name for r in records], filter_inputs(records, self.cutoff_hz)))
         check_hysteresis_records(records)
         self._n_runs = K = len(records)
+        self._weights = run_weights(records)
         H = float(max(np.ptp(r.position) for r in records))
         V = float(max(np.max(np.abs(r.voltage_filtered)) for r in records))
         self.scales_ = (H, V)
@@ -175,6 +187,10 @@ class BoucWenEstimator:
         if not best.success or best.status == 0:
             warnings.warn(f"Bouc-Wen fit did not converge: {best.message}", ConvergenceWarning, stacklevel=2)
         self._finish(best, records, lb, ub)
+        if self.prior is not None:
+            from .prior import regularise
+            self._report(len(starts) / (len(starts) + 1), "prior")
+            self.regularised_ = regularise(self, records, np.asarray(self.prior, float), self.prior_sigma, lb, ub)
         self._report(1.0, "done")
         return self
 
@@ -214,6 +230,7 @@ class BoucWenEstimator:
     def _finish(self, res, records, lb, ub):
         H, V = self.scales_
         z = res.x
+        self.z_ = z.copy()
         g, h0, off = self._unpack(z)
         theta = groups_to_params(g, H, V)
         self.groups_ = g.copy()
@@ -234,6 +251,13 @@ class BoucWenEstimator:
         at_bound = (np.abs(g - lb[:6]) < 1e-4 * span) | (np.abs(g - ub[:6]) < 1e-4 * span)
         self.at_bound_ = {name: bool(b) for name, b in zip(PARAM_NAMES, at_bound)}
         self.warnings_ = identifiability(list(PARAM_NAMES), theta, half, self.corr_, at_bound)
+        states_at_bound = [r.name for r, h in zip(records, h0) if abs(h) > 0.999 * STATE_BOUND * H]
+        if states_at_bound:
+            message = (f"initial state h0 of {', '.join(states_at_bound)} is at its bound ({STATE_BOUND:g} x the "
+                       "stroke): the loop lives on one side of h = 0 and the fit is a curve fit of this record")
+            warnings.warn(message, IdentifiabilityWarning, stacklevel=3)
+            self.warnings_.append(message)
+        self.noise_ = float(np.sqrt(r @ r / max(len(r) - len(z), 1)))     # normalised residual sigma
         self.residual_rms_ = float(np.sqrt(np.mean(r ** 2)) * H)
         self.nrmse_ = {rec.name: nrmse(rec.position, self.predict(rec)) for rec in records}
 

@@ -14,11 +14,15 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import FitError
-from ..sim.signals import excitation_cutoff, lowpass_zero_phase
+from ..sim.signals import lowpass_zero_phase, sample_rate
 
 MIN_FIT_SAMPLES = 20          # per run
-MIN_REVERSALS = 1             # per training set: a loop needs the input to turn
+MIN_REVERSALS = 1             # per run: a loop needs the input to turn
 Z95 = 1.959963984540054
+# default input filter (fit_cutoff): 20 x the dominant frequency of the
+# excitation, 3 x the band that holds 99 % of its energy above the noise
+# floor, at least 5 Hz, and never above a quarter of the Nyquist frequency
+CUTOFF_HARMONICS, CUTOFF_BAND_FACTOR, CUTOFF_FLOOR_HZ, CUTOFF_MAX_NYQUIST = 20.0, 3.0, 5.0, 0.25
 
 
 class ConvergenceWarning(UserWarning):
@@ -90,25 +94,55 @@ def check_hysteresis_records(records: list[HysteresisRecord]) -> None:
         if float(np.ptp(rec.position)) == 0.0:
             raise FitError(f"{rec.label}: column position_m: constant displacement; nothing to fit")
     v_scale = max(float(np.ptp(r.voltage)) for r in records)
-    if sum(count_reversals(r.voltage_filtered if r.voltage_filtered is not None else r.voltage,
-                           0.05 * v_scale) for r in records) < MIN_REVERSALS:
-        names = ", ".join(r.label for r in records)
-        raise FitError(f"{names}: column voltage_V: no reversal of the input (it only rises or only falls); "
-                       "a hysteresis loop needs the voltage to turn at least once")
+    for rec in records:
+        v = rec.voltage_filtered if rec.voltage_filtered is not None else rec.voltage
+        if count_reversals(v, 0.05 * v_scale) < MIN_REVERSALS:
+            duration = float(rec.time[-1] - rec.time[0])
+            raise FitError(f"{rec.label}: column voltage_V: no reversal: the record is shorter than one reversal "
+                           f"of the input (over {duration:.3g} s it only rises or only falls); a hysteresis loop "
+                           "needs the voltage to turn at least once in every run")
+
+
+def fit_cutoff(t: np.ndarray, v: np.ndarray) -> float:
+    """Default cut-off (Hz) of the input filter for one record, from its
+    sample rate and its excitation: the largest of 20 x the dominant
+    frequency, 3 x the band holding 99 % of the excitation's energy above
+    the noise floor (minor loops, triangles, steps), and 5 Hz; never above
+    a quarter of the Nyquist frequency fs / 2."""
+    fs = sample_rate(t)
+    ceiling = CUTOFF_MAX_NYQUIST * fs / 2
+    x = np.asarray(v, float) - np.mean(v)
+    if len(x) < 8 or not np.any(x):
+        return ceiling
+    power = np.abs(np.fft.rfft(x * np.hanning(len(x)))) ** 2
+    freqs = np.fft.rfftfreq(len(x), 1.0 / fs)
+    dominant = float(freqs[1:][np.argmax(power[1:])])
+    clean = np.clip(power - 4.0 * np.median(power), 0.0, None)   # white-noise floor removed
+    cumulative = np.cumsum(clean)
+    band = float(freqs[np.searchsorted(cumulative, 0.99 * cumulative[-1])]) if cumulative[-1] > 0 else dominant
+    return float(min(max(CUTOFF_HARMONICS * dominant, CUTOFF_BAND_FACTOR * band, CUTOFF_FLOOR_HZ), ceiling))
+
+
+def run_weights(records: list[HysteresisRecord]) -> np.ndarray:
+    """Weight of each run's residuals in a joint fit: sqrt(dt_k / mean dt),
+    so the cost is an integral over time and a run sampled ten times faster
+    does not count ten times more (runs may have different sample rates)."""
+    dt = np.array([1.0 / sample_rate(r.time) for r in records])
+    return np.sqrt(dt / dt.mean())
 
 
 def filter_inputs(records: list[HysteresisRecord], cutoff_hz: float | None) -> list[float]:
     """Low-pass each record's voltage on purpose (zero phase, no delay) so that
     sensor noise cannot ratchet the hysteresis state. Returns the cut-off used
-    per record (Hz); ``cutoff_hz=None`` picks it with ``excitation_cutoff``
-    (20 x the dominant frequency, at least 5 Hz); ``0`` disables filtering."""
+    per record (Hz); ``cutoff_hz=None`` picks it per record with
+    ``fit_cutoff`` (sample rate and excitation); ``0`` disables filtering."""
     used = []
     for rec in records:
         if cutoff_hz == 0:
             rec.voltage_filtered = np.asarray(rec.voltage, float).copy()
             used.append(0.0)
             continue
-        fc = excitation_cutoff(rec.time, rec.voltage) if cutoff_hz is None else float(cutoff_hz)
+        fc = fit_cutoff(rec.time, rec.voltage) if cutoff_hz is None else float(cutoff_hz)
         rec.voltage_filtered = padded_lowpass(rec.time, rec.voltage, fc)
         used.append(fc)
     return used

@@ -13,13 +13,9 @@ from ..io.atomic import write_many
 from ..io.rig import DCRig, load_rig
 from ..io.runs import read_runs, split_holdout
 from ..sim.signals import nrmse
-from .bouc_wen import PARAM_NAMES, BoucWenEstimator
-from .common import HysteresisRecord
 from .dc_motor import DCMotorEstimator, DCRecord
 from .output import render_toml
-from .prandtl_ishlinskii import PrandtlIshlinskiiEstimator
 
-MODELS = ("bouc-wen", "prandtl-ishlinskii")
 
 
 def _mean(values):
@@ -31,88 +27,12 @@ def _source(paths) -> str:
     return ", ".join(str(p) for p in paths)
 
 
-def fit_hysteresis(paths, holdout=None, model: str = "bouc-wen", out=None, report=None,
-                   cutoff_hz: float | None = None, fit_offset: bool = False, n_starts: int = 4,
-                   seed: int = 0, n_operators: int = 16, progress=None) -> dict:
-    """Fit Bouc-Wen and Prandtl-Ishlinskii to runs (CSV paths); ``model``
-    chooses which one the TOML carries. Returns {"toml", "warnings",
-    "result", "written"}."""
-    if model not in MODELS:
-        raise InputError("command line", "--model", f"expected one of {', '.join(MODELS)}, got {model!r}")
-    runs = read_runs(paths, kind="piezohydraulic")
-    train, hold = split_holdout(runs, holdout, _source(paths))
+def fit_hysteresis(paths, holdout=None, model: str = "auto", out=None, report=None, **options) -> dict:
+    """Fit Bouc-Wen and Prandtl-Ishlinskii to runs (CSV paths); see
+    ``hysteresis_workflow.fit_hysteresis``."""
+    from .hysteresis_workflow import fit_hysteresis as run
 
-    def record(run):
-        return HysteresisRecord(run.name, run.time, run["voltage_V"], run["position_m"], source=str(run.path))
-
-    train_rec, hold_rec = [record(r) for r in train], [record(r) for r in hold]
-    caught: list[str] = []
-    with warnings.catch_warnings(record=True) as log:
-        warnings.simplefilter("always")
-        bw = BoucWenEstimator(n_starts=n_starts, random_state=seed, cutoff_hz=cutoff_hz,
-                              fit_offset=fit_offset, progress=progress).fit(train_rec)
-        pi = PrandtlIshlinskiiEstimator(n_operators=n_operators, cutoff_hz=cutoff_hz).fit(train_rec)
-    caught = [str(w.message) for w in log]
-
-    traces = []
-    per_model = {"bouc-wen": {"train": {}, "holdout": {}}, "prandtl-ishlinskii": {"train": {}, "holdout": {}}}
-    for role, recs in (("train", train_rec), ("holdout", hold_rec)):
-        for rec in recs:
-            x_bw, x_pi = bw.predict(rec), pi.predict(rec)
-            per_model["bouc-wen"][role][rec.name] = nrmse(rec.position, x_bw)
-            per_model["prandtl-ishlinskii"][role][rec.name] = nrmse(rec.position, x_pi)
-            traces.append({"name": rec.name, "role": role, "time": rec.time, "voltage": rec.voltage,
-                           "voltage_filtered": rec.voltage_filtered, "measured": rec.position,
-                           "fitted": {"bouc-wen": x_bw, "prandtl-ishlinskii": x_pi}})
-    summary = {m: {"nrmse_train": _mean(per_model[m]["train"].values()),
-                   "nrmse_holdout": _mean(per_model[m]["holdout"].values()),
-                   "nrmse_runs": {**per_model[m]["train"], **per_model[m]["holdout"]}} for m in MODELS}
-    other = MODELS[1 - MODELS.index(model)]
-    cutoffs = sorted(set(round(c, 3) for c in bw.cutoff_hz_.values()))
-    filter_note = ("voltage low-passed before it drives the models: 4th-order Butterworth, zero phase "
-                   f"(forwards and backwards), cut-off {', '.join(f'{c:g}' for c in cutoffs)} Hz "
-                   "(20 x the excitation frequency, at least 5 Hz), so sensor noise cannot ratchet the "
-                   "hysteresis state" if any(cutoffs) else "voltage used unfiltered (--cutoff-hz 0)")
-    th = bw.params_.as_array()
-    fit_table = {
-        "model": model,
-        "nrmse_train": summary[model]["nrmse_train"],
-        "nrmse_holdout": summary[model]["nrmse_holdout"],
-        "train_runs": [r.name for r in train_rec],
-        "holdout_runs": [r.name for r in hold_rec],
-        "input_filter": filter_note,
-        "cutoff_Hz": cutoffs[0] if len(cutoffs) == 1 else cutoffs,
-        "warnings": list(bw.warnings_) if model == "bouc-wen" else [],
-    }
-    fit_table["nrmse_runs"] = summary[model]["nrmse_runs"]
-    if model == "bouc-wen":
-        fit_table["ci95"] = {n: [bw.ci95_[n][0], bw.ci95_[n][1]] for n in PARAM_NAMES}
-        fit_table["stderr"] = {n: float(s) for n, s in zip(PARAM_NAMES, bw.stderr_)}
-        fit_table["initial_state"] = {"h0_m": {**bw.h0_, **{r.name: bw.initial_state(r)[0] for r in hold_rec}},
-                                      "offset_m": {**bw.offset_, **{r.name: bw.initial_state(r)[1] for r in hold_rec}}}
-        if fit_offset is False:
-            fit_table["initial_state"].pop("offset_m")
-    fit_table[other.replace("-", "_")] = {"nrmse_train": summary[other]["nrmse_train"],
-                                           "nrmse_holdout": summary[other]["nrmse_holdout"]}
-    tables: dict = {}
-    if model == "bouc-wen":
-        tables["stack"] = {"d33": th[0]}
-        tables["stack.bouc_wen"] = dict(zip(PARAM_NAMES[1:], th[1:]))
-    else:
-        tables["prandtl_ishlinskii"] = {"thresholds_V": [float(x) for x in pi.thresholds_],
-                                        "weights_m_V": [float(x) for x in pi.weights_]}
-    tables["fit"] = fit_table
-    comments = {"stack": "sizing fit hysteresis: seed eq. 1-2, SI (paste into rig.toml)",
-                "fit": "not part of a rig: fit figures (NRMSE per CONTRACTS.md)"}
-    toml = render_toml(tables, comments)
-    result = {"model": model, "summary": summary, "traces": traces, "fit": fit_table,
-              "bouc_wen": {"params": dict(zip(PARAM_NAMES, th.tolist())), "ci95": bw.ci95_,
-                           "corr": bw.corr_, "warnings": bw.warnings_, "h0": bw.h0_, "message": bw.message_},
-              "prandtl_ishlinskii": {"thresholds_V": pi.thresholds_, "weights_m_V": pi.weights_},
-              "filter": filter_note, "sources": [str(p) for p in paths]}
-    warn = list(dict.fromkeys(caught))
-    written = _write(out, report, toml, result, kind="hysteresis")
-    return {"toml": toml, "warnings": warn, "result": result, "written": written}
+    return run(paths, holdout=holdout, model=model, out=out, report=report, **options)
 
 
 def fit_dc_motor(paths, rig_path, holdout=None, out=None, report=None, fit_gains: bool = False,
@@ -165,8 +85,8 @@ def fit_dc_motor(paths, rig_path, holdout=None, out=None, report=None, fit_gains
     return {"toml": toml, "warnings": list(dict.fromkeys(caught)), "result": result, "written": written}
 
 
-def _write(out, report, toml, result, kind) -> list[str]:
-    files: dict[Path, str] = {}
+def _write(out, report, toml, result, kind, extra: dict | None = None) -> list[str]:
+    files: dict[Path, str] = dict(extra or {})
     if out is not None:
         files[Path(out)] = toml
         if report is None:

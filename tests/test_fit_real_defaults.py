@@ -1,0 +1,197 @@
+"""Issue 12: fitting that holds on real records by default (sensor offset and
+initial state per run, input filter from the record, catalog prior,
+identifiable combinations, model choice on the holdout, catalog entry,
+cross-excitation)."""
+import os
+import shutil
+import tomllib
+import warnings
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from sizing import api
+from sizing.fit.bouc_wen import BoucWenEstimator
+from sizing.fit.common import HysteresisRecord, fit_cutoff
+from sizing.fit.prandtl_ishlinskii import PrandtlIshlinskiiEstimator
+from sizing.fit.prior import combinations
+from sizing.physics.bouc_wen import BoucWen, free_displacement
+from sizing.sim.signals import nrmse
+
+from .conftest import CATALOGS, run_cli
+
+# a stack that is NOT the seed's Table 1 (the default prior), so a fit that
+# only returned the prior would fail the 5 % check
+TRUTH = BoucWen(d33=9.0e-7, alpha=-3.0e-7, beta=0.2, gamma=0.05, delta=-4.0e-8, n=1.2)
+OFFSET = 3e-6           # sensor offset, m (about 3 % of the stroke)
+
+
+def write_csv(path, t, v, x):
+    rows = "\n".join(f"{a:.9g},{b:.9g},{c:.9g}" for a, b, c in zip(t, v, x))
+    path.write_text("time_s,voltage_V,position_m\n" + rows + "\n")
+    return path
+
+
+def quiet(est, records):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return est.fit(records)
+
+
+def test_fit_cutoff_follows_excitation_and_sample_rate():
+    # hand values: 1 Hz sine at 5 kHz -> 20 x 1 Hz; the same sine at 40 Hz
+    # sampling -> capped at a quarter of Nyquist, 0.25 x 20 Hz = 5 Hz; a
+    # 0.5 Hz carrier with 8 Hz minor loops -> 3 x the 99 % band (>= 8 Hz)
+    t = np.arange(0, 4, 1 / 5000)
+    assert fit_cutoff(t, np.sin(2 * np.pi * t)) == pytest.approx(20.0, rel=0.02)
+    t40 = np.arange(0, 4, 1 / 40)
+    assert fit_cutoff(t40, np.sin(2 * np.pi * t40)) == pytest.approx(5.0)
+    t200 = np.arange(0, 8, 1 / 200)
+    v = np.sin(np.pi * t200) + 0.3 * np.sin(2 * np.pi * 8 * t200)
+    assert 24.0 <= fit_cutoff(t200, v) <= 25.0
+
+
+@pytest.fixture(scope="module")
+def offset_runs(tmp_path_factory):
+    """Three amplitudes at three sample rates for training and a fourth held
+    out, each with a sensor offset and cut from a longer record so it starts
+    mid-loop (h != 0). Three cycles each: two amplitudes of two cycles leave
+    beta, gamma and delta 5-13 % off at this noise (tried, seeds 12-13)."""
+    folder = tmp_path_factory.mktemp("offset")
+    rng = np.random.default_rng(12)
+    paths, starts = [], {}
+    for a, rate in ((50.0, 500), (100.0, 400), (150.0, 250), (120.0, 300)):
+        t = np.arange(0.0, 3.6, 1 / rate)
+        v = a / 2 * (1 - np.cos(2 * np.pi * t))
+        x = free_displacement(t, v, TRUTH)
+        cut = int(0.6 * rate)                      # 0.6 s: on the falling branch
+        starts[f"a{int(a)}"] = x[cut] - TRUTH.d33 * v[cut]
+        noisy = x + OFFSET + 1e-3 * np.ptp(x) * rng.standard_normal(len(t))
+        paths.append(write_csv(folder / f"a{int(a)}.csv", t[cut:], v[cut:], noisy[cut:]))
+    return paths, starts
+
+
+@pytest.fixture(scope="module")
+def default_fit(offset_runs, tmp_path_factory):
+    paths, _ = offset_runs
+    # the default command, plus a catalog entry (written to the working
+    # folder without --out); no HTML, the slow part
+    here = os.getcwd()
+    os.chdir(tmp_path_factory.mktemp("out"))
+    try:
+        result = api.fit_hysteresis(paths, holdout=["a120"], catalog_entry="fitted-stack")
+        result["cwd"] = Path(os.getcwd())
+        return result
+    finally:
+        os.chdir(here)
+
+
+def test_default_command_recovers_parameters_offsets_and_states(default_fit, offset_runs):
+    result = default_fit
+    _, starts = offset_runs
+    data = tomllib.loads(result["toml"])
+    stack = {"d33": data["stack"]["d33"], **data["stack"]["bouc_wen"]}
+    err = {k: stack[k] / getattr(TRUTH, k) - 1 for k in stack}
+    assert all(abs(e) < 0.05 for e in err.values()), str(err)
+    fit = data["fit"]
+    assert "fitted per run" in fit["sensor_offset"] and "fitted per run" in fit["initial_state"]
+    for name in ("a50", "a150"):     # training runs: offset and h0 as simulated
+        assert fit["initial_states"]["offset_m"][name] == pytest.approx(OFFSET, abs=0.02 * OFFSET + 2e-8)
+        assert fit["initial_states"]["h0_m"][name] == pytest.approx(starts[name], abs=0.01 * 1e-4)
+    # the data determine every group: the prior's share stays small
+    assert max(fit["prior"]["prior_share"].values()) < 0.2 and fit["prior"]["from_prior"] == []
+    # d33 + alpha, hand value 9e-7 - 3e-7 = 6e-7 m/V
+    slope = fit["combinations"]["small_signal_slope_m_V"]
+    assert slope["ci95"][0] < 6e-7 < slope["ci95"][1] and slope["value"] == pytest.approx(6e-7, rel=0.01)
+    choice = fit["model_choice"]
+    assert fit["model"] == choice["winner"] == "bouc-wen"    # data from eq. 2 itself
+    assert choice["margin"] == pytest.approx(choice["prandtl_ishlinskii"] - choice["bouc_wen"], rel=1e-4)
+    assert fit["nrmse_holdout"] < 0.01
+
+
+def test_catalog_entry_validates_and_adds(default_fit, tmp_path):
+    result = default_fit
+    [entry_path] = [p for p in result["written"] if p.endswith("fitted-stack.toml")]
+    entry_path = result["cwd"] / entry_path if not os.path.isabs(entry_path) else entry_path
+    entry = tomllib.loads(open(entry_path).read())["stack"][0]
+    assert entry["status"]["bouc_wen"].startswith("measured")
+    assert entry["bouc_wen"]["d33"] == pytest.approx(TRUTH.d33, rel=0.05)
+    # appended to a copy of the shipped catalog, `sizing catalog validate` accepts it
+    catalog = tmp_path / "catalogs"
+    shutil.copytree(CATALOGS, catalog)
+    with open(catalog / "stacks.toml", "a") as f:
+        f.write("\n" + open(entry_path).read())
+    code, stdout, stderr = run_cli("catalog", "validate", catalog)
+    assert code == 0, stderr
+    code, stdout, _ = run_cli("catalog", "show", "fitted-stack", "--catalog", catalog)
+    assert code == 0 and "measured" in stdout
+
+
+def test_two_amplitudes_separate_d33_and_alpha():
+    # n = 2: at 20 V the |h|^n term is ~3 % of alpha, so the small loop is
+    # almost linear and fixes only d33 + alpha; 150 V bends it and separates them
+    truth = BoucWen(d33=8.0e-7, alpha=-2.0e-7, beta=300.0, gamma=150.0, delta=-3e-8, n=2.0)
+    t = np.arange(0, 2.0, 1 / 500)
+    rng = np.random.default_rng(4)
+
+    def run(a):
+        v = a / 2 * (1 - np.cos(2 * np.pi * t))
+        x = free_displacement(t, v, truth)
+        return HysteresisRecord(f"a{a}", t[130:], v[130:], (x + 2e-6 + 3e-3 * np.ptp(x) * rng.standard_normal(len(t)))[130:])
+
+    small, large = run(20), run(150)
+    one = quiet(BoucWenEstimator(), [small])
+    half = {k: (hi - lo) / 2 / abs(getattr(truth, k)) for k, (lo, hi) in one.ci95_.items()}
+    assert abs(one.corr_[0, 1]) > 0.999 and half["d33"] > 0.2 and half["alpha"] > 0.5
+    combo = combinations(one.params_.as_array(), one.cov_)["small_signal_slope_m_V"]
+    assert combo["value"] == pytest.approx(6.0e-7, rel=0.01) and combo["relative_half_width"] < 0.01
+    two = quiet(BoucWenEstimator(), [small, large])
+    for k in ("d33", "alpha"):
+        assert getattr(two.params_, k) == pytest.approx(getattr(truth, k), rel=0.05)
+        lo, hi = two.ci95_[k]
+        assert (hi - lo) / 2 < 0.05 * abs(getattr(truth, k))
+
+
+def duhem(v, a=0.03, c1=6e-7, c2=-5e-10, g=3.5e-7):
+    """Coleman-Hodgdon (Duhem) hysteresis, written here and outside both
+    fitted families: dx = a |dv| (f(v) - x) + g dv with a curved anhysteretic
+    f(v) = c1 v + c2 v^2 (Coleman and Hodgdon 1986; Jiles-Atherton-like)."""
+    x = np.zeros_like(v)
+    for k in range(len(v) - 1):
+        dv = v[k + 1] - v[k]
+        x[k + 1] = x[k] + a * abs(dv) * (c1 * v[k] + c2 * v[k] ** 2 - x[k]) + g * dv
+    return x
+
+
+def test_cross_excitation_on_a_model_outside_both_families():
+    # fit a full 0-150 V sine, judge a decaying carrier with 3 Hz minor loops
+    rng = np.random.default_rng(5)
+    t1, t2 = np.arange(0, 3.0, 1 / 500), np.arange(0, 4.0, 1 / 500)
+    v1 = 75 * (1 - np.cos(2 * np.pi * t1))
+    v2 = 70 + 55 * np.exp(-t2 / 3) * np.sin(2 * np.pi * 0.75 * t2 - np.pi / 2) + 20 * np.sin(2 * np.pi * 3 * t2)
+    v2 -= v2[0]
+    x1, x2 = duhem(v1), duhem(v2)
+    fit_on = HysteresisRecord("sine", t1, v1, x1 + 1e-6 + 1e-3 * np.ptp(x1) * rng.standard_normal(len(t1)))
+    judge = HysteresisRecord("minor", t2, v2, x2 - 2e-6 + 1e-3 * np.ptp(x2) * rng.standard_normal(len(t2)))
+    scores = {}
+    for name, est in (("bouc-wen", BoucWenEstimator(n_starts=2)), ("pi", PrandtlIshlinskiiEstimator())):
+        quiet(est, [fit_on])
+        scores[name] = (nrmse(fit_on.position, est.predict(fit_on)), nrmse(judge.position, est.predict(judge)))
+    # the goal of issue 12: one model within 1 % on both (Bouc-Wen here;
+    # measured 0.58 % / 0.65 %); Prandtl-Ishlinskii fits the sine as well
+    # but misses the minor loops (~1.9 %)
+    assert max(scores["bouc-wen"]) < 0.01, scores
+    assert scores["pi"][0] < 0.01 and scores["pi"][1] > scores["bouc-wen"][1], scores
+
+
+def test_record_shorter_than_one_reversal_exits_2_in_a_joint_fit(offset_runs, tmp_path):
+    paths, _ = offset_runs
+    t = np.arange(0, 0.3, 1 / 500)
+    short = write_csv(tmp_path / "ramp-up.csv", t, 100 * t, 1e-6 * t)
+    code, stdout, stderr = run_cli("fit", "hysteresis", paths[0], short, "--out", tmp_path / "x.toml")
+    assert code == 2 and stdout == ""
+    lines = stderr.strip().splitlines()
+    assert len(lines) == 1 and "ramp-up.csv" in lines[0] and "shorter than one reversal" in lines[0]
+    assert not (tmp_path / "x.toml").exists()

@@ -7,13 +7,17 @@ A fit measures only the hysteresis; every other field of a stack entry
 named with ``--prior-stack`` (its statuses kept), or, when none is named, the
 seed's Table 1 stack with every copied value marked ``assumed`` so that
 ``sizing catalog list`` counts them and nobody mistakes them for the
-measured stack's datasheet. Pure: raw dicts in, raw dict out; the workflow
-reads the base entry and validates and writes the result.
+measured stack's datasheet. Pure: raw dicts in, raw dict / text out; the
+workflow reads the base entry and validates and writes the result: ID.toml
+(a ``[[stack]]`` block for a catalog file) and ID.csv (a one-row sheet for
+``sizing catalog add stack ID.csv``).
 """
 from __future__ import annotations
 
 import copy
+import csv
 import datetime as dt
+import io
 
 from .bouc_wen import PARAM_NAMES
 
@@ -42,3 +46,30 @@ def stack_entry(base: dict, entry_id: str, params, sources: list[str], base_name
             + ("" if base_named else f"Every other value is copied from {base['id']} and marked assumed. "))
     raw["notes"] = note + (base.get("notes") or "")
     return raw
+
+
+def stack_sheet(raw: dict) -> str:
+    """The entry as a one-row sheet for ``sizing catalog add`` (catalog_import:
+    quantities keep their units in the cells, nested tables are
+    ``bouc_wen.NAME`` columns, statuses ``status.FIELD`` columns; the sheet
+    reader takes one line per row, so line breaks in notes become spaces)."""
+    columns, cells = [], []
+    for key, value in raw.items():
+        if key == "status":
+            continue
+        if isinstance(value, dict):
+            for sub, v in value.items():
+                columns.append(f"{key}.{sub}")
+                cells.append(repr(float(v)) if isinstance(v, float) else str(v))
+        else:
+            columns.append(key)
+            text = value.isoformat() if isinstance(value, dt.date) else str(value)
+            cells.append(" ".join(text.split()) if key == "notes" else text)
+    for key, value in raw.get("status", {}).items():
+        columns.append(f"status.{key}")
+        cells.append(value)
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(columns)
+    writer.writerow(cells)
+    return buffer.getvalue()

@@ -23,7 +23,7 @@ from ..io.runs import read_runs, split_holdout
 from ..io.schema import load_toml
 from ..sim.signals import nrmse
 from .bouc_wen import PARAM_NAMES, BoucWenEstimator
-from .catalog_entry import stack_entry
+from .catalog_entry import stack_entry, stack_sheet
 from .common import Z95, HysteresisRecord
 from .output import render_toml
 from .prandtl_ishlinskii import PrandtlIshlinskiiEstimator
@@ -212,20 +212,23 @@ def _fit_table(carried, requested, choice, summary, bw, pi, train_rec, hold_rec,
         "initial_states": {"h0_m": states["h0_m"], "offset_m": states["offset_m"]},
     }
     table[other.replace("-", "_")] = {"nrmse_train": summary[other]["nrmse_train"],
-                                      "nrmse_holdout": summary[other]["nrmse_holdout"]}
-    if carried == "bouc-wen":
-        table["prandtl_ishlinskii"]["nrmse_runs"] = summary[other]["nrmse_runs"]
+                                      "nrmse_holdout": summary[other]["nrmse_holdout"],
+                                      "nrmse_runs": summary[other]["nrmse_runs"]}
     return table
 
 
 def _catalog_entry(entry_id, base_raw, base_named, bw, paths, prior_text, out, catalog) -> dict:
-    """{path: text} of the catalog entry, validated as a catalog would be."""
+    """{path: text} of the catalog entry (TOML block and CSV sheet),
+    validated as a catalog would be; an id the catalog already has is
+    refused (``sizing catalog add`` would refuse it too)."""
     from ..io.catalog import ID_PATTERN
     from ..io.validate import validate_catalog
 
     if not ID_PATTERN.match(entry_id):
         raise InputError("command line", "--catalog-entry",
                          f"expected lower case letters, digits, '.' and '-', got {entry_id!r}")
+    if entry_id in load_catalog(catalog).stacks:
+        raise InputError("command line", "--catalog-entry", f"id {entry_id!r} is already in the catalog; choose a new one")
     raw = stack_entry(base_raw, entry_id, bw.regularised_.params.as_array(), [Path(p).name for p in paths],
                       base_named, f"regularised toward {prior_text}")
     text = entry_toml("stack", raw)
@@ -237,4 +240,4 @@ def _catalog_entry(entry_id, base_raw, base_named, bw, paths, prior_text, out, c
             raise InputError("command line", "--catalog-entry",
                              f"the entry would not validate: {exc.field}: {exc.message}") from None
     folder = Path(out).parent if out is not None else Path(".")
-    return {folder / f"{entry_id}.toml": text}
+    return {folder / f"{entry_id}.toml": text, folder / f"{entry_id}.csv": stack_sheet(raw)}

@@ -68,6 +68,40 @@ def _run_figure(trace: dict, kind: str) -> go.Figure:
     return fig
 
 
+def _hysteresis_sections(result: dict) -> str:
+    """Model choice, the rig-ready Bouc-Wen values next to the plain fit,
+    what the data determine, the prior, the PI weights, the input filter."""
+    parts = []
+    choice = result.get("model_choice")
+    if choice:
+        parts.append("<h2>Model choice</h2><p>" + html.escape(
+            f"{choice['winner']} wins on the {choice['criterion']}: Bouc-Wen {_pct(choice['bouc_wen'])}, "
+            f"Prandtl-Ishlinskii {_pct(choice['prandtl_ishlinskii'])}, margin {_pct(choice['margin'])} "
+            f"({100 * choice['margin_relative']:.0f} % of the loser's).") + "</p>")
+    bw = result["bouc_wen"]
+    plain = bw.get("plain", bw["params"])
+    plain_ci = bw.get("plain_ci95", bw["ci95"])
+    share = (bw.get("prior") or {}).get("prior_share", {})
+    rows = [[n, f"{v:.5g}", f"[{bw['ci95'][n][0]:.4g}, {bw['ci95'][n][1]:.4g}]", f"{plain[n]:.5g}",
+             f"[{plain_ci[n][0]:.4g}, {plain_ci[n][1]:.4g}]", f"{share[n]:.2f}" if n in share else "-"]
+            for n, v in bw["params"].items()]
+    parts.append("<h2>Bouc-Wen parameters (seed eq. 1-2, SI)</h2>" + _table(
+        rows, ["parameter", "rig-ready ([stack])", "95 % interval", "plain least squares", "95 % interval",
+               "prior share (0 data, 1 prior)"]))
+    if bw.get("prior"):
+        parts.append(f"<p><b>Prior:</b> {html.escape(bw['prior']['source'])}; {html.escape(bw['prior']['weight'])}.</p>")
+    combos = bw.get("combinations") or {}
+    if combos:
+        rows = [[n, f"{c['value']:.5g}", f"[{c['ci95'][0]:.4g}, {c['ci95'][1]:.4g}]", f"{100 * c['relative_half_width']:.2f} %"]
+                for n, c in combos.items()]
+        parts.append("<h2>What the data determine</h2>" + _table(rows, ["combination", "value", "95 % interval", "+/- relative"]))
+    pi = result["prandtl_ishlinskii"]
+    rows = [[f"{r:.4g}", f"{w:.4g}"] for r, w in zip(pi["thresholds_V"], pi["weights_m_V"])]
+    parts.append("<h2>Prandtl-Ishlinskii weights (w >= 0)</h2>" + _table(rows, ["threshold (V)", "weight (m/V)"]))
+    parts.append(f"<p><b>Input filter:</b> {html.escape(result['filter'])}.</p>")
+    return "".join(parts)
+
+
 def render(result: dict, kind: str, toml: str) -> str:
     """The whole report as one HTML string (plotly.js inlined once)."""
     summary = result["summary"]
@@ -83,13 +117,7 @@ def render(result: dict, kind: str, toml: str) -> str:
     parts.append("<p>NRMSE = RMS(measured - fitted) / (max - min of measured), CONTRACTS.md. "
                  f"The chosen model (in the TOML) is <b>{html.escape(result['model'])}</b>.</p>")
     if kind == "hysteresis":
-        bw = result["bouc_wen"]
-        rows = [[n, f"{v:.5g}", f"[{bw['ci95'][n][0]:.4g}, {bw['ci95'][n][1]:.4g}]"] for n, v in bw["params"].items()]
-        parts.append("<h2>Bouc-Wen parameters (seed eq. 1-2, SI)</h2>" + _table(rows, ["parameter", "value", "95 % interval"]))
-        pi = result["prandtl_ishlinskii"]
-        rows = [[f"{r:.4g}", f"{w:.4g}"] for r, w in zip(pi["thresholds_V"], pi["weights_m_V"])]
-        parts.append("<h2>Prandtl-Ishlinskii weights (w >= 0)</h2>" + _table(rows, ["threshold (V)", "weight (m/V)"]))
-        parts.append(f"<p><b>Input filter:</b> {html.escape(result['filter'])}.</p>")
+        parts.append(_hysteresis_sections(result))
     else:
         rows = [[n, f"{v:.6g}", f"[{result['ci95'][n][0]:.6g}, {result['ci95'][n][1]:.6g}]"]
                 for n, v in result["params"].items()]

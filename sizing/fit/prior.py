@@ -26,12 +26,12 @@ Where the prior comes from (pure numbers; the workflow reads the catalog):
 from __future__ import annotations
 
 import copy
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 from scipy.optimize import least_squares
 
-from ..physics.bouc_wen import BoucWen, normalised_groups, from_groups
+from ..physics.bouc_wen import BoucWen, from_groups, normalised_groups
 from ..sim.signals import nrmse
 from .common import Z95
 
@@ -49,6 +49,7 @@ class Regularised:
     prior_share: np.ndarray    # (6,) posterior / prior variance, 0 = data, 1 = prior
     nrmse: dict                # per training run
     cov: np.ndarray            # (6, 6) posterior covariance of the physical parameters (Laplace)
+    estimator: object = field(default=None, repr=False)   # a BoucWenEstimator holding these values (predict)
 
 
 def transfer_prior(params: BoucWen, source_stroke: float, source_voltage: float,
@@ -100,8 +101,7 @@ def regularise(est, records, prior: np.ndarray, sigma_rel: float, lb: np.ndarray
     fitted.regularised_ = None
     result = Regularised(params=fitted.params_, h0=fitted.h0_, offset=fitted.offset_, prior=np.asarray(prior, float),
                          prior_share=share, nrmse={r.name: nrmse(r.position, fitted.predict(r)) for r in records},
-                         cov=(T := _dparams_dgroups(g, H, V)) @ posterior[:6, :6] @ T.T)
-    result.estimator = fitted
+                         cov=(T := _dparams_dgroups(g, H, V)) @ posterior[:6, :6] @ T.T, estimator=fitted)
     return result
 
 

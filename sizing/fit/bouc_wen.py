@@ -25,8 +25,9 @@ How the fit works
   The Jacobian is a forward difference computed with the batch simulator
   (all perturbed parameter sets of a run in one call).
 - Uncertainty: covariance s^2 (J^T J)^-1 from the Jacobian at the optimum,
-  mapped to physical units; 95 % intervals +/- 1.96 sigma (white residuals
-  assumed: with coloured residuals they are too narrow). A parameter that is
+  mapped to physical units, times (1 + rho) / (1 - rho) with rho the lag-1
+  correlation of the residuals (AR(1) effective sample size: model error on
+  a real record is smooth, not white); 95 % intervals +/- 1.96 sigma. A parameter that is
   at a bound, strongly correlated (|r| > 0.95) with another, or has an
   interval wider than itself gets an IdentifiabilityWarning.
 - Prior (optional, ``prior=``): a second, regularised fit (fit.prior) pulls
@@ -44,7 +45,7 @@ from ..errors import FitError
 from ..physics.bouc_wen import BoucWen, free_displacement
 from ..sim.signals import nrmse
 from .common import (Z95, ConvergenceWarning, HysteresisRecord, IdentifiabilityWarning, check_hysteresis_records, correlation,
-                     covariance, filter_inputs, identifiability, run_weights)
+                     covariance, filter_inputs, identifiability, lag1_correlation, run_weights)
 
 PARAM_NAMES = ("d33", "alpha", "beta", "gamma", "delta", "n")
 # bounds of the dimensionless groups (physics: d33 > 0, n of order one)
@@ -239,7 +240,12 @@ class BoucWenEstimator:
         self.offset_ = {r.name: float(o) for r, o in zip(records, off)}
         J = self._jacobian(z, records)
         r = self._residual(z, records)
-        cov_z = covariance(J, r)
+        # residuals of a real record are coloured (model error is smooth): an
+        # AR(1) effective sample size widens the intervals by (1 + rho) / (1 - rho)
+        self.residual_correlation_ = lag1_correlation(r, [len(rec.time) for rec in records])
+        rho = min(max(self.residual_correlation_, 0.0), 0.999)
+        self.interval_inflation_ = (1 + rho) / (1 - rho)
+        cov_z = covariance(J, r) * self.interval_inflation_
         T = _dparams_dgroups(g, H, V)
         self.cov_ = T @ cov_z[:6, :6] @ T.T
         self.stderr_ = np.sqrt(np.clip(np.diag(self.cov_), 0, None))

@@ -193,6 +193,17 @@ def covariance(jac: np.ndarray, residual: np.ndarray, n_free: int | None = None)
     return s2 * inv
 
 
+def lag1_correlation(residual: np.ndarray, lengths: list[int]) -> float:
+    """Pooled lag-1 autocorrelation of residuals stacked run after run
+    (pairs that straddle two runs are left out)."""
+    r = np.asarray(residual, float)
+    keep = np.ones(len(r) - 1, bool)
+    ends = np.cumsum(lengths)[:-1] - 1
+    keep[ends[ends < len(keep)]] = False
+    denominator = float(r @ r)
+    return float(np.sum(r[:-1][keep] * r[1:][keep]) / denominator) if denominator > 0 else 0.0
+
+
 def correlation(cov: np.ndarray) -> np.ndarray:
     sd = np.sqrt(np.clip(np.diag(cov), 0, None))
     with np.errstate(invalid="ignore", divide="ignore"):

@@ -11,11 +11,14 @@ prior on the dimensionless groups of ``bouc_wen.groups_to_params``):
     sd_j = sigma_rel max(|g_prior_j|, 0.1)
 
 with r the weighted, normalised residuals of the plain fit and s^2 their
-variance at its optimum (so the data term is chi^2). Where the data
-determine a group, its posterior sd is far below sd_j and the prior does
-not move it; along a flat direction the prior fixes it. ``prior_share``
-(posterior variance / prior variance, Laplace approximation) says which it
-is: near 0 from the data, near 1 from the prior.
+variance at its optimum (so the data term is the white-noise chi^2).
+Where the data determine a group, its posterior sd is far below sd_j and
+the prior does not move it; along a flat direction the prior fixes it.
+``prior_share`` (posterior variance / prior variance, Laplace
+approximation) says which it is: near 0 from the data, near 1 from the
+prior. The posterior (intervals, shares) counts the data with the plain
+fit's AR(1) interval inflation, (1 + rho) / (1 - rho), as its intervals do;
+the point itself weighs the prior against the white chi^2.
 
 Where the prior comes from (pure numbers; the workflow reads the catalog):
 - ``transfer_prior``: a catalog stack's Bouc-Wen parameters carried to
@@ -89,7 +92,7 @@ def regularise(est, records, prior: np.ndarray, sigma_rel: float, lb: np.ndarray
             best = res
     z = best.x
     J = est._jacobian(z, records)
-    precision = J.T @ J / s ** 2
+    precision = J.T @ J / (s ** 2 * est.interval_inflation_)     # coloured residuals: see BoucWenEstimator
     precision[:6, :6] += np.diag(1.0 / sd ** 2)
     posterior = np.linalg.pinv(precision)
     share = np.clip(np.diag(posterior)[:6] * (1.0 / sd ** 2), 0.0, 1.0)

@@ -223,7 +223,7 @@ def _fit_output(result: dict, out: Optional[Path]) -> None:
 @fit_app.command("hysteresis")
 def fit_hysteresis(data: List[Path] = typer.Argument(..., help="Run CSVs (time_s,voltage_V,position_m), one run each; position is the stack's displacement."),
                    holdout: Optional[List[str]] = typer.Option(None, "--holdout", help="Run (CSV name without .csv) kept out of the fit for validation; repeatable."),
-                   out: Optional[Path] = typer.Option(None, "--out", help="TOML file to write ([stack], [stack.bouc_wen], [fit]); the HTML report goes beside it (OUT.html). Default: print the TOML."),
+                   out: Optional[Path] = typer.Option(None, "--out", help="TOML file to write (tables stack, stack.bouc_wen and fit); the HTML report goes beside it (OUT.html). Default: print the TOML."),
                    model: str = typer.Option("auto", "--model", help="Model the TOML carries: auto (the one with the lower holdout NRMSE), bouc-wen or prandtl-ishlinskii (both are always fitted and compared)."),
                    report: Optional[Path] = typer.Option(None, "--report", help="HTML report path (default: OUT with .html; none without --out)."),
                    cutoff_hz: Optional[float] = typer.Option(None, "--cutoff-hz", help="Low-pass cut-off of the measured voltage, Hz (default: per run from its sample rate and excitation, at most a quarter of Nyquist; 0: no filter)."),
@@ -233,7 +233,7 @@ def fit_hysteresis(data: List[Path] = typer.Argument(..., help="Run CSVs (time_s
                    seed: int = typer.Option(0, "--seed", help="Seed of the random starting points."),
                    prior_stack: Optional[str] = typer.Option(None, "--prior-stack", help="Catalog stack id whose datasheet (and Bouc-Wen values, if any) regularise the parameters the data leave free. Default: the seed's Table 1 loop rescaled to the record."),
                    prior_sigma: float = typer.Option(0.5, "--prior-sigma", help="Relative 1-sigma of the prior on each dimensionless Bouc-Wen group."),
-                   catalog_entry: Optional[str] = typer.Option(None, "--catalog-entry", help="Also write ID.toml (beside --out): a [[stack]] catalog entry with the fitted Bouc-Wen values under status measured."),
+                   catalog_entry: Optional[str] = typer.Option(None, "--catalog-entry", help="Also write ID.toml and ID.csv beside --out: a stack catalog entry (for a stacks.toml, or for sizing catalog add stack ID.csv) with the fitted Bouc-Wen values under status measured."),
                    catalog: Optional[Path] = CatalogOpt):
     """Fit the seed's Bouc-Wen model (d33, alpha, beta, gamma, delta, n) and a Prandtl-Ishlinskii model to voltage/displacement runs."""
     progress = _LazyProgress("fit hysteresis")

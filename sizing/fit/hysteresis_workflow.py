@@ -213,7 +213,8 @@ def _fit_table(carried, requested, choice, summary, bw, pi, train_rec, hold_rec,
                           "values": dict(zip(PARAM_NAMES, bw.params_.as_array().tolist())),
                           "ci95": {n: list(bw.ci95_[n]) for n in PARAM_NAMES}},
         "initial_states": {"h0_m": states["h0_m"], "offset_m": states["offset_m"],
-                           "prandtl_ishlinskii_u_V": {k: float(u) for k, u in pi.memory_.items() if u is not None},
+                           "prandtl_ishlinskii_u_V": {k: "steady-state guess" if u is None else float(u)
+                                                      for k, u in pi.memory_.items()},
                            "prandtl_ishlinskii_offset_m": dict(pi.offset_)},
     }
     table[other.replace("-", "_")] = {"nrmse_train": summary[other]["nrmse_train"],

@@ -244,3 +244,17 @@ def test_prandtl_ishlinskii_initial_state_is_fitted():
     # single weights trade off with their neighbours under noise; their sum
     # (the slope after a reversal larger than every threshold) does not
     assert fitted.weights_.sum() == pytest.approx(w.sum(), rel=0.01)
+
+
+@pytest.mark.parametrize("option, value, message", [
+    ("--catalog-entry", "Bad Id", "lower case"),
+    ("--catalog-entry", "pi-p-056.90", "already in the catalog"),
+    ("--prior-stack", "no-such-stack", "no stack 'no-such-stack'"),
+    ("--prior-sigma", "0", "positive"),
+])
+def test_bad_fit_options_exit_2_before_fitting(offset_runs, tmp_path, option, value, message):
+    paths, _ = offset_runs
+    code, stdout, stderr = run_cli("fit", "hysteresis", *paths[:2], option, value, "--out", tmp_path / "x.toml")
+    lines = stderr.strip().splitlines()
+    assert code == 2 and stdout == "" and len(lines) == 1 and option in lines[0] and message in lines[0], stderr
+    assert not list(tmp_path.iterdir())

@@ -92,6 +92,8 @@ def fit_hysteresis(paths, holdout=None, model: str = "auto", out=None, report=No
         raise InputError("command line", "--model", f"expected one of {', '.join(MODEL_CHOICES)}, got {model!r}")
     if not prior_sigma > 0:
         raise InputError("command line", "--prior-sigma", f"expected a positive relative sd, got {prior_sigma!r}")
+    if catalog_entry is not None:
+        _check_entry_id(catalog_entry, catalog)
     runs = read_runs(paths, kind="piezohydraulic")
     train, hold = split_holdout(runs, holdout, ", ".join(str(p) for p in paths))
     train_rec, hold_rec = [_record(r) for r in train], [_record(r) for r in hold]
@@ -107,12 +109,17 @@ def fit_hysteresis(paths, holdout=None, model: str = "auto", out=None, report=No
         states = {"h0_m": {}, "offset_m": {}}
         for role, recs in (("train", train_rec), ("holdout", hold_rec)):
             for rec in recs:
-                xs = {m: est.predict(rec) for m, est in fitted.items()}
+                xs = {}
+                for m, est in fitted.items():
+                    if m == "prandtl-ishlinskii":
+                        xs[m] = est.predict(rec)
+                        continue
+                    h0, off = (est.h0_[rec.name], est.offset_[rec.name]) if role == "train" else est.initial_state(rec)
+                    xs[m] = est.predict(rec, h0=h0, offset=off)
+                    if m == "bouc-wen":
+                        states["h0_m"][rec.name], states["offset_m"][rec.name] = h0, off
                 for m, x in xs.items():
                     per_model[m][role][rec.name] = nrmse(rec.position, x)
-                reg = fitted["bouc-wen"]
-                h0, off = (reg.h0_[rec.name], reg.offset_[rec.name]) if role == "train" else reg.initial_state(rec)
-                states["h0_m"][rec.name], states["offset_m"][rec.name] = h0, off
                 traces.append({"name": rec.name, "role": role, "time": rec.time, "voltage": rec.voltage,
                                "voltage_filtered": rec.voltage_filtered, "measured": rec.position,
                                "fitted": {m: xs[m] for m in MODELS}})
@@ -131,7 +138,7 @@ def fit_hysteresis(paths, holdout=None, model: str = "auto", out=None, report=No
     tables["fit"] = fit_table
     comments = {"stack": ("sizing fit hysteresis: seed eq. 1-2, SI (paste into rig.toml); values the data leave "
                           "free come from the prior, see [fit.prior]"),
-                "prandtl_ishlinskii": "the model that won on the holdout; [stack] below is the Bouc-Wen form a rig.toml takes",
+                "prandtl_ishlinskii": "the model this fit carries (see [fit.model_choice]); [stack] below is the Bouc-Wen form a rig.toml takes",
                 "fit": "not part of a rig: fit figures (NRMSE per CONTRACTS.md)"}
     toml = render_toml(tables, comments)
     files: dict[Path, str] = {}
@@ -223,18 +230,23 @@ def _fit_table(carried, requested, choice, summary, bw, pi, train_rec, hold_rec,
     return table
 
 
-def _catalog_entry(entry_id, base_raw, base_named, bw, paths, prior_text, out, catalog) -> dict:
-    """{path: text} of the catalog entry (TOML block and CSV sheet),
-    validated as a catalog would be; an id the catalog already has is
-    refused (``sizing catalog add`` would refuse it too)."""
+def _check_entry_id(entry_id: str, catalog) -> None:
+    """Before any fit: a well-formed id the catalog does not have yet
+    (``sizing catalog add`` would refuse a duplicate)."""
     from ..io.catalog import ID_PATTERN
-    from ..io.validate import validate_catalog
 
     if not ID_PATTERN.match(entry_id):
         raise InputError("command line", "--catalog-entry",
                          f"expected lower case letters, digits, '.' and '-', got {entry_id!r}")
     if entry_id in load_catalog(catalog).stacks:
         raise InputError("command line", "--catalog-entry", f"id {entry_id!r} is already in the catalog; choose a new one")
+
+
+def _catalog_entry(entry_id, base_raw, base_named, bw, paths, prior_text, out, catalog) -> dict:
+    """{path: text} of the catalog entry (TOML block and CSV sheet),
+    validated as a catalog would be."""
+    from ..io.validate import validate_catalog
+
     raw = stack_entry(base_raw, entry_id, bw.regularised_.params.as_array(), [Path(p).name for p in paths],
                       base_named, f"regularised toward {prior_text}")
     text = entry_toml("stack", raw)

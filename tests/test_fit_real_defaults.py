@@ -212,6 +212,9 @@ def test_record_shorter_than_one_reversal_exits_2_in_a_joint_fit(offset_runs, tm
     lines = stderr.strip().splitlines()
     assert len(lines) == 1 and "ramp-up.csv" in lines[0] and "shorter than one reversal" in lines[0]
     assert not (tmp_path / "x.toml").exists()
+    # held out, it is refused as well: its initial state could not be told from its offset
+    code, _, stderr = run_cli("fit", "hysteresis", paths[0], short, "--holdout", "ramp-up")
+    assert code == 2 and "ramp-up.csv" in stderr and "shorter than one reversal" in stderr
 
 
 def test_prior_transfer_hand_values():

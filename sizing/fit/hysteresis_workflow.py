@@ -24,7 +24,7 @@ from ..io.schema import load_toml
 from ..sim.signals import nrmse
 from .bouc_wen import PARAM_NAMES, BoucWenEstimator
 from .catalog_entry import stack_entry, stack_sheet
-from .common import Z95, HysteresisRecord
+from .common import Z95, HysteresisRecord, check_hysteresis_records
 from .output import render_toml
 from .prandtl_ishlinskii import PrandtlIshlinskiiEstimator
 from .prior import combinations, transfer_prior
@@ -97,6 +97,7 @@ def fit_hysteresis(paths, holdout=None, model: str = "auto", out=None, report=No
     runs = read_runs(paths, kind="piezohydraulic")
     train, hold = split_holdout(runs, holdout, ", ".join(str(p) for p in paths))
     train_rec, hold_rec = [_record(r) for r in train], [_record(r) for r in hold]
+    check_hysteresis_records(train_rec + hold_rec)   # every run, held out or not, needs a reversal
     prior, prior_text, base_raw, base_named = _prior(catalog, prior_stack, train_rec)
     with warnings.catch_warnings(record=True) as log:
         warnings.simplefilter("always")

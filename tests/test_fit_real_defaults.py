@@ -96,10 +96,10 @@ def test_default_command_recovers_parameters_offsets_and_states(default_fit, off
     err = {k: stack[k] / getattr(TRUTH, k) - 1 for k in stack}
     assert all(abs(e) < 0.05 for e in err.values()), str(err)
     fit = data["fit"]
-    assert "fitted per run" in fit["sensor_offset"] and "fitted per run" in fit["initial_state"]
+    assert "fitted per run" in fit["sensor_offset"] and "fitted per run" in fit["initial_state_note"]
     for name in starts:              # training and holdout runs: offset and h0 as simulated
-        assert fit["initial_states"]["offset_m"][name] == pytest.approx(OFFSET, rel=0.01)
-        assert fit["initial_states"]["h0_m"][name] == pytest.approx(starts[name], rel=0.02)
+        assert fit["initial_state"]["offset_m"][name] == pytest.approx(OFFSET, rel=0.01)
+        assert fit["initial_state"]["h0_m"][name] == pytest.approx(starts[name], rel=0.02)
     # the data determine every group: the prior's share stays small
     assert max(fit["prior"]["prior_share"].values()) < 0.2 and fit["prior"]["from_prior"] == []
     # d33 + alpha, hand value 9e-7 - 3e-7 = 6e-7 m/V

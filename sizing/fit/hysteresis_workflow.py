@@ -198,7 +198,7 @@ def _fit_table(carried, requested, choice, summary, bw, pi, train_rec, hold_rec,
         "holdout_runs": [r.name for r in hold_rec],
         "sensor_offset": ("fitted per run (default; --no-offset holds it at 0)" if fit_offset
                           else "held at 0 (--no-offset)"),
-        "initial_state": ("fitted per run: Bouc-Wen h0, Prandtl-Ishlinskii the last turning point u of the "
+        "initial_state_note": ("fitted per run: Bouc-Wen h0, Prandtl-Ishlinskii the last turning point u of the "
                           "input before the record; holdout runs get theirs with the model held"),
         "input_filter": filter_note,
         "cutoff_Hz": cutoffs[0] if len(cutoffs) == 1 else cutoffs,
@@ -220,7 +220,7 @@ def _fit_table(carried, requested, choice, summary, bw, pi, train_rec, hold_rec,
                           "nrmse_holdout": summary["bouc-wen-plain"]["nrmse_holdout"],
                           "values": dict(zip(PARAM_NAMES, bw.params_.as_array().tolist())),
                           "ci95": {n: list(bw.ci95_[n]) for n in PARAM_NAMES}},
-        "initial_states": {"h0_m": states["h0_m"], "offset_m": states["offset_m"],
+        "initial_state": {"h0_m": states["h0_m"], "offset_m": states["offset_m"],
                            "prandtl_ishlinskii_u_V": {k: "steady-state guess" if u is None else float(u)
                                                       for k, u in pi.memory_.items()},
                            "prandtl_ishlinskii_offset_m": dict(pi.offset_)},

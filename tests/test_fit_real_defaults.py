@@ -46,6 +46,9 @@ def test_fit_cutoff_follows_excitation_and_sample_rate():
     # 0.5 Hz carrier with 8 Hz minor loops -> 3 x the 99 % band (>= 8 Hz)
     t = np.arange(0, 4, 1 / 5000)
     assert fit_cutoff(t, np.sin(2 * np.pi * t)) == pytest.approx(20.0, rel=0.02)
+    # white noise of 10 % of the amplitude is floor, not excitation: unchanged
+    noisy = np.sin(2 * np.pi * t) + 0.1 * np.random.default_rng(0).standard_normal(len(t))
+    assert fit_cutoff(t, noisy) == pytest.approx(20.0, rel=0.02)
     t40 = np.arange(0, 4, 1 / 40)
     assert fit_cutoff(t40, np.sin(2 * np.pi * t40)) == pytest.approx(5.0)
     t200 = np.arange(0, 8, 1 / 200)

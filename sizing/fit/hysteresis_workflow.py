@@ -101,13 +101,17 @@ def fit_hysteresis(paths, holdout=None, model: str = "auto", out=None, report=No
     prior, prior_text, base_raw, base_named = _prior(catalog, prior_stack, train_rec)
     with warnings.catch_warnings(record=True) as log:
         warnings.simplefilter("always")
+        tick = progress or (lambda fraction, message: None)
         bw = BoucWenEstimator(n_starts=n_starts, random_state=seed, cutoff_hz=cutoff_hz, fit_offset=fit_offset,
-                              prior=prior, prior_sigma=prior_sigma, progress=progress).fit(train_rec)
+                              prior=prior, prior_sigma=prior_sigma,
+                              progress=lambda f, m: tick(0.8 * f, f"Bouc-Wen: {m}")).fit(train_rec)
+        tick(0.8, "Prandtl-Ishlinskii")
         pi = PrandtlIshlinskiiEstimator(n_operators=n_operators, cutoff_hz=cutoff_hz,
                                         fit_offset=fit_offset).fit(train_rec)
         fitted = {"bouc-wen": bw.regularised_.estimator, "prandtl-ishlinskii": pi, "bouc-wen-plain": bw}
         traces, per_model = [], {m: {"train": {}, "holdout": {}} for m in fitted}
         states = {"h0_m": {}, "offset_m": {}}
+        tick(0.9, "predictions and holdout states")
         for role, recs in (("train", train_rec), ("holdout", hold_rec)):
             for rec in recs:
                 xs = {}

@@ -93,7 +93,10 @@ def test_sensor_noise_alone_gives_no_gap(piezo_rig):
 def test_injected_piezo_effect_is_named(piezo_rig, name, values):
     effect = get("piezohydraulic", name)
     runs = synth.synthesize("piezohydraulic", piezo_rig, _inputs(), [effect], [values], noise=synth.Noise(seed=3))
-    d = diagnose_runs("piezohydraulic", piezo_rig, runs, ["steps"], pairs=False)
+    # issue 10: re-calibration (d33) is on by default and takes part of a
+    # creep or friction gap before any effect is blamed; this test measures
+    # the shrink against the stated nominal, so it turns it off
+    d = diagnose_runs("piezohydraulic", piezo_rig, runs, ["steps"], pairs=False, recalibrate=[])
     assert d.verdict["effect"] == name
     assert d.verdict["shrink_holdout"] > 0.7
     fitted = d.fits[0].params

@@ -69,11 +69,15 @@ def check_runs(kind: str, bench: Bench, runs) -> None:
     """Bad input the diagnosis cannot judge: exit 2 with one line."""
     for run in runs:
         name = str(run.path) if getattr(run, "path", None) else run.name
-        if "current_A" in run.columns:
+        logged = set(run.columns)
+        if getattr(run, "path", None) is not None:      # the reader keeps only its technology's columns
+            with open(run.path, encoding="utf-8") as handle:
+                logged |= {c.strip() for c in handle.readline().split(",")}
+        if "current_A" in logged:
             if kind != "dc_motor":
                 raise InputError(name, "current_A", f"a current channel on a {kind} rig; "
                                  "only dc_motor runs log the controller current")
-            bad = ~np.isfinite(np.asarray(run.columns["current_A"], float))
+            bad = ~np.isfinite(np.asarray(run.columns.get("current_A", []), float))
             if bad.any():
                 raise InputError(name, f"current_A, sample {int(np.argmax(bad)) + 1}",
                                  "expected a finite current, got NaN or inf")

@@ -13,9 +13,12 @@
 3. Fit the promising effects (least squares on the training runs, from the
    best screened point); judge every effect on the holdout runs only.
 4. Pairs: when no single effect explains the gap, the best pairs of the
-   top singles are fitted together.
+   top singles are fitted together; a pair ranks first only when it is
+   significantly better than the best of its two singles (same bootstrap).
 5. Verdict (all measures are the combined measure of bench.py, holdout runs):
    - "no_significant_gap": baseline <= GAP_FACTOR x the noise floor;
+   - "unexplained" (named nothing) as well when the baseline is within
+     GAP_FACTOR x the floor (noise and model form together);
    - "explained": the best removes >= EXPLAINED of the gap energy above the
      floor, leaves <= RESIDUAL_FACTOR x floor, is significantly better
      than the baseline and separated from the runner-up (the best
@@ -172,7 +175,10 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
         fits.append(f)
     fits.sort(key=lambda f: f.nrmse_holdout)
     best = fits[0]
-    if pairs and explained(baseline_holdout, best.nrmse_holdout, total_floor(floor_holdout)) < EXPLAINED:
+    floor = total_floor(floor_holdout)
+    enough = (explained(baseline_holdout, best.nrmse_holdout, floor) >= EXPLAINED
+              and best.nrmse_holdout <= RESIDUAL_FACTOR * floor)
+    if pairs and not enough:
         tops = [f for f in fits[:TOP_PAIRS]]
         for a, b in itertools.combinations(tops, 2):
             ea, eb = a.named, b.named
@@ -183,7 +189,22 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
             holdout_score(bench, f)
             fits.append(f)
         fits.sort(key=lambda f: f.nrmse_holdout)
+        prefer_simple(fits, seed)
     return fits
+
+
+def prefer_simple(fits, seed: int = 0) -> None:
+    """A pair ranks first only when it is significantly better on the
+    holdout (block bootstrap) than the best single of its two effects;
+    otherwise that single moves to the front (parsimony)."""
+    best = fits[0]
+    if len(best.named) < 2:
+        return
+    names = {e.name for e in best.named}
+    singles = [f for f in fits if len(f.named) == 1 and f.named[0].name in names]
+    if singles and bootstrap_p(best.residual_blocks, singles[0].residual_blocks, seed) >= ALPHA:
+        fits.remove(singles[0])
+        fits.insert(0, singles[0])
 
 
 def runner_up(fits):
@@ -220,6 +241,12 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
            "separation": {"test": f"block bootstrap over holdout segments ({BLOCK_S:g} s blocks, "
                                   f"{N_BOOT} resamples, one-sided)",
                           "p_vs_baseline": p_base, "p_vs_runner_up": p_second, "alpha": ALPHA}}
+    if baseline_holdout <= GAP_FACTOR * floor:
+        out.update(effect=None, shrink_holdout=0.0, status="unexplained",
+                   reason=f"the gap ({baseline_holdout:.4f}) is above the noise floor but within {GAP_FACTOR:g} x "
+                          f"the model-form floor {floor:.4f}: no effect is blamed for what a nominal of "
+                          f"another form leaves")
+        return out
     significant = shrink > 0 and p_base < ALPHA
     separated = p_second < ALPHA
     leaves = best.nrmse_holdout <= RESIDUAL_FACTOR * floor

@@ -46,6 +46,20 @@ def measure(y: np.ndarray, rng, white: float, flicker: float, lsb: float) -> np.
     return np.round(out / lsb) * lsb if lsb > 0 else out
 
 
+def position_reading(t, y, effects: dict, rng, sensor: dict, lsb: float, drift_shape) -> np.ndarray:
+    """The logged position of a clean output y: Pade delay and thermal drift
+    (``drift_shape(t)`` from 0 to about 1, times effects["drift"] of the
+    span) when asked, then the sensor (``measure``; white 0.08 %, 1/f 0.02 %
+    of the span unless ``sensor`` says otherwise)."""
+    if "delay_s" in effects:
+        y = pade_delay(t, y, effects["delay_s"])
+    if "drift" in effects:
+        y = y + effects["drift"] * np.ptp(y) * drift_shape(t)
+    span = float(np.ptp(y)) or 1e-3
+    return measure(y, rng, sensor.get("white", 8e-4) * span, sensor.get("flicker", 2e-4) * span,
+                   sensor.get("lsb", lsb))
+
+
 def write_campaign(folder: Path, rig_toml: str, runs: dict[str, dict[str, np.ndarray]]) -> Path:
     """Write rig.toml and runs/NAME.csv (columns in the dict's order)."""
     folder = Path(folder)

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .common import measure, pade_delay, rk4
+from .common import position_reading, rk4
 
 NOMINAL = {"c1": -25.5552, "c2": 2987.02, "lead": 2e-3, "kt": 0.05, "eta": 0.9, "rate": 1250.0,
            "kp": 4000.0, "ki": 8000.0, "kd": 90.0, "i_max": 10.0, "F0": 0.0, "kL": 0.0}
@@ -176,14 +176,7 @@ def campaign(effects: dict, seed: int, stroke: float = 0.01, misstate: float = 0
     sensor = sensor or {}
     runs = {}
     for k, name in enumerate(names):
-        y = ys[k]
-        if "delay_s" in effects:
-            y = pade_delay(t, y, effects["delay_s"])
-        if "drift" in effects:
-            y = y + effects["drift"] * np.ptp(y) * (1 - np.exp(-t / 3.0))
-        span = float(np.ptp(y)) or 1e-3
-        ym = measure(y, rng, sensor.get("white", 8e-4) * span, sensor.get("flicker", 2e-4) * span,
-                     sensor.get("lsb", 1e-6))
+        ym = position_reading(t, ys[k], effects, rng, sensor, 1e-6, lambda tt: 1 - np.exp(-tt / 3.0))
         runs[name] = {"time_s": t, "reference_m": R[k], "position_m": ym,
                       "current_A": cur[k] + current_noise_A * rng.normal(size=t.size)}
     return rig_toml(nom), runs

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .common import measure, pade_delay, rk4
+from .common import measure, position_reading, rk4
 
 IN = 0.0254
 NOMINAL = {"count": 3, "k_stack": 1.96e7, "d33": 8.15e-7, "alpha": -2.23e-7, "beta": 0.134, "gamma": 0.0755,
@@ -195,14 +195,7 @@ def campaign(effects: dict, seed: int, v_max: float = 150.0, misstate: float = 0
     sensor = sensor or {}
     runs = {}
     for k, name in enumerate(names):
-        y = ys[k]
-        if "delay_s" in effects:
-            y = pade_delay(t, y, effects["delay_s"])
-        if "drift" in effects:
-            y = y + effects["drift"] * np.ptp(y) * t / t[-1]
-        span = float(np.ptp(y)) or 1e-3
-        ym = measure(y, rng, sensor.get("white", 8e-4) * span, sensor.get("flicker", 2e-4) * span,
-                     sensor.get("lsb", 0.5e-6))
+        ym = position_reading(t, ys[k], effects, rng, sensor, 0.5e-6, lambda tt: tt / tt[-1])
         vm = measure(V[k], rng, sensor.get("volt_white", 0.3), 0.05, 0.01)
         runs[name] = {"time_s": t, "voltage_V": vm, "position_m": ym}
     return rig_toml(nom), runs

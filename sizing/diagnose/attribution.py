@@ -91,17 +91,19 @@ def _lhs(n: int, d: int, seed: int) -> np.ndarray:
     return Z
 
 
-def screen(bench, effect, seed: int = 0) -> tuple[np.ndarray, float]:
-    """(best unit point, its training score) over sizes + a Latin hypercube."""
+def screen(bench, effect, seed: int = 0, head=(), z_head=np.zeros(0)) -> tuple[np.ndarray, float]:
+    """(best unit point, its training score) over sizes + a Latin hypercube;
+    ``head`` effects (the re-calibrated parameters) held at ``z_head``."""
     train = bench.train
     d = len(effect.params)
     if d == 0:
-        return np.zeros(0), float(np.sqrt(fitting.cost(bench, [effect], np.zeros((1, 0)), train)[0]))
+        Z = np.tile(z_head, (1, 1))
+        return np.zeros(0), float(np.sqrt(fitting.cost(bench, list(head) + [effect], Z, train)[0]))
     sizes = [effect.unit(s) for s in effect.sizes_for(bench.rig, bench.model) if s]
     n = N_SCREEN * d * (4 if effect.post else 1)
     Z = np.vstack(sizes + [_lhs(n, d, seed)]) if sizes else _lhs(n, d, seed)
     Z = np.clip(Z, 0.0, 1.0)
-    scores = fitting.cost(bench, [effect], Z, train)
+    scores = fitting.cost(bench, list(head) + [effect], np.hstack([np.tile(z_head, (len(Z), 1)), Z]), train)
     k = int(np.argmin(scores))
     return Z[k], float(np.sqrt(scores[k]))
 
@@ -156,11 +158,11 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
     effects = [e for e in library(bench.kind) if e.applicable(bench.rig, bench.model)]
     base_train = float(np.sqrt(np.mean(fitting.run_nrmse(
         bench, [y[None] for y in (bench.nominal_channels()[i] for i in bench.train)], bench.train) ** 2)))
-    screened = [(e, *screen(bench, e, seed)) for e in effects]
-    screened.sort(key=lambda s: s[2])
-    fits = []
     joint = getattr(bench, "nuisance", None)      # (effect, z) re-fitted with every effect
     head, z_head = ((joint[0],), joint[1]) if joint else ((), np.zeros(0))
+    screened = [(e, *screen(bench, e, seed, head, z_head)) for e in effects]
+    screened.sort(key=lambda s: s[2])
+    fits = []
 
     def fit_with(effects, z):
         return fitting.fit(bench, head + tuple(effects), np.concatenate([z_head, z]), bench.train)
@@ -189,32 +191,34 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
             holdout_score(bench, f)
             fits.append(f)
         fits.sort(key=lambda f: f.nrmse_holdout)
-        prefer_simple(fits, seed)
     return fits
 
 
-def prefer_simple(fits, seed: int = 0) -> None:
-    """A pair ranks first only when it is significantly better on the
-    holdout (block bootstrap) than the best single of its two effects;
-    otherwise that single moves to the front (parsimony)."""
+def pick(fits, seed: int = 0):
+    """The candidate the verdict judges: fits[0], except that a pair is
+    taken only when it is significantly better on the holdout (block
+    bootstrap) than the best single of its two effects; otherwise that
+    single is (parsimony)."""
+    if not fits:
+        return None
     best = fits[0]
     if len(best.named) < 2:
-        return
+        return best
     names = {e.name for e in best.named}
     singles = [f for f in fits if len(f.named) == 1 and f.named[0].name in names]
     if singles and bootstrap_p(best.residual_blocks, singles[0].residual_blocks, seed) >= ALPHA:
-        fits.remove(singles[0])
-        fits.insert(0, singles[0])
+        return singles[0]
+    return best
 
 
-def runner_up(fits):
-    """The best candidate that is a different explanation from fits[0]."""
-    if not fits:
+def runner_up(fits, best):
+    """The best candidate that is a different explanation from ``best``."""
+    if best is None:
         return None
-    best = {e.name for e in fits[0].named}
-    for f in fits[1:]:
+    chosen = {e.name for e in best.named}
+    for f in fits:
         names = {e.name for e in f.named}
-        if not (names <= best or best <= names):
+        if f is not best and not (names <= chosen or chosen <= names):
             return f
     return None
 
@@ -226,12 +230,12 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
                 "floor_holdout": floor,
                 "reason": f"baseline holdout NRMSE {baseline_holdout:.4f} is within {GAP_FACTOR:g} x "
                           f"the noise floor {floor_holdout:.4f}"}
-    best = fits[0] if fits else None
+    best = pick(fits, seed)
     if best is None:
         return {"effect": None, "shrink_holdout": 0.0, "status": "unexplained", "reason": "no effect applies"}
     shrink = 1.0 - best.nrmse_holdout / baseline_holdout
     share = explained(baseline_holdout, best.nrmse_holdout, floor)
-    second = runner_up(fits)
+    second = runner_up(fits, best)
     p_base = bootstrap_p(best.residual_blocks, baseline_blocks, seed) if baseline_blocks is not None else 0.0
     p_second = bootstrap_p(best.residual_blocks, second.residual_blocks, seed) if second is not None else 0.0
     out = {"shrink_holdout": float(shrink), "explained_gap_energy": share, "floor_holdout": floor,

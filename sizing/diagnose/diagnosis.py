@@ -108,7 +108,10 @@ def diagnose_runs(kind: str, rig, runs, holdout: list[str], recalibrate: list[st
         recal = recal_info
         effect = nuisance(kind, bench.model, names)
         bench = bench.with_model(model)
-        bench.nuisance = (effect, effect.unit({n: recal_info["recalibrated"][n] for n in names}))
+        # effects are screened and fitted with the re-calibrated parameters
+        # free, starting from their stated values (an effect the stated
+        # nominal lacks is not hidden by a re-calibration that absorbed it)
+        bench.nuisance = (effect, effect.unit({n: recal_info["nominal"][n] for n in names}))
     sims = bench.nominal()
     nominal = bench.nominal_channels()
     all_runs = list(range(len(bench.runs)))
@@ -122,7 +125,8 @@ def diagnose_runs(kind: str, rig, runs, holdout: list[str], recalibrate: list[st
     fits = attribution.attribute(bench, base_ho, floor_ho, seed=seed, pairs=pairs)
     base_blocks = attribution.block_energy(bench, [nominal[i] for i in bench.holdout], bench.holdout)
     verdict = attribution.verdict(base_ho, floor_ho, fits, base_blocks, seed=seed)
-    best_sim = [y[0] for y in bench.simulate_channels(fits[0].effects, fits[0].z[None, :])] if fits else None
+    chosen = attribution.pick(fits, seed)
+    best_sim = [y[0] for y in bench.simulate_channels(chosen.effects, chosen.z[None, :])] if chosen else None
     if verdict["status"] in ("explained", "partial") and best_sim is not None:
         verdict["remaining"] = [{k: e[k] for k in ("run", "label", "share", "t_start_s", "t_end_s", "channel")}
                                 for e in where.gap_map(bench, best_sim, max_entries=5)]

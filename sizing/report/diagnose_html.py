@@ -15,7 +15,7 @@ def _traces(diagnosis) -> go.Figure:
     runs, channels = bench.runs, bench.channels
     titles = [f"run {r.name}{' (holdout)' if r.holdout else ' (training)'}: {c}" for r in runs for c in channels]
     fig = make_subplots(rows=len(runs) * len(channels), cols=1, shared_xaxes=False, subplot_titles=titles)
-    best_name = diagnosis.fits[0].name if diagnosis.fits else None
+    best_name = diagnosis.verdict.get("effect") or (diagnosis.fits[0].name if diagnosis.fits else None)
     nominal = bench.nominal_channels()
     best = diagnosis.extra.get("best_channels")
     scale = {"position_m": (1e3, "position, mm"), "current_A": (1.0, "current, A")}
@@ -84,7 +84,7 @@ def render(diagnosis, title: str = "Sim-to-real gap diagnosis") -> str:
     data = diagnosis.to_json()
     v = data["verdict"]
     verdict = (f"<b>{v['status']}</b>: <b>{html.escape(v['effect'])}</b>, holdout measure "
-               f"{diagnosis.baseline_holdout:.4f} &rarr; {diagnosis.fits[0].nrmse_holdout:.4f} "
+               f"{diagnosis.baseline_holdout:.4f} &rarr; {diagnosis.baseline_holdout * (1 - v['shrink_holdout']):.4f} "
                f"(shrink {100 * v['shrink_holdout']:.0f} %)" if v["effect"] else f"<b>{v['status']}</b>")
     second = v.get("runner_up")
     sep = v.get("separation")

@@ -14,7 +14,8 @@
    best screened point); judge every effect on the holdout runs only.
 4. Pairs: when no single effect explains the gap, the best pairs of the
    top singles are fitted together; a pair ranks first only when it is
-   significantly better than the best of its two singles (same bootstrap).
+   significantly better than the best of its two singles (same bootstrap)
+   and removes >= PAIR_GAIN of the gap energy that single leaves above the floor.
 5. Verdict (all measures are the combined measure of bench.py, holdout runs):
    - "no_significant_gap": baseline <= GAP_FACTOR x the noise floor;
    - "unexplained" (named nothing) as well when the baseline is within
@@ -194,11 +195,15 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
     return fits
 
 
-def pick(fits, seed: int = 0):
+PAIR_GAIN = 0.25   # a pair must remove this share of what its best single leaves above the floor
+
+
+def pick(fits, seed: int = 0, floor: float = 0.0):
     """The candidate the verdict judges: fits[0], except that a pair is
     taken only when it is significantly better on the holdout (block
-    bootstrap) than the best single of its two effects; otherwise that
-    single is (parsimony)."""
+    bootstrap) than the best single of its two effects and removes at least
+    PAIR_GAIN of the gap energy that single leaves above the floor;
+    otherwise that single is (parsimony)."""
     if not fits:
         return None
     best = fits[0]
@@ -206,8 +211,11 @@ def pick(fits, seed: int = 0):
         return best
     names = {e.name for e in best.named}
     singles = [f for f in fits if len(f.named) == 1 and f.named[0].name in names]
-    if singles and bootstrap_p(best.residual_blocks, singles[0].residual_blocks, seed) >= ALPHA:
-        return singles[0]
+    if singles:
+        single = singles[0]
+        gain = explained(single.nrmse_holdout, best.nrmse_holdout, floor)
+        if bootstrap_p(best.residual_blocks, single.residual_blocks, seed) >= ALPHA or gain < PAIR_GAIN:
+            return single
     return best
 
 
@@ -230,7 +238,7 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
                 "floor_holdout": floor,
                 "reason": f"baseline holdout NRMSE {baseline_holdout:.4f} is within {GAP_FACTOR:g} x "
                           f"the noise floor {floor_holdout:.4f}"}
-    best = pick(fits, seed)
+    best = pick(fits, seed, floor)
     if best is None:
         return {"effect": None, "shrink_holdout": 0.0, "status": "unexplained", "reason": "no effect applies"}
     shrink = 1.0 - best.nrmse_holdout / baseline_holdout

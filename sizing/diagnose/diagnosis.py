@@ -125,7 +125,7 @@ def diagnose_runs(kind: str, rig, runs, holdout: list[str], recalibrate: list[st
     fits = attribution.attribute(bench, base_ho, floor_ho, seed=seed, pairs=pairs)
     base_blocks = attribution.block_energy(bench, [nominal[i] for i in bench.holdout], bench.holdout)
     verdict = attribution.verdict(base_ho, floor_ho, fits, base_blocks, seed=seed)
-    chosen = attribution.pick(fits, seed)
+    chosen = attribution.pick(fits, seed, attribution.total_floor(floor_ho))
     best_sim = [y[0] for y in bench.simulate_channels(chosen.effects, chosen.z[None, :])] if chosen else None
     if verdict["status"] in ("explained", "partial") and best_sim is not None:
         verdict["remaining"] = [{k: e[k] for k in ("run", "label", "share", "t_start_s", "t_end_s", "channel")}

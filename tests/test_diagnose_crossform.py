@@ -5,6 +5,7 @@ logged channel; bad input. A few short DC campaigns (the full cross-form
 set is the benchmark, not a test)."""
 from __future__ import annotations
 
+import json
 import subprocess
 import sys
 from pathlib import Path
@@ -33,13 +34,18 @@ def test_lugre_friction_in_a_stiff_loop_is_named_from_the_current(tmp_path):
     shrinks more than the position does (the loop hides friction in the
     position)."""
     folder = _campaign(tmp_path, {"friction": cases.LUGRE_B}, seed=7)
-    d = api.diagnose(folder, ["stairs_b"])
+    d = api.diagnose(folder, ["stairs_b"], tmp_path / "out")
     assert d.bench.channels == ("position_m", "current_A")
     assert d.verdict["effect"] == "coulomb_friction"
     assert d.verdict["status"] in ("explained", "partial")
     c = d.to_json()["candidates"][0]
     assert set(c["shrink_holdout_channels"]) == {"position_m", "current_A"}
     assert c["shrink_holdout_channels"]["current_A"] > 0.3
+    data = json.loads((tmp_path / "out" / "diagnosis.json").read_text())
+    assert data["verdict"]["status"] == d.verdict["status"] and data["verdict"]["remaining"]
+    assert {w["channel"] for w in data["where"]} == {"position_m", "current_A"}
+    page = (tmp_path / "out" / "diagnosis.html").read_text()
+    assert "current, A" in page and "Separation test" in page and "Runner-up" in page
 
 
 def test_null_campaign_from_the_second_generator_names_nothing(tmp_path):

@@ -12,6 +12,15 @@ case names an effect in <= 5 %, median holdout shrink of the correctly
 named cases >= 70 %, under a minute per campaign.
 
     python benchmarks/diagnose_benchmark.py [--quick] [--json FILE]
+    python benchmarks/diagnose_benchmark.py --crossform [--json FILE]
+
+--crossform runs the campaigns of the second generator (benchmarks/crossform:
+its own integrator and its own forms of the effects, a mis-stated nominal,
+effects outside the library, white + 1/f + quantisation noise) through
+`sizing diagnose` as a user would (campaign folders, default options) and
+reports its confusion matrix. Targets (issue 10): right effect named
+(explained or partial) >= 90 %, no null case named, no outside effect
+explained, median holdout shrink >= 80 %.
 
 Leakage needs a pressurised oil column; on the unloaded seed prototype it
 is not observable (the withheld-effect check shows it), so that rig is run
@@ -145,12 +154,92 @@ RIG_KINDS = [{"name": "piezo-table3-unloaded", "kind": "piezohydraulic"},
              {"name": "dc-seed-unloaded", "kind": "dc_motor"}, {"name": "dc-seed-484N", "kind": "dc_motor"}]
 
 
+def _same(a: str, b: str) -> bool:
+    return set(a.split("+")) == set(b.split("+"))
+
+
+def run_crossform(verbose: bool = True, only: str = "") -> dict:
+    sys.path.insert(0, str(ROOT))
+    from benchmarks.crossform import cases as xcases
+    from benchmarks.crossform.common import write_campaign
+    from sizing import api
+
+    rows = []
+    for technology, table in (("dc_motor", xcases.DC), ("piezohydraulic", xcases.PIEZO)):
+        for k, case in enumerate(table):
+            if only and only not in case[0]:
+                continue
+            start = time.perf_counter()
+            rig, runs, holdout = xcases.generate(case, SEED * 100 + k, technology)
+            with tempfile.TemporaryDirectory() as folder:
+                write_campaign(Path(folder), rig, runs)
+                generated = time.perf_counter() - start
+                d = api.diagnose(folder, [holdout])
+            v = d.verdict
+            truth = case[1]
+            predicted = v["effect"] or NONE
+            if truth == NONE:
+                ok = predicted == NONE
+            elif truth.startswith("outside:"):
+                ok = v["status"] != "explained"
+            else:
+                ok = _same(predicted, truth) and v["status"] in ("explained", "partial")
+            rows.append({"case": case[0], "technology": technology, "truth": truth, "predicted": predicted,
+                         "status": v["status"], "first": d.fits[0].name if d.fits else NONE,
+                         "shrink": float(v.get("shrink_holdout", 0.0)),
+                         "shrink_first": float(1 - d.fits[0].nrmse_holdout / d.baseline_holdout) if d.fits else 0.0,
+                         "nrmse_baseline": d.baseline_holdout, "noise_floor": d.noise_floor_holdout,
+                         "seconds": d.seconds, "seconds_generate": generated, "ok": ok})
+            if verbose:
+                print(f"{'ok ' if ok else 'BAD'} {case[0]:<20} {truth:<32} -> {v['status']:<18} {predicted:<30} "
+                      f"first {rows[-1]['first']:<28} shrink {100 * rows[-1]['shrink_first']:5.1f} %  "
+                      f"{d.seconds:.1f} s", flush=True)
+    effect = [r for r in rows if r["truth"] != NONE and not r["truth"].startswith("outside:")]
+    null = [r for r in rows if r["truth"] == NONE]
+    outside = [r for r in rows if r["truth"].startswith("outside:")]
+    right = [r for r in effect if r["ok"]]
+    summary = {"n_effect_cases": len(effect), "named_right": len(right),
+               "named_right_rate": len(right) / max(len(effect), 1),
+               "right_first": sum(_same(r["first"], r["truth"]) for r in effect),
+               "null_named": sum(r["predicted"] != NONE for r in null), "n_null": len(null),
+               "outside_explained": sum(r["status"] == "explained" for r in outside), "n_outside": len(outside),
+               "median_shrink_right": float(np.median([r["shrink"] for r in right])) if right else float("nan"),
+               "seconds_per_campaign": {"median": float(np.median([r["seconds"] for r in rows])),
+                                        "max": float(np.max([r["seconds"] for r in rows]))},
+               "confusion": crossform_table(rows)}
+    return {"summary": summary, "cases": rows}
+
+
+def crossform_table(rows) -> str:
+    """Rows: true effect; columns: status and the named effect."""
+    lines = ["| case | truth | status | named | first ranked | holdout shrink of the first |", "|---|---|---|---|---|---|"]
+    for r in rows:
+        lines.append(f"| {r['case']} | {r['truth']} | {r['status']} | {r['predicted']} | {r['first']} | "
+                     f"{100 * r['shrink_first']:.0f} % |")
+    return "\n".join(lines)
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="one size per effect, one null per rig")
     parser.add_argument("--json", type=Path, help="write every case and the summary here")
+    parser.add_argument("--crossform", action="store_true", help="the second generator's campaigns instead")
+    parser.add_argument("--only", default="", help="with --crossform: only the cases whose name contains this")
     args = parser.parse_args(argv)
     start = time.perf_counter()
+    if args.crossform:
+        result = run_crossform(only=args.only)
+        s = result["summary"]
+        print(s["confusion"])
+        print(f"right effect named (explained or partial): {s['named_right']} of {s['n_effect_cases']}; "
+              f"ranked first: {s['right_first']}; null cases named: {s['null_named']} of {s['n_null']}; "
+              f"outside effects explained: {s['outside_explained']} of {s['n_outside']}; median holdout shrink "
+              f"when right: {100 * s['median_shrink_right']:.1f} %; seconds per campaign: median "
+              f"{s['seconds_per_campaign']['median']:.1f}, max {s['seconds_per_campaign']['max']:.1f}; "
+              f"total {time.perf_counter() - start:.0f} s")
+        if args.json:
+            args.json.write_text(json.dumps(result, indent=2, default=float))
+        return 0
     result = run(quick=args.quick)
     s = result["summary"]
     print()

@@ -158,7 +158,8 @@ def catalog_add(kind: str = typer.Argument(..., help="Part kind: stack, fluid, s
 def diagnose(campaign: Path = typer.Argument(..., help="Campaign folder: rig.toml and runs/NAME.csv (CONTRACTS.md)."),
              holdout: Optional[List[str]] = typer.Option(None, "--holdout", help="Run (CSV name without .csv) never used for fitting; repeatable. Required unless --check."),
              out: Path = typer.Option(Path("diagnose-out"), "--out", help="Folder for diagnosis.json and diagnosis.html."),
-             recalibrate: Optional[List[str]] = typer.Option(None, "--recalibrate", help="Re-fit this nominal parameter on the training runs first (piezo: d33, wide_friction, narrow_friction; DC: c1, c2); repeatable."),
+             recalibrate: Optional[List[str]] = typer.Option(None, "--recalibrate", help="Re-fit this nominal parameter on the training runs first, and jointly with every effect (piezo: d33, wide_friction, narrow_friction; DC: c1, c2); repeatable. Default: d33 (piezo), c1 and c2 (DC)."),
+             no_recalibrate: bool = typer.Option(False, "--no-recalibrate", help="Judge the effects against the stated nominal, without re-calibration."),
              check: bool = typer.Option(False, "--check", help="Inject each library effect into the campaign's own excitations, diagnose blind and print the confusion matrix."),
              seed: int = typer.Option(0, "--seed", help="Seed of the screening and of --check's noise.")):
     """Say where the model and the hardware disagree, which unmodelled effect explains it, and how far the gap shrinks."""
@@ -173,15 +174,15 @@ def diagnose(campaign: Path = typer.Argument(..., help="Campaign folder: rig.tom
         return
     if not holdout:
         raise InputError(str(campaign), "--holdout", "expected at least one --holdout RUN (the runs never used for fitting)")
-    result = api.diagnose(campaign, holdout, out, recalibrate=recalibrate, seed=seed)
+    result = api.diagnose(campaign, holdout, out, recalibrate=[] if no_recalibrate else (recalibrate or None), seed=seed)
     v = result.verdict
     typer.echo(f"baseline holdout NRMSE {result.baseline_holdout:.4f} (noise floor {result.noise_floor_holdout:.4f})")
     for f in result.fits[:5]:
         typer.echo(f"  {f.name:<40} holdout NRMSE {f.nrmse_holdout:.4f}  shrink {100 * (1 - f.nrmse_holdout / result.baseline_holdout):5.1f} %")
     if v["effect"]:
-        typer.echo(f"verdict: {v['effect']} (holdout shrink {100 * v['shrink_holdout']:.0f} %)")
+        typer.echo(f"verdict: {v['status']}: {v['effect']} (holdout shrink {100 * v['shrink_holdout']:.0f} %): {v['reason']}")
     else:
-        typer.echo(f"verdict: {'no significant gap' if v['status'] == 'no_significant_gap' else 'unexplained'}: {v['reason']}")
+        typer.echo(f"verdict: {v['status']}: {v['reason']}")
     typer.echo(f"wrote {out / 'diagnosis.json'} and {out / 'diagnosis.html'}")
 
 

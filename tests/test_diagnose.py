@@ -93,7 +93,10 @@ def test_sensor_noise_alone_gives_no_gap(piezo_rig):
 def test_injected_piezo_effect_is_named(piezo_rig, name, values):
     effect = get("piezohydraulic", name)
     runs = synth.synthesize("piezohydraulic", piezo_rig, _inputs(), [effect], [values], noise=synth.Noise(seed=3))
-    d = diagnose_runs("piezohydraulic", piezo_rig, runs, ["steps"], pairs=False)
+    # issue 10: re-calibration (d33) is on by default and takes part of a
+    # creep or friction gap before any effect is blamed; this test measures
+    # the shrink against the stated nominal, so it turns it off
+    d = diagnose_runs("piezohydraulic", piezo_rig, runs, ["steps"], pairs=False, recalibrate=[])
     assert d.verdict["effect"] == name
     assert d.verdict["shrink_holdout"] > 0.7
     fitted = d.fits[0].params
@@ -123,8 +126,11 @@ def test_dc_sensor_vibration_campaign():
 
 def test_cli_writes_the_contract(tmp_path):
     out = tmp_path / "out"
+    # issue 10: re-calibration is on by default and takes part of the gap
+    # before any effect is blamed; the shrink asserted below is against the
+    # stated nominal, so this run turns it off
     proc = subprocess.run([sys.executable, "-m", "sizing.cli", "diagnose", str(PIEZO), "--holdout", "steps",
-                           "--out", str(out)], capture_output=True, text=True)
+                           "--out", str(out), "--no-recalibrate"], capture_output=True, text=True)
     assert proc.returncode == 0, proc.stderr
     data = json.loads((out / "diagnosis.json").read_text())
     assert set(data["baseline"]["nrmse"]) == {"ramp", "steps"}
@@ -139,6 +145,7 @@ def test_cli_writes_the_contract(tmp_path):
         assert set(c) >= {"effect", "params", "nrmse_train", "nrmse_holdout", "shrink_holdout"}
         assert c["shrink_holdout"] == pytest.approx(1 - c["nrmse_holdout"] / data["baseline"]["nrmse_holdout"])
     assert data["verdict"]["effect"] == "seal_stick_slip"
+    assert data["verdict"]["status"] == "explained"
     assert data["verdict"]["shrink_holdout"] > 0.7
     assert data["candidates"][0]["effect"] == "seal_stick_slip"
     page = (out / "diagnosis.html").read_text()

@@ -3,18 +3,37 @@
 1. Noise floor of each run, from the data: the white part of the position
    measurement (second differences, robust) plus the logged input's noise
    carried through the run's gain (position span / input span).
+   Model-form floor: what a well-fitted nominal of another form leaves
+   (FORM_FLOOR, of the span; stated assumption, measured on the null cases
+   of the cross-form benchmark). The floor an effect is judged against is
+   floor = sqrt(noise^2 + FORM_FLOOR^2).
 2. Screen: every effect of the library at its two realistic sizes and a
    seeded Latin-hypercube of parameter sets, one simulator batch per
    effect, scored on the training runs.
 3. Fit the promising effects (least squares on the training runs, from the
    best screened point); judge every effect on the holdout runs only.
 4. Pairs: when no single effect explains the gap, the best pairs of the
-   top singles are fitted together.
-5. Verdict: "no significant gap" when the baseline holdout NRMSE is within
-   GAP_FACTOR times the noise floor; an effect when it removes at least
-   EXPLAINED of the gap energy above the noise floor on the holdout runs
-   and leaves at most RESIDUAL_FACTOR times the noise floor (what it leaves
-   must look like noise, not like a smaller gap); otherwise "unexplained". Both null verdicts name no effect.
+   top singles are fitted together; a pair ranks first only when it is
+   significantly better than the best of its two singles (same bootstrap)
+   and removes >= PAIR_GAIN of the gap energy that single leaves above the floor.
+5. Verdict (all measures are the combined measure of bench.py, holdout runs):
+   - "no_significant_gap": baseline <= GAP_FACTOR x the noise floor;
+   - "unexplained" (named nothing) as well when the baseline is within
+     GAP_FACTOR x the floor (noise and model form together);
+   - "explained": the best removes >= EXPLAINED of the gap energy above the
+     floor, leaves <= RESIDUAL_FACTOR x floor, is significantly better
+     than the baseline and separated from the runner-up (the best
+     candidate that is a different explanation: neither a subset nor a
+     superset of its effects);
+   - "partial": the best removes >= PARTIAL of the gap energy above the
+     floor and is significantly better than the baseline, but one of the
+     other conditions fails; ``remaining`` says where its residual is;
+   - "unexplained" otherwise. Both null verdicts name no effect.
+   Significance (separation test): moving-block bootstrap over the holdout
+   runs cut into BLOCK_S blocks; the statistic is the difference of the
+   weighted squared residual energy of two candidates; B = N_BOOT
+   resamples (seeded); "significant" when fewer than ALPHA of the
+   resampled differences favour the other candidate.
 """
 from __future__ import annotations
 
@@ -27,8 +46,13 @@ from .effects import library
 from .inputs import noise_sigma
 
 GAP_FACTOR = 1.5
-EXPLAINED = 0.8
-RESIDUAL_FACTOR = 2.0  # an explaining effect leaves at most this times the noise floor
+FORM_FLOOR = 0.002     # NRMSE a well-fitted nominal of another form leaves (assumed, see README)
+EXPLAINED = 0.75
+PARTIAL = 0.3
+RESIDUAL_FACTOR = 2.5  # an explaining effect leaves at most this times the floor
+BLOCK_S = 0.1
+N_BOOT = 1000
+ALPHA = 0.05
 N_SCREEN = 10          # screened parameter sets per effect parameter
 TOP_FIT = 4            # effects fitted at least
 TOP_PAIRS = 3          # singles combined into pairs
@@ -57,33 +81,68 @@ def noise_floor(bench, replicas: int = 3, seed: int = 0) -> np.ndarray:
     return np.array(out)
 
 
+def total_floor(noise: float) -> float:
+    """Noise floor and model-form floor together."""
+    return float(np.hypot(noise, FORM_FLOOR))
+
+
 def _lhs(n: int, d: int, seed: int) -> np.ndarray:
     rng = np.random.default_rng(seed)
     Z = (np.argsort(rng.random((d, n)), axis=1).T + rng.random((n, d))) / n
     return Z
 
 
-def screen(bench, effect, seed: int = 0) -> tuple[np.ndarray, float]:
-    """(best unit point, its training score) over sizes + a Latin hypercube."""
+def screen(bench, effect, seed: int = 0, head=(), z_head=np.zeros(0)) -> tuple[np.ndarray, float]:
+    """(best unit point, its training score) over sizes + a Latin hypercube;
+    ``head`` effects (the re-calibrated parameters) held at ``z_head``."""
     train = bench.train
     d = len(effect.params)
     if d == 0:
-        return np.zeros(0), float(np.sqrt(fitting.cost(bench, [effect], np.zeros((1, 0)), train)[0]))
+        Z = np.tile(z_head, (1, 1))
+        return np.zeros(0), float(np.sqrt(fitting.cost(bench, list(head) + [effect], Z, train)[0]))
     sizes = [effect.unit(s) for s in effect.sizes_for(bench.rig, bench.model) if s]
     n = N_SCREEN * d * (4 if effect.post else 1)
     Z = np.vstack(sizes + [_lhs(n, d, seed)]) if sizes else _lhs(n, d, seed)
     Z = np.clip(Z, 0.0, 1.0)
-    scores = fitting.cost(bench, [effect], Z, train)
+    scores = fitting.cost(bench, list(head) + [effect], np.hstack([np.tile(z_head, (len(Z), 1)), Z]), train)
     k = int(np.argmin(scores))
     return Z[k], float(np.sqrt(scores[k]))
 
 
 def holdout_score(bench, fit: fitting.EffectFit) -> None:
     runs = bench.holdout
-    Y = bench.simulate(fit.effects, fit.z[None, :], runs)
+    Y = bench.simulate_channels(fit.effects, fit.z[None, :], runs)
     per_run = fitting.run_nrmse(bench, Y, runs)[0]
     fit.nrmse_runs = {bench.runs[i].name: float(v) for i, v in zip(runs, per_run)}
     fit.nrmse_holdout = float(np.mean(per_run))
+    E = bench.channel_nrmse(Y, runs)[0]               # (n_runs, n_ch)
+    fit.nrmse_channels = {c: float(np.mean(E[:, k])) for k, c in enumerate(bench.channels)}
+    fit.residual_blocks = block_energy(bench, [y[0] for y in Y], runs)
+
+
+def block_energy(bench, sims, runs) -> np.ndarray:
+    """Weighted squared residual energy of each BLOCK_S block of the runs
+    (sims: (n_ch, n) per run), one array over all runs."""
+    out = []
+    for i, S in zip(runs, sims):
+        r = bench.runs[i]
+        e2 = np.sum(bench.weights(i)[:, None] * ((bench.measured(i) - S) / bench.spans(i)[:, None]) ** 2, axis=0)
+        dt = float(np.median(np.diff(r.t)))
+        size = max(int(round(BLOCK_S / dt)), 1)
+        n_blocks = max(len(e2) // size, 1)
+        out.append(np.array([e2[k * size:(k + 1) * size].sum() for k in range(n_blocks)]) / len(e2))
+    return np.concatenate(out)
+
+
+def bootstrap_p(better: np.ndarray, worse: np.ndarray, seed: int = 0) -> float:
+    """One-sided bootstrap p-value that ``better`` (block energies) is not
+    smaller than ``worse``: share of block resamples in which it is not."""
+    d = np.asarray(worse) - np.asarray(better)
+    if d.size == 0:
+        return 1.0
+    rng = np.random.default_rng(seed)
+    idx = rng.integers(0, d.size, size=(N_BOOT, d.size))
+    return float(np.mean(d[idx].sum(axis=1) <= 0.0))
 
 
 def explained(base: float, after: float, floor: float) -> float:
@@ -99,49 +158,128 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
     verdict dict)."""
     effects = [e for e in library(bench.kind) if e.applicable(bench.rig, bench.model)]
     base_train = float(np.sqrt(np.mean(fitting.run_nrmse(
-        bench, [y[None, :] for y in (bench.nominal()[i] for i in bench.train)], bench.train) ** 2)))
-    screened = [(e, *screen(bench, e, seed)) for e in effects]
+        bench, [y[None] for y in (bench.nominal_channels()[i] for i in bench.train)], bench.train) ** 2)))
+    joint = getattr(bench, "nuisance", None)      # (effect, z) re-fitted with every effect
+    head, z_head = ((joint[0],), joint[1]) if joint else ((), np.zeros(0))
+    screened = [(e, *screen(bench, e, seed, head, z_head)) for e in effects]
     screened.sort(key=lambda s: s[2])
     fits = []
+
+    def fit_with(effects, z):
+        return fitting.fit(bench, head + tuple(effects), np.concatenate([z_head, z]), bench.train)
+
     for rank, (effect, z0, score) in enumerate(screened):
         promising = rank < TOP_FIT or score < 0.9 * base_train
         if promising:
-            f = fitting.fit(bench, [effect], z0, bench.train)
+            f = fit_with([effect], z0)
         else:
             f = fitting.EffectFit((effect,), z0, score, message="screened only")
         holdout_score(bench, f)
         fits.append(f)
     fits.sort(key=lambda f: f.nrmse_holdout)
     best = fits[0]
-    if pairs and explained(baseline_holdout, best.nrmse_holdout, floor_holdout) < EXPLAINED:
+    floor = total_floor(floor_holdout)
+    enough = (explained(baseline_holdout, best.nrmse_holdout, floor) >= EXPLAINED
+              and best.nrmse_holdout <= RESIDUAL_FACTOR * floor)
+    if pairs and not enough:
         tops = [f for f in fits[:TOP_PAIRS]]
         for a, b in itertools.combinations(tops, 2):
-            if a.effects[0].post and b.effects[0].post is False:
-                a, b = b, a          # model effects first, measurement effects after
-            f = fitting.fit(bench, a.effects + b.effects, np.concatenate([a.z, b.z]), bench.train)
+            ea, eb = a.named, b.named
+            za, zb = a.z[len(a.z) - sum(len(e.params) for e in ea):], b.z[len(b.z) - sum(len(e.params) for e in eb):]
+            if ea[0].post and eb[0].post is False:
+                ea, eb, za, zb = eb, ea, zb, za          # model effects first, measurement effects after
+            f = fit_with(ea + eb, np.concatenate([za, zb]))
             holdout_score(bench, f)
             fits.append(f)
         fits.sort(key=lambda f: f.nrmse_holdout)
     return fits
 
 
-def verdict(baseline_holdout: float, floor_holdout: float, fits) -> dict:
+PAIR_GAIN = 0.25   # a pair must remove this share of what its best single leaves above the floor
+
+
+def pick(fits, seed: int = 0, floor: float = 0.0):
+    """The candidate the verdict judges: fits[0], except that a pair is
+    taken only when it is significantly better on the holdout (block
+    bootstrap) than the best single of its two effects and removes at least
+    PAIR_GAIN of the gap energy that single leaves above the floor;
+    otherwise that single is (parsimony)."""
+    if not fits:
+        return None
+    best = fits[0]
+    if len(best.named) < 2:
+        return best
+    names = {e.name for e in best.named}
+    singles = [f for f in fits if len(f.named) == 1 and f.named[0].name in names]
+    if singles:
+        single = singles[0]
+        gain = explained(single.nrmse_holdout, best.nrmse_holdout, floor)
+        if bootstrap_p(best.residual_blocks, single.residual_blocks, seed) >= ALPHA or gain < PAIR_GAIN:
+            return single
+    return best
+
+
+def runner_up(fits, best):
+    """The best candidate that is a different explanation from ``best``."""
+    if best is None:
+        return None
+    chosen = {e.name for e in best.named}
+    for f in fits:
+        names = {e.name for e in f.named}
+        if f is not best and not (names <= chosen or chosen <= names):
+            return f
+    return None
+
+
+def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks=None, seed: int = 0) -> dict:
+    floor = total_floor(floor_holdout)
     if baseline_holdout <= GAP_FACTOR * floor_holdout:
         return {"effect": None, "shrink_holdout": 0.0, "status": "no_significant_gap",
+                "floor_holdout": floor,
                 "reason": f"baseline holdout NRMSE {baseline_holdout:.4f} is within {GAP_FACTOR:g} x "
                           f"the noise floor {floor_holdout:.4f}"}
-    best = fits[0] if fits else None
-    if best is not None:
-        shrink = 1.0 - best.nrmse_holdout / baseline_holdout
-        share = explained(baseline_holdout, best.nrmse_holdout, floor_holdout)
-        if shrink > 0 and share >= EXPLAINED and best.nrmse_holdout <= RESIDUAL_FACTOR * floor_holdout:
-            return {"effect": best.name, "shrink_holdout": float(shrink), "status": "explained",
-                    "explained_gap_energy": share,
-                    "reason": f"{best.name} removes {100 * share:.0f} % of the holdout gap energy above the noise floor"}
-    share = explained(baseline_holdout, best.nrmse_holdout, floor_holdout) if best else 0.0
-    return {"effect": None, "shrink_holdout": 0.0, "status": "unexplained",
-            "explained_gap_energy": share,
-            "reason": f"no effect of the library removes {100 * EXPLAINED:.0f} % of the holdout gap energy "
-                      f"above the noise floor and leaves a gap within {RESIDUAL_FACTOR:g} x the noise floor "
-                      f"(best: {best.name if best else 'none'}, {100 * share:.0f} %, holdout NRMSE "
-                      f"{best.nrmse_holdout if best else float('nan'):.4f})"}
+    best = pick(fits, seed, floor)
+    if best is None:
+        return {"effect": None, "shrink_holdout": 0.0, "status": "unexplained", "reason": "no effect applies"}
+    shrink = 1.0 - best.nrmse_holdout / baseline_holdout
+    share = explained(baseline_holdout, best.nrmse_holdout, floor)
+    second = runner_up(fits, best)
+    p_base = bootstrap_p(best.residual_blocks, baseline_blocks, seed) if baseline_blocks is not None else 0.0
+    p_second = bootstrap_p(best.residual_blocks, second.residual_blocks, seed) if second is not None else 0.0
+    out = {"shrink_holdout": float(shrink), "explained_gap_energy": share, "floor_holdout": floor,
+           "runner_up": None if second is None else {
+               "effect": second.name, "shrink_holdout": float(1.0 - second.nrmse_holdout / baseline_holdout),
+               "explained_gap_energy": explained(baseline_holdout, second.nrmse_holdout, floor)},
+           "separation": {"test": f"block bootstrap over holdout segments ({BLOCK_S:g} s blocks, "
+                                  f"{N_BOOT} resamples, one-sided)",
+                          "p_vs_baseline": p_base, "p_vs_runner_up": p_second, "alpha": ALPHA}}
+    if baseline_holdout <= GAP_FACTOR * floor:
+        out.update(effect=None, shrink_holdout=0.0, status="unexplained",
+                   reason=f"the gap ({baseline_holdout:.4f}) is above the noise floor but within {GAP_FACTOR:g} x "
+                          f"the model-form floor {floor:.4f}: no effect is blamed for what a nominal of "
+                          f"another form leaves")
+        return out
+    significant = shrink > 0 and p_base < ALPHA
+    separated = p_second < ALPHA
+    leaves = best.nrmse_holdout <= RESIDUAL_FACTOR * floor
+    if significant and share >= EXPLAINED and separated and leaves:
+        out.update(effect=best.name, status="explained",
+                   reason=f"{best.name} removes {100 * share:.0f} % of the holdout gap energy above the floor, "
+                          f"separated from {second.name if second else 'every other effect'} (p = {p_second:.3f})")
+        return out
+    if significant and share >= PARTIAL:
+        why = []
+        if share < EXPLAINED:
+            why.append(f"it removes {100 * share:.0f} % < {100 * EXPLAINED:.0f} % of the gap energy above the floor")
+        if not separated:
+            why.append(f"not separated from {second.name} (p = {p_second:.3f})")
+        if not leaves:
+            why.append(f"it leaves {best.nrmse_holdout:.4f} > {RESIDUAL_FACTOR:g} x the floor {floor:.4f}")
+        out.update(effect=best.name, status="partial",
+                   reason=f"{best.name} explains part of the gap: " + "; ".join(why))
+        return out
+    out.update(effect=None, shrink_holdout=0.0, status="unexplained",
+               reason=f"no effect of the library removes a significant part ({100 * PARTIAL:.0f} %) of the holdout "
+                      f"gap energy above the floor (best: {best.name}, {100 * share:.0f} %, p vs baseline "
+                      f"{p_base:.3f})")
+    return out

@@ -6,6 +6,15 @@ smoothed and made monotone between significant reversals (inputs.py)
 before it drives the model, because the Bouc-Wen state reacts to every
 reversal of its input and raw sensor noise would ratchet it. A DC motor reference is the
 controller's own digital command and is used as logged.
+
+Channels: position always; a dc_motor campaign whose every run logs
+``current_A`` is also judged on the current (the simulator's controller
+output). The combined measure of a run is
+    C = sqrt(mean_c (f_pos / f_c)^2 NRMSE_c^2)
+where f_c is the white-noise floor of channel c (robust rms of its second
+differences over its span, from the data): each channel is normalised by its
+own noise floor and the result is scaled back to position NRMSE units, so a
+position-only campaign keeps C = NRMSE of the position.
 """
 from __future__ import annotations
 
@@ -17,7 +26,9 @@ from ..sim import dc_motor as dc_sim
 from ..sim import piezohydraulic as ph_sim
 from ..sim.rigs import dc_model, piezo_model
 from .inputs import describe as describe_treatment
-from .inputs import treat_voltage
+from .inputs import noise_sigma, treat_voltage
+
+CHANNEL_UNITS = {"position_m": "m", "current_A": "A"}
 
 @dataclass
 class PreparedRun:
@@ -27,6 +38,7 @@ class PreparedRun:
     u: np.ndarray        # (n,) treated input that drives the model
     y: np.ndarray        # (n,) m, measured position from rest
     holdout: bool
+    current: np.ndarray | None = None   # (n,) A, logged controller current (dc_motor)
 
     @property
     def span(self) -> float:
@@ -52,9 +64,60 @@ class Bench:
         for run in runs:
             u_raw = run["voltage_V"] if kind == "piezohydraulic" else run["reference_m"]
             u, self.input_treatment = treat_input(kind, run.time, u_raw)
+            current = run.columns.get("current_A") if kind == "dc_motor" else None
             self.runs.append(PreparedRun(run.name, np.asarray(run.time, float), np.asarray(u_raw, float), u,
-                                         np.asarray(run["position_m"], float), run.name in holdout))
+                                         np.asarray(run["position_m"], float), run.name in holdout,
+                                         None if current is None else np.asarray(current, float)))
+        has_current = bool(self.runs) and all(r.current is not None for r in self.runs)
+        self.channels = ("position_m", "current_A") if has_current else ("position_m",)
         self._nominal = None
+        self._weights = None
+
+    def measured(self, i: int) -> np.ndarray:
+        """(n_ch, n) measured channels of run i."""
+        r = self.runs[i]
+        return np.vstack([r.y] + ([r.current] if len(self.channels) > 1 else []))
+
+    def spans(self, i: int) -> np.ndarray:
+        """(n_ch,) max - min of each measured channel of run i (1 if flat)."""
+        return np.array([float(np.ptp(c)) or 1.0 for c in self.measured(i)])
+
+    def channel_floor(self, i: int) -> np.ndarray:
+        """(n_ch,) white-noise NRMSE floor of each channel of run i (data only)."""
+        return np.maximum([noise_sigma(c) for c in self.measured(i)], 1e-12) / self.spans(i)
+
+    def weights(self, i: int) -> np.ndarray:
+        """(n_ch,) weights of the combined measure (module docstring)."""
+        if self._weights is None:
+            self._weights = {}
+        if i not in self._weights:
+            f = self.channel_floor(i)
+            self._weights[i] = (f[0] / f) ** 2 / len(f)
+        return self._weights[i]
+
+    def channel_nrmse(self, Yc, runs) -> np.ndarray:
+        """(n_cand, n_runs, n_ch) NRMSE of each channel; Yc from simulate_channels."""
+        out = np.empty((Yc[0].shape[0], len(runs), len(self.channels)))
+        for j, (i, Y) in enumerate(zip(runs, Yc)):
+            M = self.measured(i)
+            out[:, j, :] = np.sqrt(np.mean((M[None] - Y) ** 2, axis=2)) / self.spans(i)[None, :]
+        return out
+
+    def combined_nrmse(self, Yc, runs) -> np.ndarray:
+        """(n_cand, n_runs) combined measure of each run (module docstring)."""
+        E = self.channel_nrmse(Yc, runs)
+        W = np.array([self.weights(i) for i in runs])
+        return np.sqrt(np.sum(W[None] * E ** 2, axis=2))
+
+    def residuals(self, Yc, runs) -> np.ndarray:
+        """(n_cand, m) weighted residuals whose sum of squares over a run is
+        its combined measure squared."""
+        parts = []
+        for i, Y in zip(runs, Yc):
+            M = self.measured(i)
+            scale = (np.sqrt(self.weights(i)) / self.spans(i))[None, :, None] / np.sqrt(M.shape[1])
+            parts.append(((M[None] - Y) * scale).reshape(Y.shape[0], -1))
+        return np.concatenate(parts, axis=1)
 
     @property
     def train(self) -> list[int]:
@@ -72,20 +135,30 @@ class Bench:
         return other
 
     def _raw(self, model, run: PreparedRun) -> np.ndarray:
-        if self.kind == "piezohydraulic":
-            return ph_sim.simulate(model, run.t, run.u, run.t)["position_m"]
-        return dc_sim.simulate(model, run.t, run.u, run.t)["position_m"]
+        """(n_cand, n_ch, n) simulated channels."""
+        sim = ph_sim.simulate if self.kind == "piezohydraulic" else dc_sim.simulate
+        out = sim(model, run.t, run.u, run.t)
+        return np.stack([out[c] for c in self.channels], axis=1)
 
-    def nominal(self) -> list[np.ndarray]:
-        """Simulated position (n,) of every run with the nominal model."""
+    def nominal_channels(self) -> list[np.ndarray]:
+        """(n_ch, n) simulated channels of every run with the nominal model."""
         if self._nominal is None:
             self._nominal = [self._raw(self.model, r)[0] for r in self.runs]
         return self._nominal
 
+    def nominal(self) -> list[np.ndarray]:
+        """Simulated position (n,) of every run with the nominal model."""
+        return [y[0] for y in self.nominal_channels()]
+
     def simulate(self, effects, Z, runs=None) -> list[np.ndarray]:
-        """Position (n_cand, n) of each run in ``runs`` (default all) for the
+        """Position (n_cand, n) of each run (see simulate_channels)."""
+        return [Y[:, 0, :] for Y in self.simulate_channels(effects, Z, runs)]
+
+    def simulate_channels(self, effects, Z, runs=None) -> list[np.ndarray]:
+        """Channels (n_cand, n_ch, n) of each run in ``runs`` (default all) for the
         model augmented with ``effects`` at the unit coordinates Z (n_cand,
-        sum of n_par); effects act in order."""
+        sum of n_par); effects act in order; measurement effects act on the
+        position only."""
         Z = np.atleast_2d(np.asarray(Z, float))
         n_cand = Z.shape[0]
         runs = range(len(self.runs)) if runs is None else runs
@@ -103,12 +176,12 @@ class Bench:
             if changes:
                 Y = self._raw(self.model.replace(**changes), run)
                 if Y.shape[0] != n_cand:
-                    Y = np.broadcast_to(Y, (n_cand, len(run.t))).copy()
+                    Y = np.broadcast_to(Y, (n_cand,) + Y.shape[1:]).copy()
             else:
-                Y = np.repeat(self.nominal()[i][None, :], n_cand, axis=0)
+                Y = np.repeat(self.nominal_channels()[i][None], n_cand, axis=0)
             for effect, v in zip(effects, values):
                 if effect.post:
                     for c in range(n_cand):
-                        Y[c] = effect.measure(run.t, Y[c], {k: a[c] for k, a in v.items()})
+                        Y[c, 0] = effect.measure(run.t, Y[c, 0], {k: a[c] for k, a in v.items()})
             out.append(Y)
         return out

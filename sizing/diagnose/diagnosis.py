@@ -11,10 +11,13 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..sim.signals import nrmse
+from ..errors import InputError
 from . import attribution, where
 from .bench import Bench
-from .recalibrate import recalibrate as recalibrate_model
+from .effects import library
+from .recalibrate import DEFAULT, nuisance, recalibrate as recalibrate_model
+
+MIN_PERIODS = 1.0   # a run lasts at least this many times the longest effect time constant
 
 
 @dataclass
@@ -34,18 +37,26 @@ class Diagnosis:
     recalibration: dict | None = None
     seconds: float = 0.0
     extra: dict = field(default_factory=dict)
+    baseline_channels: dict = field(default_factory=dict)
 
     def to_json(self) -> dict:
         candidates = []
         for f in self.fits:
             shrink = 1.0 - f.nrmse_holdout / self.baseline_holdout if self.baseline_holdout > 0 else 0.0
+            by_channel = {c: float(1.0 - v / self.baseline_channels[c]) if self.baseline_channels.get(c) else 0.0
+                          for c, v in f.nrmse_channels.items()}
             candidates.append({"effect": f.name, "params": f.params, "nrmse_train": f.nrmse_train,
                                "nrmse_holdout": f.nrmse_holdout, "shrink_holdout": float(shrink),
+                               "nrmse_holdout_channels": f.nrmse_channels,
+                               "shrink_holdout_channels": by_channel,
                                "params_ci95": f.ci, "nrmse_holdout_runs": f.nrmse_runs,
                                "fitted": f.message != "screened only"})
         baseline = {"nrmse": self.baseline_nrmse, "nrmse_holdout": self.baseline_holdout,
                     "noise_floor_nrmse": self.noise_floor, "noise_floor_holdout": self.noise_floor_holdout,
-                    "input_treatment": self.bench.input_treatment}
+                    "input_treatment": self.bench.input_treatment,
+                    "channels": list(self.bench.channels), "nrmse_holdout_channels": self.baseline_channels,
+                    "combined_measure": "sqrt(mean over channels of (f_pos / f_c)^2 NRMSE_c^2), f_c the "
+                                        "white-noise floor of channel c (README, diagnose)"}
         if self.recalibration:
             baseline["recalibration"] = self.recalibration
         return {"baseline": baseline, "where": self.where, "candidates": candidates, "verdict": self.verdict,
@@ -54,25 +65,78 @@ class Diagnosis:
                 "seconds": self.seconds}
 
 
+def check_runs(kind: str, bench: Bench, runs) -> None:
+    """Bad input the diagnosis cannot judge: exit 2 with one line."""
+    for run in runs:
+        name = str(run.path) if getattr(run, "path", None) else run.name
+        logged = set(run.columns)
+        if getattr(run, "path", None) is not None:      # the reader keeps only its technology's columns
+            with open(run.path, encoding="utf-8") as handle:
+                logged |= {c.strip() for c in handle.readline().split(",")}
+        if "current_A" in logged:
+            if kind != "dc_motor":
+                raise InputError(name, "current_A", f"a current channel on a {kind} rig; "
+                                 "only dc_motor runs log the controller current")
+            bad = ~np.isfinite(np.asarray(run.columns.get("current_A", []), float))
+            if bad.any():
+                raise InputError(name, f"current_A, sample {int(np.argmax(bad)) + 1}",
+                                 "expected a finite current, got NaN or inf")
+    longest, which = 0.0, ""
+    for effect in library(kind):
+        tau = effect.time_constant(bench.rig, bench.model)
+        if tau > longest:
+            longest, which = tau, effect.name
+    for run, r in zip(runs, bench.runs):
+        duration = float(r.t[-1] - r.t[0])
+        if duration < MIN_PERIODS * longest:
+            name = str(run.path) if getattr(run, "path", None) else run.name
+            raise InputError(name, "time_s", f"the run lasts {duration:.3g} s, shorter than the longest effect "
+                             f"time constant {longest:.3g} s ({which}); record longer runs")
+
+
 def diagnose_runs(kind: str, rig, runs, holdout: list[str], recalibrate: list[str] | None = None,
                   seed: int = 0, pairs: bool = True) -> Diagnosis:
+    """``recalibrate``: None re-fits the default parameters (recalibrate.DEFAULT)
+    on the training runs first; [] turns re-calibration off."""
     start = time.perf_counter()
     bench = Bench(kind, rig, runs, holdout)
+    check_runs(kind, bench, runs)
     recal = None
-    if recalibrate:
-        recal_info, model = recalibrate_model(bench, recalibrate)
+    names = DEFAULT[kind] if recalibrate is None else list(recalibrate)
+    if names:
+        recal_info, model = recalibrate_model(bench, names)
         recal = recal_info
+        effect = nuisance(kind, bench.model, names)
         bench = bench.with_model(model)
+        # effects are screened and fitted with the re-calibrated parameters
+        # free, starting from their stated values (an effect the stated
+        # nominal lacks is not hidden by a re-calibration that absorbed it)
+        bench.nuisance = (effect, effect.unit({n: recal_info["nominal"][n] for n in names}))
     sims = bench.nominal()
-    base = {r.name: float(nrmse(r.y, s)) for r, s in zip(bench.runs, sims)}
+    nominal = bench.nominal_channels()
+    all_runs = list(range(len(bench.runs)))
+    combined = bench.combined_nrmse([y[None] for y in nominal], all_runs)[0]
+    base = {r.name: float(v) for r, v in zip(bench.runs, combined)}
     base_ho = float(np.mean([base[bench.runs[i].name] for i in bench.holdout]))
+    E = bench.channel_nrmse([nominal[i][None] for i in bench.holdout], bench.holdout)[0]
+    base_channels = {c: float(np.mean(E[:, k])) for k, c in enumerate(bench.channels)}
     floor = attribution.noise_floor(bench)
     floor_ho = float(np.mean(floor[bench.holdout]))
     fits = attribution.attribute(bench, base_ho, floor_ho, seed=seed, pairs=pairs)
-    verdict = attribution.verdict(base_ho, floor_ho, fits)
-    best_sim = [y[0] for y in bench.simulate(fits[0].effects, fits[0].z[None, :])] if fits else None
+    base_blocks = attribution.block_energy(bench, [nominal[i] for i in bench.holdout], bench.holdout)
+    verdict = attribution.verdict(base_ho, floor_ho, fits, base_blocks, seed=seed)
+    chosen = attribution.pick(fits, seed, attribution.total_floor(floor_ho))
+    best_sim = [y[0] for y in bench.simulate_channels(chosen.effects, chosen.z[None, :])] if chosen else None
+    if verdict["status"] in ("explained", "partial") and best_sim is not None:
+        verdict["remaining"] = [{k: e[k] for k in ("run", "label", "share", "t_start_s", "t_end_s", "channel")}
+                                for e in where.gap_map(bench, best_sim, max_entries=5)]
+    elif verdict["status"] == "unexplained":
+        verdict["remaining"] = [{k: e[k] for k in ("run", "label", "share", "t_start_s", "t_end_s", "channel")}
+                                for e in where.gap_map(bench, nominal, max_entries=5)]
     return Diagnosis(kind=kind, bench=bench, baseline_sim=sims, baseline_nrmse=base, baseline_holdout=base_ho,
                      noise_floor={r.name: float(v) for r, v in zip(bench.runs, floor)},
-                     noise_floor_holdout=floor_ho, where=where.gap_map(bench, sims),
+                     noise_floor_holdout=floor_ho, where=where.gap_map(bench, nominal),
                      residual_tests=where.residual_tests(bench, sims), fits=fits, verdict=verdict,
-                     best_sim=best_sim, recalibration=recal, seconds=time.perf_counter() - start)
+                     best_sim=[y[0] for y in best_sim] if best_sim is not None else None,
+                     recalibration=recal, seconds=time.perf_counter() - start,
+                     extra={"best_channels": best_sim}, baseline_channels=base_channels)

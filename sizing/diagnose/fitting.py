@@ -3,7 +3,8 @@
 Least squares (scipy's trust-region reflective, bounds [0, 1] on the unit
 search coordinates of each parameter, log-scaled where declared). The
 residual of a run is (measured - simulated) / (span sqrt(n)), so the cost
-is the sum over runs of NRMSE^2 (CONTRACTS.md). The Jacobian is a forward
+is the sum over runs of NRMSE^2 (CONTRACTS.md; the combined measure of bench.py when
+the runs log the current too). The Jacobian is a forward
 difference computed as one batch of the simulator (all perturbed parameter
 sets at once). Confidence intervals: 95 % from s^2 (J'J)^-1 at the
 optimum, mapped to physical units by the delta method; the residuals of a
@@ -29,41 +30,39 @@ class EffectFit:
     ci: dict = field(default_factory=dict)          # {param: [lo, hi]}
     success: bool = True
     message: str = ""
+    nrmse_channels: dict = field(default_factory=dict)              # holdout NRMSE per channel
+    residual_blocks: np.ndarray = field(default_factory=lambda: np.zeros(0))
+
+    @property
+    def named(self) -> tuple:
+        """The effects proper (without the jointly re-fitted nominal parameters)."""
+        return tuple(e for e in self.effects if not e.extra.get("nuisance"))
 
     @property
     def name(self) -> str:
-        return "+".join(e.name for e in self.effects)
+        return "+".join(e.name for e in self.named)
 
     @property
     def params(self) -> dict:
         out, col = {}, 0
+        single = len(self.named) == 1
         for e in self.effects:
             for i, p in enumerate(e.params):
-                out[p.name if len(self.effects) == 1 else f"{e.name}.{p.name}"] = float(p.from_unit(self.z[col + i]))
+                key = p.name if single and not e.extra.get("nuisance") else f"{e.name}.{p.name}"
+                out[key] = float(p.from_unit(self.z[col + i]))
             col += len(e.params)
         return out
 
 
-def run_nrmse(bench, Y, runs) -> np.ndarray:
-    """(n_cand, n_runs) NRMSE of each candidate on each run."""
-    out = np.empty((Y[0].shape[0], len(runs)))
-    for j, (i, Yi) in enumerate(zip(runs, Y)):
-        r = bench.runs[i]
-        out[:, j] = np.sqrt(np.mean((r.y[None, :] - Yi) ** 2, axis=1)) / r.span
-    return out
-
-
-def _residuals(bench, Y, runs) -> np.ndarray:
-    parts = []
-    for i, Yi in zip(runs, Y):
-        r = bench.runs[i]
-        parts.append((r.y[None, :] - Yi) / (r.span * np.sqrt(len(r.y))))
-    return np.concatenate(parts, axis=1)
+def run_nrmse(bench, Yc, runs) -> np.ndarray:
+    """(n_cand, n_runs) combined measure (bench.py) of each candidate on
+    each run; Yc from bench.simulate_channels."""
+    return bench.combined_nrmse(Yc, runs)
 
 
 def cost(bench, effects, Z, runs) -> np.ndarray:
-    """(n_cand,) mean NRMSE^2 over ``runs`` (the screening score)."""
-    return np.mean(run_nrmse(bench, bench.simulate(effects, Z, runs), runs) ** 2, axis=1)
+    """(n_cand,) mean combined measure^2 over ``runs`` (the screening score)."""
+    return np.mean(run_nrmse(bench, bench.simulate_channels(effects, Z, runs), runs) ** 2, axis=1)
 
 
 def fit(bench, effects, z0, runs, max_nfev: int = 25) -> EffectFit:
@@ -71,7 +70,7 @@ def fit(bench, effects, z0, runs, max_nfev: int = 25) -> EffectFit:
     effects = tuple(effects)
     z0 = np.clip(np.asarray(z0, float), 0.0, 1.0)
     if z0.size == 0:
-        Y = bench.simulate(effects, np.zeros((1, 0)), runs)
+        Y = bench.simulate_channels(effects, np.zeros((1, 0)), runs)
         score = float(np.sqrt(np.mean(run_nrmse(bench, Y, runs) ** 2)))
         return EffectFit(effects, z0, score, message="no parameter")
     cache = {}
@@ -79,7 +78,7 @@ def fit(bench, effects, z0, runs, max_nfev: int = 25) -> EffectFit:
     def batch(z):
         steps = np.where(z + FD_STEP <= 1.0, FD_STEP, -FD_STEP)
         Z = np.vstack([z, z + np.diag(steps)])
-        R = _residuals(bench, bench.simulate(effects, Z, runs), runs)
+        R = bench.residuals(bench.simulate_channels(effects, Z, runs), runs)
         cache[z.tobytes()] = (R[0], (R[1:] - R[0]).T / steps[None, :])
         return cache[z.tobytes()]
 
@@ -101,7 +100,9 @@ def fit(bench, effects, z0, runs, max_nfev: int = 25) -> EffectFit:
 def confidence(effects, z, J, r) -> dict:
     """95 % intervals {param: [lo, hi]} (physical units) from the Jacobian."""
     params = [p for e in effects for p in e.params]
-    names = [p.name if len(effects) == 1 else f"{e.name}.{p.name}" for e in effects for p in e.params]
+    single = sum(not e.extra.get("nuisance") for e in effects) == 1
+    names = [p.name if single and not e.extra.get("nuisance") else f"{e.name}.{p.name}"
+             for e in effects for p in e.params]
     n, k = J.shape
     dof = max(n - k, 1)
     s2 = float(r @ r) / dof

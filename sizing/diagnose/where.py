@@ -81,19 +81,28 @@ def band_energy(t, e) -> tuple[float, float]:
 
 
 def gap_map(bench, simulated: list[np.ndarray], max_entries: int = 40) -> list[dict]:
-    """The "where" list of diagnosis.json, sorted by share."""
-    residuals = [(r.y - s) / r.span for r, s in zip(bench.runs, simulated)]
-    total = sum(float(np.sum(e ** 2)) for e in residuals) or 1.0
+    """The "where" list of diagnosis.json, sorted by share. ``simulated``:
+    per run the position (n,) or every channel (n_ch, n); with several
+    channels each entry names its ``channel`` and the shares are of the
+    combined measure's energy (bench.py weights)."""
+    rows = []
+    for i, (r, s) in enumerate(zip(bench.runs, simulated)):
+        S = np.atleast_2d(s)
+        M = bench.measured(i)[:S.shape[0]]
+        w = bench.weights(i)[:S.shape[0]] if S.shape[0] > 1 else np.ones(1)
+        for k in range(S.shape[0]):
+            rows.append((r, bench.channels[k], np.sqrt(w[k]) * (M[k] - S[k]) / bench.spans(i)[k]))
+    total = sum(float(np.sum(e ** 2)) for _, _, e in rows) or 1.0
     entries = []
-    for r, e in zip(bench.runs, residuals):
+    for r, channel, e in rows:
         for a, b, label in segments(r.t, labels(r.t, r.u)):
             entries.append({"run": r.name, "t_start_s": float(r.t[a]), "t_end_s": float(r.t[b - 1]),
-                            "share": float(np.sum(e[a:b] ** 2)) / total, "label": label})
+                            "share": float(np.sum(e[a:b] ** 2)) / total, "label": label, "channel": channel})
         low, high = band_energy(r.t, e)
         for label, energy in (("low_frequency", low), ("high_frequency", high)):
             entries.append({"run": r.name, "t_start_s": float(r.t[0]), "t_end_s": float(r.t[-1]),
-                            "share": energy / total, "label": label, "band_hz": [0.0, BAND_SPLIT_HZ]
-                            if label == "low_frequency" else [BAND_SPLIT_HZ, None]})
+                            "share": energy / total, "label": label, "channel": channel,
+                            "band_hz": [0.0, BAND_SPLIT_HZ] if label == "low_frequency" else [BAND_SPLIT_HZ, None]})
     entries.sort(key=lambda d: -d["share"])
     return entries[:max_entries]
 

@@ -11,22 +11,29 @@ from plotly.subplots import make_subplots
 
 
 def _traces(diagnosis) -> go.Figure:
-    runs = diagnosis.bench.runs
-    fig = make_subplots(rows=len(runs), cols=1, shared_xaxes=False,
-                        subplot_titles=[f"run {r.name}{' (holdout)' if r.holdout else ' (training)'}" for r in runs])
-    best_name = diagnosis.fits[0].name if diagnosis.fits else None
+    bench = diagnosis.bench
+    runs, channels = bench.runs, bench.channels
+    titles = [f"run {r.name}{' (holdout)' if r.holdout else ' (training)'}: {c}" for r in runs for c in channels]
+    fig = make_subplots(rows=len(runs) * len(channels), cols=1, shared_xaxes=False, subplot_titles=titles)
+    best_name = diagnosis.verdict.get("effect") or (diagnosis.fits[0].name if diagnosis.fits else None)
+    nominal = bench.nominal_channels()
+    best = diagnosis.extra.get("best_channels")
+    scale = {"position_m": (1e3, "position, mm"), "current_A": (1.0, "current, A")}
     for k, r in enumerate(runs):
-        row = k + 1
-        fig.add_trace(go.Scattergl(x=r.t, y=r.y * 1e3, name="measured", mode="lines",
-                                   line=dict(color="black", width=1), showlegend=k == 0), row=row, col=1)
-        fig.add_trace(go.Scattergl(x=r.t, y=diagnosis.baseline_sim[k] * 1e3, name="baseline model",
-                                   line=dict(color="#d62728"), showlegend=k == 0), row=row, col=1)
-        if diagnosis.best_sim is not None:
-            fig.add_trace(go.Scattergl(x=r.t, y=diagnosis.best_sim[k] * 1e3, name=f"with {best_name}",
-                                       line=dict(color="#1f77b4", dash="dash"), showlegend=k == 0), row=row, col=1)
-        fig.update_yaxes(title_text="position, mm", row=row, col=1)
-        fig.update_xaxes(title_text="time, s", row=row, col=1)
-    fig.update_layout(height=320 * len(runs), title="Measured against simulated position")
+        measured = bench.measured(k)
+        for j, c in enumerate(channels):
+            row, first = k * len(channels) + j + 1, k == 0 and j == 0
+            f, label = scale[c]
+            fig.add_trace(go.Scattergl(x=r.t, y=measured[j] * f, name="measured", mode="lines",
+                                       line=dict(color="black", width=1), showlegend=first), row=row, col=1)
+            fig.add_trace(go.Scattergl(x=r.t, y=nominal[k][j] * f, name="baseline model",
+                                       line=dict(color="#d62728"), showlegend=first), row=row, col=1)
+            if best is not None:
+                fig.add_trace(go.Scattergl(x=r.t, y=best[k][j] * f, name=f"with {best_name}",
+                                           line=dict(color="#1f77b4", dash="dash"), showlegend=first), row=row, col=1)
+            fig.update_yaxes(title_text=label, row=row, col=1)
+            fig.update_xaxes(title_text="time, s", row=row, col=1)
+    fig.update_layout(height=300 * len(runs) * len(channels), title="Measured against simulated channels")
     return fig
 
 
@@ -34,13 +41,16 @@ def _gap_map(diagnosis) -> go.Figure:
     colors = {"rising": "#2ca02c", "falling": "#ff7f0e", "hold": "#7f7f7f", "reversal": "#9467bd",
               "steady_state": "#8c564b", "high_frequency": "#e377c2", "low_frequency": "#17becf"}
     entries = [e for e in diagnosis.where if e["label"] not in ("high_frequency", "low_frequency")]
-    names = [r.name for r in diagnosis.bench.runs]
+    several = len(diagnosis.bench.channels) > 1
+    for e in entries:
+        e["row"] = f"{e['run']} / {e.get('channel', 'position_m')}" if several else e["run"]
+    names = [f"{r.name} / {c}" if several else r.name for r in diagnosis.bench.runs for c in diagnosis.bench.channels]
     fig = go.Figure()
     for label, color in colors.items():
         sel = [e for e in entries if e["label"] == label]
         if not sel:
             continue
-        fig.add_trace(go.Bar(y=[e["run"] for e in sel], x=[e["t_end_s"] - e["t_start_s"] for e in sel],
+        fig.add_trace(go.Bar(y=[e["row"] for e in sel], x=[e["t_end_s"] - e["t_start_s"] for e in sel],
                              base=[e["t_start_s"] for e in sel], orientation="h", name=label,
                              marker=dict(color=color, opacity=[min(1.0, 0.15 + 3 * e["share"]) for e in sel]),
                              text=[f"{100 * e['share']:.0f}%" if e["share"] > 0.03 else "" for e in sel],
@@ -73,10 +83,32 @@ def _interval(ci) -> str:
 def render(diagnosis, title: str = "Sim-to-real gap diagnosis") -> str:
     data = diagnosis.to_json()
     v = data["verdict"]
-    verdict = (f"<b>{html.escape(v['effect'])}</b> explains the gap: holdout NRMSE "
-               f"{diagnosis.baseline_holdout:.4f} &rarr; {diagnosis.fits[0].nrmse_holdout:.4f} "
-               f"(shrink {100 * v['shrink_holdout']:.0f} %)" if v["effect"] else
-               f"<b>{'no significant gap' if v['status'] == 'no_significant_gap' else 'unexplained'}</b>")
+    verdict = (f"<b>{v['status']}</b>: <b>{html.escape(v['effect'])}</b>, holdout measure "
+               f"{diagnosis.baseline_holdout:.4f} &rarr; {diagnosis.baseline_holdout * (1 - v['shrink_holdout']):.4f} "
+               f"(shrink {100 * v['shrink_holdout']:.0f} %)" if v["effect"] else f"<b>{v['status']}</b>")
+    second = v.get("runner_up")
+    sep = v.get("separation")
+    separation = ""
+    if sep:
+        separation = (f"<p>Runner-up: {html.escape(second['effect']) if second else 'none'}"
+                      + (f" (shrink {100 * second['shrink_holdout']:.0f} %, {100 * second['explained_gap_energy']:.0f} % of "
+                         f"the gap energy above the floor)" if second else "")
+                      + f". Separation test: {html.escape(sep['test'])}; p against the baseline "
+                      f"{sep['p_vs_baseline']:.3f}, against the runner-up {sep['p_vs_runner_up']:.3f} "
+                      f"(significant below {sep['alpha']:g}). Floor (noise and model form): "
+                      f"{v.get('floor_holdout', float('nan')):.4f}.</p>")
+    remaining = "".join(f"<tr><td>{html.escape(e['run'])}</td><td>{html.escape(str(e.get('channel', '')))}</td>"
+                        f"<td>{html.escape(e['label'])}</td><td>{e['t_start_s']:.3f}-{e['t_end_s']:.3f} s</td>"
+                        f"<td>{100 * e['share']:.0f} %</td></tr>" for e in v.get("remaining", []))
+    if remaining:
+        remaining = ("<h2>What remains " + ("after the best effect" if v["effect"] else "(baseline)")
+                     + "</h2><table><tr><th>run</th><th>channel</th><th>where</th><th>time</th><th>share</th></tr>"
+                     + remaining + "</table>")
+    channels = "".join(f"<tr><td>{html.escape(c['effect'])}</td>" + "".join(
+        f"<td>{100 * c['shrink_holdout_channels'].get(ch, 0.0):.0f} %</td>" for ch in diagnosis.bench.channels)
+        + "</tr>" for c in data["candidates"][:12])
+    channels = ("<h2>Holdout shrink per channel</h2><table><tr><th>effect</th>"
+                + "".join(f"<th>{ch}</th>" for ch in diagnosis.bench.channels) + "</tr>" + channels + "</table>")
     rows = []
     for c in data["candidates"][:12]:
         params = ", ".join(f"{k} = {val:.3g} {_interval(c['params_ci95'].get(k))}" for k, val in c["params"].items())
@@ -104,11 +136,14 @@ def render(diagnosis, title: str = "Sim-to-real gap diagnosis") -> str:
 table{{border-collapse:collapse}} tr:nth-child(even){{background:#f4f4f4}}</style></head><body>
 <h1>{html.escape(title)}</h1>
 <p>Verdict: {verdict}. {html.escape(v.get('reason', ''))}</p>
+{separation}
+{remaining}
 <p>Baseline NRMSE per run: {html.escape(baseline)}; holdout {diagnosis.baseline_holdout:.4f};
 noise floor (holdout) {diagnosis.noise_floor_holdout:.4f}. Input treatment: {html.escape(diagnosis.bench.input_treatment)}.</p>
 {recal}
 <h2>Effects</h2><table><tr><th>effect</th><th>NRMSE train</th><th>NRMSE holdout</th><th>shrink</th>
 <th>fitted parameters [95 % CI]</th></tr>{''.join(rows)}</table>
+{channels}
 <h2>Residual tests (baseline)</h2><table><tr><th>run</th><th>whiteness (max autocorrelation)</th>
 <th>cross-correlation with input</th><th>with velocity</th></tr>{tests}</table>
 {''.join(body)}

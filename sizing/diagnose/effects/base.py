@@ -85,6 +85,12 @@ class Effect:
         nominal = float(np.min(getattr(model, model_field)))
         return tuple({param: factor * nominal} for factor in self.nominal_factors)
 
+    def time_constant(self, rig, model) -> float:
+        """Longest time constant (s) of the effect at its realistic sizes:
+        a run must last at least this long to show it (delays and time constants)."""
+        taus = [v for size in self.sizes_for(rig, model) for k, v in size.items() if k == "delay_s" or k.endswith("time_s")]
+        return float(max(taus, default=0.0))
+
     def model_changes(self, model, values: dict) -> dict:
         return {model_field: values[param] for param, model_field in self.fields.items()}
 

@@ -1,0 +1,103 @@
+"""Issue 10: diagnosis on campaigns from the second, independent generator
+(benchmarks/crossform: RK4 on its own state forms, LuGre friction, a
+mis-stated nominal, white + 1/f + quantisation noise), judged on every
+logged channel; bad input. A few short DC campaigns (the full cross-form
+set is the benchmark, not a test)."""
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from sizing import api
+from sizing.errors import InputError
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+from benchmarks.crossform import cases, dc  # noqa: E402
+from benchmarks.crossform.common import write_campaign  # noqa: E402
+
+
+def _campaign(tmp_path, effects, seed, **options):
+    rig, runs = dc.campaign(effects, seed, **options)
+    return write_campaign(tmp_path / "c", rig, runs)
+
+
+def test_lugre_friction_in_a_stiff_loop_is_named_from_the_current(tmp_path):
+    """LuGre friction with a Stribeck rise (a form the library does not use:
+    it holds Karnopp-Coulomb) under a stiff position loop that logs its
+    current: the diagnosis names coulomb_friction, and the current channel
+    shrinks more than the position does (the loop hides friction in the
+    position)."""
+    folder = _campaign(tmp_path, {"friction": cases.LUGRE_B}, seed=7)
+    d = api.diagnose(folder, ["stairs_b"], tmp_path / "out")
+    assert d.bench.channels == ("position_m", "current_A")
+    assert d.verdict["effect"] == "coulomb_friction"
+    assert d.verdict["status"] in ("explained", "partial")
+    c = d.to_json()["candidates"][0]
+    assert set(c["shrink_holdout_channels"]) == {"position_m", "current_A"}
+    assert c["shrink_holdout_channels"]["current_A"] > 0.3
+    data = json.loads((tmp_path / "out" / "diagnosis.json").read_text())
+    assert data["verdict"]["status"] == d.verdict["status"] and data["verdict"]["remaining"]
+    assert {w["channel"] for w in data["where"]} == {"position_m", "current_A"}
+    page = (tmp_path / "out" / "diagnosis.html").read_text()
+    assert "current, A" in page and "Separation test" in page and "Runner-up" in page
+
+
+def test_null_campaign_from_the_second_generator_names_nothing(tmp_path):
+    folder = _campaign(tmp_path, {}, seed=11)
+    d = api.diagnose(folder, ["stairs_b"])
+    assert d.verdict["effect"] is None
+    assert d.verdict["status"] in ("no_significant_gap", "unexplained")
+
+
+def test_outside_effect_is_not_explained(tmp_path):
+    """Cogging (a force ripple with the motor angle) is not in the library."""
+    folder = _campaign(tmp_path, {"cogging": dict(amp_N=40.0, pitch_m=2e-3 / 6)}, seed=13)
+    d = api.diagnose(folder, ["stairs_b"])
+    assert d.verdict["status"] != "explained"
+
+
+def test_pade_delay_by_hand():
+    # a second-order Pade of a 10 ms delay passes a slow ramp late by 10 ms
+    # (its group delay at low frequency is tau)
+    from benchmarks.crossform.common import pade_delay
+    t = np.arange(0.0, 1.0, 1e-3)
+    y = np.where(t > 0.1, t - 0.1, 0.0)
+    out = pade_delay(t, y, 0.01)
+    np.testing.assert_allclose(out[500:], y[500:] - 0.01, atol=1e-6)
+
+
+def _write_runs(folder: Path, kind_rig: Path, columns: dict):
+    folder.mkdir(parents=True)
+    (folder / "rig.toml").write_text(kind_rig.read_text())
+    (folder / "runs").mkdir()
+    for name in ("a", "b"):
+        keys = list(columns)
+        rows = [",".join(keys)] + [",".join(str(columns[k][i]) for k in keys) for i in range(len(columns["time_s"]))]
+        (folder / "runs" / f"{name}.csv").write_text("\n".join(rows) + "\n")
+
+
+@pytest.mark.parametrize("rig,columns,match", [
+    ("piezo-prototype", {"time_s": np.arange(2000) / 1e3, "voltage_V": np.zeros(2000),
+                         "position_m": np.zeros(2000), "current_A": np.zeros(2000)}, "current_A: a current channel"),
+    ("piezo-prototype", {"time_s": np.arange(300) / 1e3, "voltage_V": np.linspace(0, 100, 300),
+                         "position_m": np.linspace(0, 1e-3, 300)}, "time_s: the run lasts"),
+    ("dc-motor", {"time_s": np.arange(2000) / 1e3, "reference_m": np.zeros(2000),
+                  "position_m": np.zeros(2000), "current_A": np.r_[np.zeros(1000), np.nan, np.zeros(999)]},
+     "column current_A"),
+])
+def test_bad_input_exits_2_with_one_line(tmp_path, rig, columns, match):
+    folder = tmp_path / "bad"
+    _write_runs(folder, ROOT / "studies/campaigns" / rig / "rig.toml", columns)
+    with pytest.raises(InputError, match=match):
+        api.diagnose(folder, ["b"])
+    proc = subprocess.run([sys.executable, "-m", "sizing.cli", "diagnose", str(folder), "--holdout", "b",
+                           "--out", str(tmp_path / "out")], capture_output=True, text=True)
+    assert proc.returncode == 2
+    assert len(proc.stderr.strip().splitlines()) == 1 and match.split(":")[0] in proc.stderr
+    assert not (tmp_path / "out").exists()

@@ -64,6 +64,9 @@ class OptionsTable(Strict):
     electronics_bay_temperature: Qty("temperature") = 30.0           # assumed conditioned bay, where the amplifier sits when "bay"
     max_simulated: int = Field(400, ge=1, le=100000)      # candidates verified by simulation
     dc_motors: bool = True                                # rank the catalog's DC actuators too
+    # issue 9: end caps, base plate and frame at least this x the stacks' stiffness (the sizing
+    # may make them stiffer); 3 keeps the structure's share of the compliance <= 1/2 of the stacks'
+    structure_stiffness_ratio: Qty("dimensionless", positive=True) = 3.0
 
 
 class DutyTable(Strict):

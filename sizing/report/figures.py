@@ -43,6 +43,8 @@ def pareto_figure(results: dict) -> go.Figure:
         "piezohydraulic, compensated, infeasible": dict(symbol="circle-open", color="#1f77b4"),
         "piezohydraulic, uncompensated, feasible": dict(symbol="square", color="#2ca02c"),
         "piezohydraulic, uncompensated, infeasible": dict(symbol="x-thin-open", color="#7f7f7f"),
+        "piezohydraulic, passive, feasible": dict(symbol="triangle-up", color="#9467bd"),
+        "piezohydraulic, passive, infeasible": dict(symbol="triangle-up-open", color="#9467bd"),
         "DC motor, feasible": dict(symbol="diamond", color="#d62728"),
         "DC motor, infeasible": dict(symbol="diamond-open", color="#d62728"),
     }

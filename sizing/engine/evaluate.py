@@ -74,6 +74,7 @@ def evaluate_piezo(design: PiezoDesignFile, catalog: Catalog, file: str) -> dict
     c = Candidates.from_rows([row])
     static = {k: float(np.asarray(v).ravel()[0])
               for k, v in static_figures(c, design.rise_time, design.strokes_per_second).items()}
+    checks = _buildable(static, design.n_stacks, warnings)
     members = force_path.members(c)
     worst_load = max((case["load_N"] for case in load_cases(design.load)), default=0.0)
     p_load = worst_load / float(c.narrow_area[0])
@@ -96,8 +97,26 @@ def evaluate_piezo(design: PiezoDesignFile, catalog: Catalog, file: str) -> dict
         "thermal_budget": {k: static["thermal_" + k] for k in (*thermal.TERMS, "net_m")},
         "seal_friction_N": {**seal_f, "at_pressure_Pa": p_load},
         "compensator": _compensator(compensator, members),
+        "checks": checks,
         "warnings": warnings,
     }
+
+
+def _buildable(static: dict, n_stacks: int, warnings: list) -> dict:
+    """Can the design be built: do the stacks fit under the wide piston, does
+    the wide gap exceed the stack stroke plus a clearance. A design that
+    cannot be built is reported (and warned about), not an error."""
+    fit = int(static["stacks_that_fit"])
+    out = {"stacks_that_fit": fit, "stacks_fit": fit >= n_stacks,
+           "wide_gap_ok": static["wide_gap_m"] >= static["gap_needed_m"]}
+    if not out["stacks_fit"]:
+        warnings.append(f"cannot be built: only {fit} of the {n_stacks} stacks fit under the "
+                        f"{static['wide_diameter_m'] * 1e3:.0f} mm wide piston")
+    if not out["wide_gap_ok"]:
+        warnings.append(f"cannot be built: the wide gap {static['wide_gap_m'] * 1e3:.2f} mm is below the stack stroke "
+                        f"plus clearance ({static['gap_needed_m'] * 1e3:.2f} mm): the wide piston bottoms out")
+    out["buildable"] = out["stacks_fit"] and out["wide_gap_ok"]
+    return out
 
 
 def _compensator(comp, members) -> dict | None:

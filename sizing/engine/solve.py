@@ -21,6 +21,7 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import dataclass, field, replace
+from functools import lru_cache
 
 import numpy as np
 
@@ -28,7 +29,8 @@ from .. import __version__
 from ..errors import SimulationError
 from ..io.catalog import Catalog
 from ..io.requirements import RequirementsFile
-from ..physics import fluid as fluid_props
+from ..physics import bouc_wen, fluid as fluid_props
+from ..physics.bouc_wen import BoucWen
 from ..physics import geometry, load as load_phys, stack as stack_phys, structure, thermal
 from . import force_path
 from .convex import GPSizer, SizingInput
@@ -86,6 +88,7 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
         "assumptions": _assumptions(req),
         "summary": _summary(req, candidates, catalog),
         "disagreements": _disagreements(designs),
+        "hysteresis_time_scales": hysteresis_time_scales(catalog),
         "counts": {"combinations": len(combos), "pruned": len(combos) - len(to_size), "sized": len(to_size),
                    "gp_feasible": sum(1 for d in designs if d["gp_success"]),
                    "simulated": sum(1 for d in designs if d["simulated"] is not None)},
@@ -467,6 +470,8 @@ def _design_candidates(req, d) -> list[dict]:
             "bulk_modulus_Pa": float(d["cand"].bulk_modulus[0]),
             "flash_point_degC": f.flash_point},
         "bouc_wen_source": d["bouc_wen_source"],
+        "hysteresis": (_hysteresis(combo.stack, d["bw"][0], float(d["cand"].voltage[0]), d["ramp"])
+                       if d["simulated"] is not None else None),
         "gp": {"success": res.success, "status": res.status, "binding": res.binding, "slack": res.slack},
         "reason": "" if res.success else "no design of these parts meets: " + ", ".join(res.binding),
         "metrics": dict(d["metrics"]), "margins": margins,
@@ -476,6 +481,33 @@ def _design_candidates(req, d) -> list[dict]:
                                         "spacer_material": next(r["material"] for r in d["force_path"] if r["member"] == "spacer")}
         base["design"]["spacer_length"] = d["spacer"]
     return [base]
+
+
+@lru_cache(maxsize=4096)
+def _ramp_stroke(stack_id, params, voltage, ramp):
+    return bouc_wen.ramp_stroke(BoucWen(*params), voltage, ramp, points=1000)
+
+
+def _hysteresis(stack, bw, voltage, ramp) -> dict:
+    """The stroke the (transferred) Bouc-Wen model gives at this design's own
+    ramp against the datasheet stroke at that voltage (issue 9, item 5)."""
+    params = tuple(float(v) for v in bw.as_array())
+    got = _ramp_stroke(stack.id, params, round(voltage, 3), round(ramp, 4))
+    nominal = stack.stroke * voltage / stack.max_voltage
+    return {"ramp_time_s": ramp, "model_stroke_m": got, "datasheet_stroke_m": nominal, "ratio": got / nominal}
+
+
+def hysteresis_time_scales(catalog: Catalog) -> dict:
+    """Per stack: the ramp time at which its Bouc-Wen model (own or
+    transferred) gives the datasheet stroke, and the stroke at 0.01, 1 and 10 s."""
+    reference = reference_bouc_wen(catalog.stacks)
+    out = {}
+    for st in catalog.stacks.values():
+        bw, source = stack_bouc_wen(st, reference)
+        out[st.id] = {"matching_ramp_time_s": bouc_wen.matching_ramp_time(bw, st.max_voltage, st.stroke),
+                      "datasheet_stroke_m": st.stroke, "source": source,
+                      "stroke_at_m": {str(T): bouc_wen.ramp_stroke(bw, st.max_voltage, T) for T in (0.01, 1.0, 10.0)}}
+    return out
 
 
 def _compensator_entry(comp, d) -> dict | None:

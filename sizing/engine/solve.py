@@ -475,12 +475,19 @@ def _design_candidates(req, d) -> list[dict]:
         "gp": {"success": res.success, "status": res.status, "binding": res.binding, "slack": res.slack},
         "reason": "" if res.success else "no design of these parts meets: " + ", ".join(res.binding),
         "metrics": dict(d["metrics"]), "margins": margins,
+        "rests_on_assumed": _assumed(combo, var),
     })
     if d["spacer"] > 0:
         base["passive_compensation"] = {"spacer_length_m": d["spacer"],
                                         "spacer_material": next(r["material"] for r in d["force_path"] if r["member"] == "spacer")}
         base["design"]["spacer_length"] = d["spacer"]
     return [base]
+
+
+def _assumed(combo: Combo, var: Variant) -> list[str]:
+    """Catalog values marked assumed that this design rests on, as part.field."""
+    parts = (combo.stack, combo.fluid, combo.seal, combo.amplifier, var.material, var.compensator)
+    return [f"{p.id}.{k}" for p in parts if hasattr(p, "assumed") for k in p.assumed()]
 
 
 @lru_cache(maxsize=4096)

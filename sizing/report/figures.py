@@ -9,7 +9,8 @@ UNITS = {"mass": ("mass_kg", 1.0, "mass (kg)"), "cost": ("cost_usd", 1.0, "cost 
          "volume": ("volume_m3", 1e3, "volume (L)"), "power": ("power_W", 1.0, "peak power (W)")}
 SHOWN_STAGES = ("simulated", "sized", "gp_infeasible")
 MARGIN_ORDER = ("stroke", "blocked_force", "speed", "temperature", "amplifier_temperature", "pressure",
-                "drive_current", "natural_frequency", "overshoot", "thermal_drift", "holding_force", "work")
+                "drive_current", "amplifier_continuous_current", "natural_frequency", "overshoot", "thermal_drift",
+                "wide_gap", "packing", "compensator_capacity", "compensator_leak", "holding_force", "work")
 
 
 def _axes(objectives: list[str]) -> tuple[str, str]:

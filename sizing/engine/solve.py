@@ -45,6 +45,10 @@ from .verify import (GAP_CLEARANCE_M, STACK_SPACING_M, metrics, ramp_time,
 
 SIM_CHUNK = 32
 MAX_SPACER_M = 0.5          # longest passive-compensation spacer considered
+# margins the simulation order ignores: they depend on the duty or the
+# compensation, not on what the simulation checks, and must not keep the
+# designs that pass everything else from being simulated first
+SCREEN_IGNORES = ("thermal_drift", "amplifier_continuous_current")
 OBJECTIVE_KEYS = {"mass": "mass_kg", "cost": "cost_usd", "volume": "volume_m3", "power": "power_W"}
 
 
@@ -348,7 +352,7 @@ def _simulate(req, designs, loads, progress) -> None:
         return
     keys = [OBJECTIVE_KEYS[k] for k in req.objectives.minimize]
     F = np.array([[d["metrics"][k] for k in keys] for d in pool])
-    ok = np.array([min(v for k, v in d["static_margins"].items() if k != "thermal_drift") >= 0 for d in pool])
+    ok = np.array([min(v for k, v in d["static_margins"].items() if k not in SCREEN_IGNORES) >= 0 for d in pool])
     level = np.full(len(pool), 10**6)
     if ok.any():
         level[ok] = nondominated_levels(F[ok])

@@ -358,11 +358,30 @@ def _simulate(req, designs, loads, progress) -> None:
         level[ok] = nondominated_levels(F[ok])
     order = np.lexsort((level, ~ok))[: req.options.max_simulated]
     chosen = [pool[i] for i in order]
+    # designs that differ only in the structure material have the same force
+    # path (the material screen keeps the members' stiffness) and so the same
+    # dynamics: simulate one of each and share the result
+    twins: dict[tuple, list] = {}
+    for d in chosen:
+        twins.setdefault(_dynamic_key(d), []).append(d)
+    unique = [group[0] for group in twins.values()]
     S = req.requirements.stroke
-    for start in range(0, len(chosen), SIM_CHUNK):
-        chunk = chosen[start:start + SIM_CHUNK]
+    for start in range(0, len(unique), SIM_CHUNK):
+        chunk = unique[start:start + SIM_CHUNK]
         _simulate_chunk(chunk, loads, S)
-        _progress(progress, "simulating", min(start + SIM_CHUNK, len(chosen)), len(chosen))
+        _progress(progress, "simulating", min(start + SIM_CHUNK, len(unique)), len(unique))
+    for group in twins.values():
+        for d in group[1:]:
+            d["simulated"] = group[0]["simulated"]
+
+
+def _dynamic_key(d) -> tuple:
+    """What the simulation depends on, beyond the parts: the force path's
+    mechanical and hydraulic stiffness, the ramp, the masses and the leak."""
+    st, c = d["static"], d["cand"]
+    comp = d["variant"].compensator
+    return (d["combo"].key, comp.id if comp else None, f"{st['force_path_stiffness_N_m']:.9e}",
+            f"{d['ramp']:.9e}", f"{float(c.wide_mass[0]):.9e}", f"{d['spacer']:.9e}")
 
 
 def _simulate_chunk(chunk, loads, S) -> None:

@@ -42,7 +42,14 @@ def _assumptions(req: RequirementsFile) -> list[str]:
         f"stack counts 1 to {o.max_stacks}; every stack, fluid, seal and amplifier of the catalog combined",
         f"static sizing margin {o.design_margin:.0%} on stroke and blocked force (the simulation then checks them)",
         f"wide-chamber oil gap {o.wide_gap * 1e3:g} mm; oil volume = A_wide gap + A_narrow stroke",
-        "blocked force includes the oil column spring (bulk modulus at the required temperature) in series with the stacks",
+        "blocked force: the stack stroke over the summed compliances of the whole force path (stacks, base plate, "
+        "tie-rod frame, wide piston, oil column at the required temperature, open accumulator, end cap, narrow piston), "
+        "over R, less the seal friction at the blocked pressure; plates simply supported (Roark, mean deflection)",
+        f"end caps, base plate and frame at least {o.structure_stiffness_ratio:g} x the stacks' stiffness and within "
+        "half the yield; sized in 6061-T6 by the geometric program, re-sized in closed form for the other materials",
+        "seal friction grows with the chamber pressure (friction_per_length + friction_pressure_coefficient x p), "
+        "in the static screen and in the simulation",
+        f"amplifier continuous current over {req.duty.strokes_per_second:g} full strokes per second ([duty])",
         "pressure: the stack force over the wide piston must stay within the seal's pressure rating",
         f"drive current: the charge n C_large V that reaches the stroke must flow within stroke/speed = {req.stroke_time:g} s; "
         f"C_large = {stack_phys.LARGE_SIGNAL_CAPACITANCE_FACTOR:g} x the small-signal capacitance",
@@ -54,8 +61,9 @@ def _assumptions(req: RequirementsFile) -> list[str]:
         "speed = required stroke / time to reach it (DC motor: 98 % of it)",
         f"thermal drift of the enclosed oil from {o.drift_reference_temperature:g} to {r.max_temperature:g} degC must stay "
         f"within {o.max_drift_fraction:.0%} of the stroke unless compensated",
-        (f"compensated designs carry an assumed spring-loaded accumulator: +{o.compensator_mass:g} kg, "
-         f"+{o.compensator_cost_usd:g} USD" if o.thermal_compensation else "no compensated designs evaluated"),
+        ("compensated designs carry a catalog compensator (catalogs/compensators.toml) in their force path and "
+         "simulation; passive designs a low-expansion spacer that cancels the thermal budget"
+         if o.thermal_compensation else "no compensated designs evaluated"),
         amp,
         "temperature margin = (rated - required) / required, temperatures in kelvin",
         "Bouc-Wen hysteresis of stacks without their own data is transferred in normalised form from the measured stack",

@@ -285,8 +285,15 @@ def nominal_figures(req, catalog, combos: list[Combo], candidates: list[dict]) -
     material = force_path.default_material(catalog.materials)
     spacer = force_path.spacer_material(catalog.materials)
     surface, dT = _surface_mass(req), T - o.drift_reference_temperature
-    rows, ratios = [], []
+    rows, ratios, index, where = [], [], {}, []
     for c in combos:
+        # the figures below do not depend on the amplifier beyond its voltage: build each once
+        key = (c.stack.id, c.n, c.fluid.id, c.seal.id, c.voltage_fraction_max)
+        if key in index:
+            where.append(index[key])
+            continue
+        index[key] = len(rows)
+        where.append(len(rows))
         x = c.stack_stroke * c.voltage_fraction_max
         R = max(r.stroke * (1 + o.design_margin) / x, 1.5)
         nk = c.n * c.stack.stiffness
@@ -307,16 +314,21 @@ def nominal_figures(req, catalog, combos: list[Combo], candidates: list[dict]) -
     keys = ("free_stroke_m", "blocked_force_N", "blocked_force_ideal_N", "blocked_force_net_N",
             "natural_frequency_Hz", "wide_diameter_m", "narrow_diameter_m", "ratio", "thermal_net_m",
             "wide_gap_m", "stacks_that_fit", "continuous_current_A")
+    per_row = [{"static": {k: float(static[k][i]) for k in keys},
+                "force_path": force_path.as_list(members, i, material.id, None),
+                "thermal_budget": {k: float(static["thermal_" + k][i]) for k in (*thermal.TERMS, "net_m")},
+                "seal_friction_N": {"wide": float(seal_f["wide"][i]), "narrow": float(seal_f["narrow"][i]),
+                                    "at_pressure_Pa": float(p_load[i])}} for i in range(len(rows))]
     pruned = [c for c in candidates if c.get("stage") == "pruned"]
-    for i, cd in enumerate(pruned):
-        cd["static"].update({k: float(static[k][i]) for k in keys})
+    for cd, i in zip(pruned, where):
+        row = per_row[i]
+        cd["static"].update(row["static"])
         cd["components"]["ratio"] = ratios[i]
         cd["components"]["material"] = material.id
         cd["nominal_geometry"] = True
-        cd["force_path"] = force_path.as_list(members, i, material.id, None)
-        cd["thermal_budget"] = {k: float(static["thermal_" + k][i]) for k in (*thermal.TERMS, "net_m")}
-        cd["seal_friction_N"] = {"wide": float(seal_f["wide"][i]), "narrow": float(seal_f["narrow"][i]),
-                                 "at_pressure_Pa": float(p_load[i])}
+        cd["force_path"] = row["force_path"]
+        cd["thermal_budget"] = row["thermal_budget"]
+        cd["seal_friction_N"] = row["seal_friction_N"]
         cd["compensator"] = None
 
 

@@ -203,6 +203,13 @@ def test_small_solve_keeps_every_combination_and_names_reasons(seed_requirements
     # the as-built designs drift (whole thermal budget); passive or active compensation is needed
     assert all(c["variant"] in ("compensated", "passive") for c in feasible if c["technology"] == "piezohydraulic")
     assert "EVERY uncompensated" in r["summary"]["thermal"]
+    # passive compensation: an Invar spacer in the stack column cancels the whole budget
+    passive = [c for c in r["candidates"] if c.get("variant") == "passive"]
+    assert passive
+    for c in passive:
+        spacer = next(m for m in c["force_path"] if m["member"] == "spacer")
+        assert spacer["material"] == "invar-36" and c["design"]["spacer_length"] > 0
+        assert abs(c["thermal_budget"]["net_m"]) < 1e-6
     F = np.array([[c["metrics"]["mass_kg"], c["metrics"]["cost_usd"]] for c in feasible])
     assert [c["pareto"] for c in feasible] == pareto_mask(F).tolist()
     assert out.traces and all(case["t"] for tr in out.traces for case in tr["cases"])

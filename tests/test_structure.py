@@ -138,3 +138,15 @@ def test_seal_friction_at_pressure_matches_the_review():
     assert wide == pytest.approx(1511, rel=0.005)
     out = seals.output_seal_force(175.0, 4e-4, 0.34, d_n, 233.0, 3.1e6)
     assert out == pytest.approx(run + wide / 233.0)
+
+
+def test_surface_tip_equivalent_mass():
+    """The hinged 15 x 10 x 1/16 in aluminium surface: m = 2700 x 0.381 x
+    0.254 x 1.5875e-3 = 0.415 kg; its inertia about the hinge, integrated
+    here strip by strip (int r^2 dm), over the chord squared, is m/3 =
+    0.138 kg at the tip (the review's 0.14 kg)."""
+    from sizing.physics import load
+    b, c, t, rho = 15 * 0.0254, 10 * 0.0254, 0.0625 * 0.0254, 2700.0
+    inertia, _ = integrate.quad(lambda r: r**2 * rho * b * t, 0.0, c)
+    assert load.tip_equivalent_mass(b, c, t, rho) == pytest.approx(inertia / c**2, rel=1e-12)
+    assert load.tip_equivalent_mass(b, c, t) == pytest.approx(0.1383, abs=5e-4)

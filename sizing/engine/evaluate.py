@@ -64,7 +64,8 @@ def evaluate_piezo(design: PiezoDesignFile, catalog: Catalog, file: str) -> dict
         design.n_stacks * stack.stiffness, design.n_stacks * stack.stiffness * x_free, wide_area, stack.length,
         design.wide_gap, rating, material, design.structure_stiffness_ratio,
         design.end_cap_thickness, design.frame_area)
-    surface = float(load_phys.tip_equivalent_mass(design.load.span, design.load.chord, design.load.thickness)) \
+    surface = float(load_phys.tip_equivalent_mass(design.load.span, design.load.chord, design.load.thickness,
+                                                 design.load.density)) \
         if design.load.force is None else 0.0
     struct = structure_row(material, t_cap, frame_area, spacer=force_path.spacer_material(catalog.materials),
                            spacer_length=design.spacer_length, compensator=compensator, surface_mass=surface,

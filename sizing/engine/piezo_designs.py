@@ -95,7 +95,7 @@ def sizing_input(req: RequirementsFile, c: Combo, material=None, compensator=Non
 
 def _surface_mass(req: RequirementsFile) -> float:
     L = req.load
-    return 0.0 if L.force is not None else float(load_phys.tip_equivalent_mass(L.span, L.chord, L.thickness))
+    return 0.0 if L.force is not None else float(load_phys.tip_equivalent_mass(L.span, L.chord, L.thickness, L.density))
 
 
 def variants(req: RequirementsFile, catalog: Catalog) -> list[Variant]:

@@ -15,6 +15,7 @@ class LoadTable(Strict):
     span: Qty("length", positive=True) = 15 * 0.0254
     chord: Qty("length", positive=True) = 10 * 0.0254
     thickness: Qty("length", positive=True) = 0.0625 * 0.0254
+    density: Qty("density", positive=True) = 2700.0   # surface material (issue 9: its inertia, reflected by R^2); assumed aluminium
     dynamic_pressure: list[Qty("pressure", nonnegative=True)] = Field(default_factory=lambda: [10e3, 25e3])
     force: Optional[list[Qty("force")]] = None      # explicit forces instead of pressures
     stiffness: Qty("stiffness", nonnegative=True) = 0.0

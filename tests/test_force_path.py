@@ -127,3 +127,22 @@ def test_hysteresis_time_scale_of_the_seed_stack():
         assert ramp_stroke(p, 150.0, T) * 1e6 == pytest.approx(um, abs=0.15)
     T = matching_ramp_time(p, 150.0, 100e-6)
     assert 1.0 < T < 10.0 and ramp_stroke(p, 150.0, T) == pytest.approx(100e-6, rel=1e-4)
+
+
+def test_simulation_uses_the_series_stiffness(tmp_path):
+    """The simulator's output stiffness is the whole force path's, k / R^2:
+    against a load spring k_L, a frictionless output travels
+    k_out / (k_out + k_L) of its free stroke (the same drive, so the
+    hysteresis cancels). With k_L = k_out: one half."""
+    base = (STUDIES / "seed-table3-prototype.toml").read_text().replace(
+        'wide_friction = "10 N"       # seed 2.3.3\nnarrow_friction = "0.2 N"', 'wide_friction = "0 N"\nnarrow_friction = "0 N"')
+    free = api.evaluate(_write(tmp_path, base, "free.toml"))
+    k_out = free["static"]["output_stiffness_N_m"]
+    # the force path (caps and frame at 3 x the stacks) halves the ideal 5880 N/m
+    assert k_out == pytest.approx(3 * 1.96e7 / 100**2 / 2, rel=0.05)
+    sprung = base.replace('force = ["0 N"]', f'force = ["0 N"]\nstiffness = "{k_out} N/m"')
+    assert sprung != base
+    loaded = api.evaluate(_write(tmp_path, sprung, "sprung.toml"))
+    y0 = free["simulated"]["worst"]["stroke_m"]
+    y1 = loaded["simulated"]["worst"]["stroke_m"]
+    assert y1 / y0 == pytest.approx(0.5, rel=0.01)

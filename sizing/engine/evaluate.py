@@ -81,7 +81,8 @@ def evaluate_piezo(design: PiezoDesignFile, catalog: Catalog, file: str) -> dict
     p_load = worst_load / float(c.narrow_area[0])
     seal_f = {k: float(v[0]) for k, v in seal_friction_at(c, p_load).items()}
     cases = load_cases(design.load)
-    sims = simulate_cases(c, [case["load_N"] for case in cases], design.rise_time)
+    sims = simulate_cases(c, [case["load_N"] for case in cases], design.rise_time,
+                          load_stiffness=design.load.stiffness)
     simulated = [dict(case, **{k: _num(v[0]) for k, v in sim.items()}) for case, sim in zip(cases, sims)]
     return {
         "technology": "piezohydraulic",

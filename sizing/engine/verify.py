@@ -153,16 +153,18 @@ def ramp_drive(c: Candidates, ramp: np.ndarray, t_end: float):
     return t, frac * c.voltage[:, None]
 
 
-def simulate_cases(c: Candidates, load_forces, rise_time, target_stroke=None, keep_traces=False):
-    """Simulate every candidate under each load force (N). Returns one dict per
-    load case with arrays (n_cand,): stroke_m, time_to_stroke_s, speed_m_s,
-    overshoot, peak_m, and when asked the traces (t, position)."""
+def simulate_cases(c: Candidates, load_forces, rise_time, target_stroke=None, keep_traces=False,
+                   load_stiffness=0.0):
+    """Simulate every candidate under each load force (N), plus an optional
+    load spring (N/m). Returns one dict per load case with arrays (n_cand,):
+    stroke_m, time_to_stroke_s, speed_m_s, overshoot, peak_m, and when asked
+    the traces (t, position)."""
     ramp = ramp_time(c, rise_time)
     t_end = float(np.max(ramp)) + SETTLE_TIME_S
     t, volts = ramp_drive(c, ramp, t_end)
     cases = []
     for force in load_forces:
-        result = simulate(dynamic_model(c, force), t, volts)
+        result = simulate(dynamic_model(c, force, load_stiffness), t, volts)
         y = result["position_m"]
         target = 0.9 * y[:, -1] if target_stroke is None else np.broadcast_to(target_stroke, (len(c),))
         case = step_metrics(t, y, target)

@@ -41,6 +41,7 @@ KINDS: dict[str, tuple[str, str]] = {
     "power": ("W", "a power"),
     "damping": ("N*s/m", "a damping coefficient"),
     "conductance": ("m**3/s/Pa", "a flow conductance"),
+    "volume_stiffness": ("Pa/m**3", "a pressure per volume"),
     "dimensionless": ("", "a plain number"),
     "temperature": ("degC", "a temperature"),
 }

@@ -173,8 +173,15 @@ def test_best_design_for_seed_requirements(tmp_path):
     golden = next((d for d in _golden().get("solve", []) if d["name"] == "seed-requirements"), None)
     if not solve_available():
         pytest.skip("sizing solve (issue 3) is not built yet; record its best design with --update once it is")
-    if golden is None or golden.get("best_id") is None:
+    if golden is None:
         pytest.skip("no golden best design recorded yet: run `python -m tests.test_golden --update`")
+    if golden.get("best_id") is None:
+        # issue 9: the golden verdict is that nothing is feasible; what blocks each group must not move
+        best = _best_candidate(tmp_path)
+        assert best is None, f"solve now finds {best['id']} feasible; the golden says none is"
+        groups = {g["variant"]: g.get("blocking") for g in _results(tmp_path)["summary"]["groups"]}
+        assert {k: groups.get(k) for k in golden["blocking"]} == golden["blocking"]
+        return
     best = _best_candidate(tmp_path)
     assert best is not None, "solve found no feasible design for the seed's requirements"
     failures = []
@@ -192,6 +199,10 @@ def solve_available() -> bool:
     """`sizing solve` (issue 3) is registered on the command line."""
     from sizing.cli import app
     return any((c.name or c.callback.__name__) == "solve" for c in app.registered_commands)
+
+
+def _results(out_dir: Path) -> dict:
+    return json.loads((Path(out_dir) / "results.json").read_text())
 
 
 def _best_candidate(out_dir: Path) -> dict | None:
@@ -224,7 +235,9 @@ def update(path: Path = GOLDEN) -> None:
         with tempfile.TemporaryDirectory() as tmp:
             best = _best_candidate(Path(tmp))
         for golden in data.get("solve", []):
-            if best is not None:
+            if best is None:
+                golden["best_id"] = None
+            else:
                 golden["best_id"] = best["id"]
                 for fig in golden.get("figures", []):
                     fig["value"] = lookup(best, fig["path"])

@@ -120,3 +120,20 @@ def test_rejects_mismatched_input_rows():
     t, v = slow_ramp()
     with pytest.raises(ValueError, match="one row per candidate"):
         simulate(prototype(narrow_friction=np.array([0.0, 1.0, 2.0])), t, np.vstack([v, v]))
+
+
+def test_pressure_dependent_seal_friction_closed_form():
+    """Issue 9: the running friction of a seal grows with the chamber
+    pressure, F = F_0 + c p. While the output slides outwards slowly under a
+    constant load F_L, A_n p = F_L + F_0 + c p, so p = (F_L + F_0) / (A_n - c)
+    (by hand: (100 + 5) / (7.126e-5 - 1e-5) = 1.714 MPa, against 1.473 MPa
+    without the pressure term)."""
+    t, v = slow_ramp(rise=2.0, hold=0.0)
+    c = 1e-5                                   # N/Pa, pi d c_p of the narrow seal (exaggerated to show)
+    model = prototype(load_force=100.0, narrow_friction=5.0, narrow_friction_pressure=c, viscous_damping=5.0)
+    out = simulate(model, t, v)
+    moving = (t > 0.8) & (t < 1.9)
+    p = out["pressure_Pa"][0][moving]
+    assert np.median(p) == pytest.approx((100.0 + 5.0) / (A_N - c), rel=0.01)
+    plain = simulate(prototype(load_force=100.0, narrow_friction=5.0, viscous_damping=5.0), t, v)
+    assert np.median(plain["pressure_Pa"][0][moving]) == pytest.approx(105.0 / A_N, rel=0.01)

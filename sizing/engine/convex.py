@@ -35,13 +35,14 @@ from dataclasses import dataclass, field
 
 import cvxpy as cp
 
-from ..physics import geometry
+from ..physics import geometry, structure
 from ..physics.stack import LARGE_SIGNAL_CAPACITANCE_FACTOR
 
 CONSTRAINTS = ("stroke", "blocked_force", "pressure", "drive_current", "natural_frequency")
 MIN_RATIO = 1.5
 FEASIBLE_SLACK = 1.0 + 1e-6
 SOLVER = "CLARABEL"
+ALUMINIUM_E = 68.9e9    # Pa, 6061-T6 wide piston (force_path.ALUMINIUM_E)
 
 
 @dataclass
@@ -67,6 +68,19 @@ class SizingInput:
     fixed_volume: float         # m^3: stacks envelope
     oil_density: float          # kg/m^3
     oil_cost: float             # USD/m^3
+    # force path (issue 9): structure material, stack column, seals at pressure, geometry
+    youngs_modulus: float = 68.9e9      # Pa, caps, base plate and frame
+    poisson: float = 0.33
+    material_density: float = 2700.0    # kg/m^3
+    material_unit_cost: float = 70.0    # USD/kg (stock + machining)
+    allowable_stress: float = 138e6     # Pa, yield / 2
+    stack_length: float = 0.1           # m
+    stiffness_ratio: float = 3.0        # caps and frame at least this x n k_s
+    packing_area: float = 1e-9          # m^2, smallest wide piston the stacks fit under
+    accumulator_compliance: float = 0.0 # m^3/Pa, open accumulator (0: none)
+    seal_f0: float = 0.0                # N/m, seal running friction per metre at zero pressure
+    seal_cp: float = 0.0                # N/(m Pa)
+    surface_mass: float = 0.0           # kg, tip-equivalent mass of the surface
 
 
 @dataclass
@@ -75,6 +89,8 @@ class SizingResult:
     ratio: float
     wide_area: float
     voltage_fraction: float
+    cap_thickness: float = math.nan
+    frame_area: float = math.nan
     slack: dict = field(default_factory=dict)     # requirement -> phase-1 slack (1: met)
     binding: list = field(default_factory=list)   # requirements that cannot be met, worst first
     status: str = ""
@@ -92,11 +108,20 @@ class GPSizer:
         self.R = cp.Variable(pos=True, name="R")
         self.A = cp.Variable(pos=True, name="A_w")
         self.v = cp.Variable(pos=True, name="v")
+        self.t = cp.Variable(pos=True, name="t_cap")
+        self.Af = cp.Variable(pos=True, name="A_frame")
+        # epigraph variables: keep the posynomials short (one cone per term)
+        self.C = cp.Variable(pos=True, name="compliance")
+        self.Fs = cp.Variable(pos=True, name="force_with_seals")
+        self.M = cp.Variable(pos=True, name="reflected_mass")
         names = ["nk", "x0", "V0", "vmax", "F", "S", "beta", "g", "p", "w2", "cur", "m0", "c0", "vol0",
-                 "rho", "coil", "pw"]
+                 "rho", "coil", "pw", "E", "pc", "ps", "sig", "Ls", "knk", "rhom", "cm", "Apack", "cacc",
+                 "f0", "fc", "msurf"]
         self.par = {k: cp.Parameter(pos=True, name=k) for k in names}
         terms = self._constraint_terms()
-        bounds = [self.v <= self.par["vmax"], MIN_RATIO / self.R <= 1]
+        bounds = ([self.v <= self.par["vmax"], MIN_RATIO / self.R <= 1] + self._structure_bounds()
+                  + [self._compliance() / self.C <= 1, (self.par["F"] + self._seal_force()) / self.Fs <= 1,
+                     self._reflected() / self.M <= 1])
         self.problem = cp.Problem(cp.Minimize(self._objective()), [t <= 1 for t in terms.values()] + bounds)
         self.slack = {k: cp.Variable(pos=True, name=f"s_{k}") for k in CONSTRAINTS}
         phase1 = [terms[k] <= self.slack[k] for k in CONSTRAINTS] + [1 / s <= 1 for s in self.slack.values()]
@@ -114,15 +139,53 @@ class GPSizer:
         stroke = R * x
         return x, narrow, stroke
 
+    def _frame_length(self):
+        P = self.par
+        return P["Ls"] + geometry.plate_thickness(self.A, P["p"]) + P["g"]
+
+    def _structure_bounds(self) -> list:
+        """Caps and frame: within the allowable stress at the stack force and
+        at least ``stiffness_ratio`` x n k_s stiff (force_path.size_structure)."""
+        P, A, t, Af = self.par, self.A, self.t, self.Af
+        return [P["ps"] * self.v / t**2 <= 1,                      # plate stress
+                P["knk"] * P["pc"] * A / t**3 <= 1,                # plate stiffness floor
+                P["nk"] * P["x0"] * self.v / (P["sig"] * Af) <= 1,  # tie rod stress
+                P["knk"] * self._frame_length() / (P["E"] * Af) <= 1,   # frame stiffness floor
+                P["Apack"] / A <= 1]                               # the stacks fit under the piston
+
+    def _compliance(self):
+        """1 / k of the whole force path at the wide piston (force_path.py):
+        stacks, base plate and end cap (simply supported), frame, wide piston,
+        oil column, open accumulator."""
+        P, A, t = self.par, self.A, self.t
+        x, _, _ = self._geometry()
+        t_p = geometry.plate_thickness(A, P["p"])
+        return (1 / P["nk"] + 2 * P["pc"] * A / t**3 + self._frame_length() / (P["E"] * self.Af)
+                + t_p / (ALUMINIUM_E * A) + (P["g"] + x) / (P["beta"] * A) + P["cacc"] / A**2)
+
+    def _seal_force(self):
+        """Seal friction at the output at the blocked-force pressure F/A_n:
+        narrow seal + wide seal / R, each pi d (f0 + c_p p) (physics/seals.py)."""
+        P, R, A = self.par, self.R, self.A
+        k = 2 * math.sqrt(math.pi)
+        return (k * P["f0"] * (A / R) ** 0.5 + k * P["fc"] * (A / R) ** -0.5
+                + k * P["f0"] * A**0.5 / R + k * P["fc"] * A**-0.5)
+
+    def _reflected(self):
+        """Mass at the wide piston: wide piston + R^2 (narrow piston, narrow-bore oil, surface)."""
+        P, R, A = self.par, self.R, self.A
+        x, narrow, stroke = self._geometry()
+        return (geometry.wide_piston_mass(A, P["p"])
+                + R**2 * (geometry.ALUMINIUM_DENSITY + P["rho"]) * narrow * (stroke + geometry.ROD_EXTRA_LENGTH)
+                + R**2 * P["msurf"])
+
     def _constraint_terms(self) -> dict:
         P, R, A = self.par, self.R, self.A
         x, narrow, stroke = self._geometry()
-        compliance = 1 / P["nk"] + (P["g"] + x) / (P["beta"] * A)     # 1 / k_wide
-        reflected = (geometry.wide_piston_mass(A, P["p"])
-                     + R**2 * geometry.ALUMINIUM_DENSITY * narrow * (stroke + geometry.ROD_EXTRA_LENGTH))
+        compliance, reflected = self.C, self.M
         return {
             "stroke": P["S"] / (R * x),
-            "blocked_force": P["F"] * R * compliance / x,
+            "blocked_force": self.Fs * R * compliance / x,
             "pressure": P["nk"] * x / (A * P["p"]),
             "drive_current": P["cur"] / R,
             "natural_frequency": P["w2"] * reflected * compliance,
@@ -135,9 +198,10 @@ class GPSizer:
         metal = (geometry.wide_piston_mass(A, p) + geometry.narrow_piston_mass(narrow, stroke)
                  + geometry.casing_mass(A, narrow, p, g, stroke))
         oil = A * g + narrow * stroke
+        structure = P["rhom"] * (2 * A * self.t + self.Af * self._frame_length())
         exprs = {
-            "mass": P["m0"] + metal + P["rho"] * oil,
-            "cost": P["c0"] + geometry.MACHINING_USD_PER_KG * metal + P["coil"] * oil,
+            "mass": P["m0"] + metal + P["rho"] * oil + structure,
+            "cost": P["c0"] + geometry.MACHINING_USD_PER_KG * metal + P["coil"] * oil + P["cm"] * structure,
             "volume": P["vol0"] + geometry.hydraulic_volume(A, narrow, p, g, stroke),
             "power": P["pw"] * v / R,
         }
@@ -158,6 +222,13 @@ class GPSizer:
             "rho": s.oil_density, "coil": max(s.oil_cost, 1e-12),
             # power = V * i at the drive ramp that reaches the stroke in half of t_S
             "pw": 2 * c_large * s.rated_voltage**2 * s.stroke / (s.stack_stroke * s.stroke_time),
+            "E": s.youngs_modulus,
+            "pc": float(structure.plate_compliance_factor(s.poisson)) * 12 * (1 - s.poisson**2) / (math.pi * s.youngs_modulus),
+            "ps": 3 * (3 + s.poisson) * s.n_stiffness * s.stack_stroke / (8 * math.pi * s.allowable_stress),
+            "sig": s.allowable_stress, "Ls": s.stack_length, "knk": s.stiffness_ratio * s.n_stiffness,
+            "rhom": s.material_density, "cm": max(s.material_unit_cost, 1e-9), "Apack": s.packing_area,
+            "cacc": max(s.accumulator_compliance, 1e-30), "f0": max(s.seal_f0, 1e-12),
+            "fc": max(s.seal_cp * s.force * (1 + s.margin), 1e-12), "msurf": max(s.surface_mass, 1e-12),
         }
         for k, val in values.items():
             self.par[k].value = float(val)
@@ -168,7 +239,8 @@ class GPSizer:
         self.set(s)
         status = self._run(self.problem)
         if status in ("optimal", "optimal_inaccurate"):
-            return SizingResult(True, float(self.R.value), float(self.A.value), float(self.v.value), status=status)
+            return SizingResult(True, float(self.R.value), float(self.A.value), float(self.v.value),
+                                float(self.t.value), float(self.Af.value), status=status)
         status1 = self._run(self.phase1)
         if status1 not in ("optimal", "optimal_inaccurate"):
             return SizingResult(False, math.nan, math.nan, math.nan, status=f"phase 1 {status1}",
@@ -178,7 +250,7 @@ class GPSizer:
         if not binding:       # phase 1 met everything: the first solve was a numerical failure
             binding = [max(slack, key=slack.get)]
         return SizingResult(False, float(self.R.value), float(self.A.value), float(self.v.value),
-                            slack=slack, binding=binding, status=status)
+                            float(self.t.value), float(self.Af.value), slack=slack, binding=binding, status=status)
 
     @staticmethod
     def _run(problem: cp.Problem) -> str:

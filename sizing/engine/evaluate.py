@@ -8,10 +8,11 @@ import numpy as np
 from ..errors import InputError
 from ..io.catalog import Catalog
 from ..io.design import DCDesignFile, LoadTable, PiezoDesignFile
-from ..physics import hydraulics, load as load_phys
-from . import dc as dc_engine
-from .piezo import DEFAULT_PRESSURE_RATING_PA, Candidates, part_row, reference_bouc_wen, stack_bouc_wen
-from .verify import metrics, simulate_cases, static_figures
+from ..physics import hydraulics, load as load_phys, thermal
+from . import dc as dc_engine, force_path
+from .piezo import (DEFAULT_PRESSURE_RATING_PA, Candidates, part_row, reference_bouc_wen, stack_bouc_wen,
+                    structure_row)
+from .verify import FILL_TEMPERATURE_DEGC, metrics, seal_friction_at, simulate_cases, static_figures
 
 RATIO_TOLERANCE = 0.01
 
@@ -53,13 +54,35 @@ def evaluate_piezo(design: PiezoDesignFile, catalog: Catalog, file: str) -> dict
         warnings.append("no seal given: the seed's 10 N (wide) and 0.2 N (narrow) seal friction assumed")
     overrides = design.model_dump(include={"wide_piston_mass", "narrow_piston_mass", "wide_friction",
                                            "narrow_friction", "breakaway_ratio", "loss_coefficient",
-                                           "bulk_modulus", "no_return"})
+                                           "bulk_modulus", "no_return", "air_fraction", "air_pressure"})
+    material = (_lookup(catalog, catalog.materials, design.material, file, "material")
+                if design.material is not None else force_path.default_material(catalog.materials))
+    compensator = _lookup(catalog, catalog.compensators, design.compensator, file, "compensator")
+    rating = design.pressure_rating or (seal.pressure_rating if seal else DEFAULT_PRESSURE_RATING_PA)
+    x_free = stack.stroke * voltage / stack.max_voltage
+    t_cap, frame_area = force_path.design_structure(
+        design.n_stacks * stack.stiffness, design.n_stacks * stack.stiffness * x_free, wide_area, stack.length,
+        design.wide_gap, rating, material, design.structure_stiffness_ratio,
+        design.end_cap_thickness, design.frame_area)
+    surface = float(load_phys.tip_equivalent_mass(design.load.span, design.load.chord, design.load.thickness,
+                                                 design.load.density)) \
+        if design.load.force is None else 0.0
+    struct = structure_row(material, t_cap, frame_area, spacer=force_path.spacer_material(catalog.materials),
+                           spacer_length=design.spacer_length, compensator=compensator, surface_mass=surface,
+                           delta_T=design.temperature - FILL_TEMPERATURE_DEGC)
     row = part_row(stack, design.n_stacks, ratio, wide_area, voltage, bw, design.temperature,
-                   design.wide_gap, fluid, seal, amplifier, design.pressure_rating, overrides)
+                   design.wide_gap, fluid, seal, amplifier, design.pressure_rating, overrides, struct)
     c = Candidates.from_rows([row])
-    static = {k: float(np.asarray(v).ravel()[0]) for k, v in static_figures(c, design.rise_time).items()}
+    static = {k: float(np.asarray(v).ravel()[0])
+              for k, v in static_figures(c, design.rise_time, design.strokes_per_second).items()}
+    checks = _buildable(static, design.n_stacks, warnings)
+    members = force_path.members(c)
+    worst_load = max((case["load_N"] for case in load_cases(design.load)), default=0.0)
+    p_load = worst_load / float(c.narrow_area[0])
+    seal_f = {k: float(v[0]) for k, v in seal_friction_at(c, p_load).items()}
     cases = load_cases(design.load)
-    sims = simulate_cases(c, [case["load_N"] for case in cases], design.rise_time)
+    sims = simulate_cases(c, [case["load_N"] for case in cases], design.rise_time,
+                          load_stiffness=design.load.stiffness)
     simulated = [dict(case, **{k: _num(v[0]) for k, v in sim.items()}) for case, sim in zip(cases, sims)]
     return {
         "technology": "piezohydraulic",
@@ -71,8 +94,40 @@ def evaluate_piezo(design: PiezoDesignFile, catalog: Catalog, file: str) -> dict
         "static": static,
         "simulated": {"cases": simulated, "worst": _worst(simulated)},
         "metrics": {k: float(v[0]) for k, v in metrics(c, design.rise_time).items()},
+        "force_path": force_path.as_list(members, 0, material.id, compensator.id if compensator else None,
+                                         force_path.spacer_material(catalog.materials).id),
+        "thermal_budget": {k: static["thermal_" + k] for k in (*thermal.TERMS, "net_m")},
+        "seal_friction_N": {**seal_f, "at_pressure_Pa": p_load},
+        "compensator": _compensator(compensator, members),
+        "checks": checks,
         "warnings": warnings,
     }
+
+
+def _buildable(static: dict, n_stacks: int, warnings: list) -> dict:
+    """Can the design be built: do the stacks fit under the wide piston, does
+    the wide gap exceed the stack stroke plus a clearance. A design that
+    cannot be built is reported (and warned about), not an error."""
+    fit = int(static["stacks_that_fit"])
+    out = {"stacks_that_fit": fit, "stacks_fit": fit >= n_stacks,
+           "wide_gap_ok": static["wide_gap_m"] >= static["gap_needed_m"]}
+    if not out["stacks_fit"]:
+        warnings.append(f"cannot be built: only {fit} of the {n_stacks} stacks fit under the "
+                        f"{static['wide_diameter_m'] * 1e3:.0f} mm wide piston")
+    if not out["wide_gap_ok"]:
+        warnings.append(f"cannot be built: the wide gap {static['wide_gap_m'] * 1e3:.2f} mm is below the stack stroke "
+                        f"plus clearance ({static['gap_needed_m'] * 1e3:.2f} mm): the wide piston bottoms out")
+    out["buildable"] = out["stacks_fit"] and out["wide_gap_ok"]
+    return out
+
+
+def _compensator(comp, members) -> dict | None:
+    if comp is None:
+        return None
+    k = float(members["compensator"]["stiffness"][0])
+    return {"id": comp.id, "kind": comp.kind, "stiffness_N_m": k if math.isfinite(k) else None,
+            "leak_m3_s_Pa": comp.leak_conductance, "mass_kg": comp.mass, "cost_usd": comp.cost_usd,
+            "capacity_m3": comp.capacity}
 
 
 def _geometry(design: PiezoDesignFile, stack, voltage, seal, warnings) -> tuple[float, float]:

@@ -12,7 +12,7 @@ import numpy as np
 
 from ..io.catalog import Amplifier, Fluid, Seal, Stack
 from ..physics import fluid as fluid_props
-from ..physics import geometry, hydraulics, stack as stack_phys
+from ..physics import geometry, hydraulics, seals, stack as stack_phys
 from ..physics.bouc_wen import BoucWen, transfer
 
 # Values used when a design names no fluid or seal (seed section 2.3.2-2.3.3).
@@ -60,6 +60,34 @@ class Candidates:
     seal_cost: np.ndarray
     fluid_cost: np.ndarray
     no_return: np.ndarray
+    # second round: seals at pressure, force path, thermal budget, geometry
+    wide_friction_cp: np.ndarray    # N/Pa: running friction added per Pa of chamber pressure
+    narrow_friction_cp: np.ndarray
+    mat_E: np.ndarray               # structure material (caps, base plate, frame, casing)
+    mat_nu: np.ndarray
+    mat_density: np.ndarray
+    mat_cte: np.ndarray             # 1/K, linear
+    mat_yield: np.ndarray
+    mat_cost: np.ndarray            # USD/kg
+    cap_thickness: np.ndarray       # m, end cap and base plate
+    frame_area: np.ndarray          # m^2, tie rods in total
+    spacer_length: np.ndarray       # m, low-expansion spacer in the stack column (0: none)
+    spacer_E: np.ndarray
+    spacer_density: np.ndarray
+    spacer_cte: np.ndarray
+    spacer_cost: np.ndarray
+    stack_length: np.ndarray        # m
+    stack_diameter: np.ndarray      # m
+    stack_cte: np.ndarray           # 1/K along the stroke
+    comp_kind: np.ndarray           # 0 none, 1 accumulator (open), 2 orifice reservoir
+    comp_volume_stiffness: np.ndarray   # Pa/m^3
+    comp_leak: np.ndarray           # m^3/(s Pa)
+    comp_capacity: np.ndarray       # m^3
+    comp_mass: np.ndarray
+    comp_cost: np.ndarray
+    surface_mass: np.ndarray        # kg, tip-equivalent mass of the driven surface (I / c^2)
+    delta_T: np.ndarray             # K, fill temperature to the required temperature
+    amp_continuous: np.ndarray      # A, amplifier continuous current (inf: none)
 
     @classmethod
     def from_rows(cls, rows: list[dict]) -> "Candidates":
@@ -92,6 +120,14 @@ class Candidates:
     def oil_volume(self):
         return self.wide_area * self.wide_gap + self.narrow_area * self.free_stroke
 
+    @property
+    def reflected_mass(self):
+        """Mass at the wide piston (kg): the wide piston plus R^2 x (narrow
+        piston, the oil in the narrow bore, the surface's tip-equivalent
+        mass) (PHYSICS-NOTES second round, "Geometry")."""
+        narrow_oil = self.density * self.narrow_area * (self.free_stroke + geometry.ROD_EXTRA_LENGTH)
+        return self.wide_mass + self.ratio**2 * (self.narrow_mass + narrow_oil + self.surface_mass)
+
 
 def reference_bouc_wen(stacks: dict[str, Stack]) -> Stack | None:
     """The stack whose measured Bouc-Wen parameters others borrow (seed 2.3.2)."""
@@ -118,8 +154,10 @@ def part_row(stack: Stack, n_stacks: int, ratio: float, wide_area: float, voltag
              bouc_wen: BoucWen, temperature: float, wide_gap: float,
              fluid: Fluid | None = None, seal: Seal | None = None,
              amplifier: Amplifier | None = None, pressure_rating: float | None = None,
-             overrides: dict | None = None) -> dict:
-    """One candidate as a dict of SI floats (keys are Candidates fields)."""
+             overrides: dict | None = None, structure: dict | None = None) -> dict:
+    """One candidate as a dict of SI floats (keys are Candidates fields).
+    ``structure``: the force-path choices (``structure_row``); default: the
+    catalog's first material sized by the closed-form rule, no compensator."""
     o = overrides or {}
     narrow_area = wide_area / ratio
     stroke = stack_phys.derated_stroke(stack.stroke, stack.stroke_temperature_coefficient, temperature)
@@ -142,6 +180,35 @@ def part_row(stack: Stack, n_stacks: int, ratio: float, wide_area: float, voltag
     row["k_contract"] = k_loss if k_loss is not None else float(hydraulics.contraction_loss_coefficient(ratio))
     row["k_expand"] = float(hydraulics.expansion_loss_coefficient(ratio))
     row.update(_amplifier_row(amplifier))
+    row.update({"stack_length": stack.length, "stack_diameter": stack.diameter,
+                "stack_cte": stack.thermal_expansion if stack.thermal_expansion is not None else STACK_CTE_DEFAULT})
+    row.update(structure if structure is not None else {})
+    return row
+
+
+# assumed: the reviewer's "stacks about 0 to +3 ppm/K" (PHYSICS-NOTES, second
+# round) for stacks whose catalog entry gives no expansion coefficient.
+STACK_CTE_DEFAULT = 2e-6
+
+
+def structure_row(material, cap_thickness, frame_area, spacer=None, spacer_length=0.0,
+                  compensator=None, surface_mass=0.0, delta_T=0.0) -> dict:
+    """The force-path and thermal fields of a candidate row (SI floats)."""
+    sp = spacer if spacer is not None else material
+    row = {"mat_E": material.youngs_modulus, "mat_nu": material.poisson, "mat_density": material.density,
+           "mat_cte": material.thermal_expansion, "mat_yield": material.yield_strength,
+           "mat_cost": material.cost_usd, "cap_thickness": float(cap_thickness), "frame_area": float(frame_area),
+           "spacer_length": float(spacer_length), "spacer_E": sp.youngs_modulus, "spacer_density": sp.density,
+           "spacer_cte": sp.thermal_expansion, "spacer_cost": sp.cost_usd,
+           "surface_mass": float(surface_mass), "delta_T": float(delta_T)}
+    if compensator is None:
+        row.update({"comp_kind": 0.0, "comp_volume_stiffness": np.inf, "comp_leak": 0.0, "comp_capacity": 0.0,
+                    "comp_mass": 0.0, "comp_cost": 0.0})
+    else:
+        row.update({"comp_kind": 1.0 if compensator.kind == "accumulator" else 2.0,
+                    "comp_volume_stiffness": compensator.volume_stiffness, "comp_leak": compensator.leak_conductance,
+                    "comp_capacity": compensator.capacity, "comp_mass": compensator.mass,
+                    "comp_cost": compensator.cost_usd})
     return row
 
 
@@ -153,23 +220,31 @@ def _fluid_row(fluid: Fluid | None, temperature: float, o: dict) -> dict:
         f = {"density": float(fluid_props.density_at(fluid.density, fluid.thermal_expansion, temperature)),
              "thermal_expansion": fluid.thermal_expansion, "cost_usd": fluid.cost_usd}
         bulk = float(fluid_props.bulk_modulus_at(fluid.bulk_modulus, fluid.bulk_modulus_temperature_coefficient, temperature))
-    if AIR_FRACTION > 0:
-        bulk = float(fluid_props.effective_bulk_modulus(bulk, AIR_FRACTION, 101325.0))
+    air = o.get("air_fraction") or AIR_FRACTION
+    if air > 0:
+        bulk = float(fluid_props.effective_bulk_modulus(bulk, air, o.get("air_pressure") or 101325.0))
     return {"density": f["density"], "bulk_modulus": o.get("bulk_modulus") or bulk,
             "thermal_expansion": f["thermal_expansion"], "fluid_cost": f["cost_usd"]}
 
 
 def _seal_row(seal: Seal | None, wide_area: float, narrow_area: float, o: dict) -> dict:
+    """Running friction at zero pressure and its growth per Pa of chamber
+    pressure (pi d c_p, physics/seals.py). An explicit friction override
+    replaces both for that seal (the seed's fixed 10 N / 0.2 N)."""
     if seal is None:
         wide, narrow, breakaway, cost = *SEED_FRICTION_N, 1.0, 0.0
+        cp_w = cp_n = 0.0
     else:
-        from ..physics.seals import running_friction
         d_w, d_n = 2 * geometry.radius(wide_area), 2 * geometry.radius(narrow_area)
-        wide = float(running_friction(seal.friction_per_length, d_w))
-        narrow = float(running_friction(seal.friction_per_length, d_n))
+        wide = float(seals.running_friction(seal.friction_per_length, d_w))
+        narrow = float(seals.running_friction(seal.friction_per_length, d_n))
+        cp_w = float(np.pi * d_w * seal.friction_pressure_coefficient)
+        cp_n = float(np.pi * d_n * seal.friction_pressure_coefficient)
         breakaway, cost = seal.breakaway_ratio, 2 * seal.cost_usd
     return {"wide_friction": _pick(o.get("wide_friction"), wide),
             "narrow_friction": _pick(o.get("narrow_friction"), narrow),
+            "wide_friction_cp": 0.0 if o.get("wide_friction") is not None else cp_w,
+            "narrow_friction_cp": 0.0 if o.get("narrow_friction") is not None else cp_n,
             "breakaway": _pick(o.get("breakaway_ratio"), breakaway), "seal_cost": cost}
 
 
@@ -179,6 +254,8 @@ def _pick(override, default):
 
 def _amplifier_row(amplifier: Amplifier | None) -> dict:
     if amplifier is None:
-        return {"amp_max_current": np.inf, "amp_slew": 0.0, "amp_mass": 0.0, "amp_cost": 0.0}
+        return {"amp_max_current": np.inf, "amp_slew": 0.0, "amp_mass": 0.0, "amp_cost": 0.0,
+                "amp_continuous": np.inf}
     return {"amp_max_current": amplifier.max_current, "amp_slew": amplifier.slew_rate or 0.0,
-            "amp_mass": amplifier.mass, "amp_cost": amplifier.cost_usd}
+            "amp_mass": amplifier.mass, "amp_cost": amplifier.cost_usd,
+            "amp_continuous": amplifier.continuous_current}

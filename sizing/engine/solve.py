@@ -3,16 +3,19 @@
 1. ``search.enumerate_combos``: every stack x fluid x seal x amplifier x
    stack count, pruned by temperature ratings, the work bound and the
    amplifier voltage, each with the requirement that rules it out.
-2. ``convex.GPSizer``: one geometric program per surviving combination
-   sizes R, the wide piston area and the drive voltage.
+2. ``piezo_designs``: one geometric program per surviving combination
+   (and open accumulator) sizes R, the wide piston area, the drive voltage,
+   the end cap / base plate thickness and the frame section with the whole
+   force path in series; the other structure materials are re-sized in
+   closed form (issue 9).
 3. The sized designs go through the same code as ``sizing evaluate``
    (``piezo.part_row``, ``verify.static_figures``, ``verify.metrics``), so
    their static figures agree with it, and are simulated under each load
    case (``verify.simulate_cases``), on and near the Pareto front first.
-4. 100 degC: every design is kept as built ("uncompensated", whose oil
-   drifts the output by V alpha_T dT / A_n) and, when asked, again with a
-   thermal compensator (an assumed spring-loaded accumulator, with a stated
-   mass and cost): both are in the results, side by side.
+4. 100 degC: every design is kept as built ("uncompensated", judged on its
+   whole thermal budget), with a passive low-expansion spacer where that
+   cancels the budget ("passive"), and with each catalog compensator
+   ("compensated"), each with its own margins.
 5. The catalog's DC actuators are simulated under the same load cases and
    ranked in the same list (``dc_candidates.py``).
 """
@@ -29,17 +32,22 @@ from ..errors import SimulationError
 from ..io.catalog import Catalog
 from ..io.requirements import RequirementsFile
 from ..physics import fluid as fluid_props
-from ..physics import geometry, stack as stack_phys
-from .convex import GPSizer, SizingInput
+from ..physics import stack as stack_phys, thermal
+from . import piezo_designs
 from .dc_candidates import dc_candidates
 from .evaluate import load_cases
-from .piezo import Candidates, part_row, reference_bouc_wen, stack_bouc_wen
+from .piezo import Candidates
+from .piezo_designs import Variant, effective_gap, sizing_input, variants  # noqa: F401  (the module's API)
 from .rank import ceiling_margin, floor_margin, nondominated_levels, rank_order, verdict
 from .search import Combo, enumerate_combos
 from .solve_summary import _assumptions, _clean, _requirements_si, _summary, _traces
-from .verify import metrics, ramp_time, simulate_cases, static_figures
+from .verify import simulate_cases
 
 SIM_CHUNK = 32
+# margins the simulation order ignores: they depend on the duty or the
+# compensation, not on what the simulation checks, and must not keep the
+# designs that pass everything else from being simulated first
+SCREEN_IGNORES = ("thermal_drift", "amplifier_continuous_current")
 OBJECTIVE_KEYS = {"mass": "mass_kg", "cost": "cost_usd", "volume": "volume_m3", "power": "power_W"}
 
 
@@ -62,10 +70,12 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
     loads = [c["load_N"] for c in cases]
     combos = enumerate_combos(req, catalog)
     to_size = [c for c in combos if not c.pruned]
-    sized = _size(req, to_size, progress)
-    designs = _designs(req, catalog, sized)
+    sized = piezo_designs.size(req, catalog, to_size, progress)
+    designs = piezo_designs.designs(req, catalog, sized)
     _simulate(req, designs, loads, progress)
-    candidates = [_pruned_candidate(req, c) for c in combos if c.pruned]
+    pruned = [c for c in combos if c.pruned]
+    candidates = [_pruned_candidate(req, c) for c in pruned]
+    piezo_designs.nominal_figures(req, catalog, pruned, candidates)
     for d in designs:
         candidates.extend(_design_candidates(req, d))
     dc = dc_candidates(req, catalog, loads) if req.options.dc_motors else []
@@ -83,6 +93,7 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
         "assumptions": _assumptions(req),
         "summary": _summary(req, candidates, catalog),
         "disagreements": _disagreements(designs),
+        "hysteresis_time_scales": piezo_designs.hysteresis_time_scales(catalog),
         "counts": {"combinations": len(combos), "pruned": len(combos) - len(to_size), "sized": len(to_size),
                    "gp_feasible": sum(1 for d in designs if d["gp_success"]),
                    "simulated": sum(1 for d in designs if d["simulated"] is not None)},
@@ -90,98 +101,6 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
     traces = _traces(req, candidates, designs, dc, loads)
     results["runtime_s"] = time.perf_counter() - start
     return SolveOutput(results=_clean(results), traces=traces)
-
-
-# --- sizing ---------------------------------------------------------------
-def sizing_input(req: RequirementsFile, c: Combo) -> SizingInput:
-    T = req.requirements.max_temperature
-    f, s, st = c.fluid, c.seal, c.stack
-    stack_volume = st.length * st.diameter**2 * (1.0 if st.section == "square" else math.pi / 4)
-    return SizingInput(
-        n_stiffness=c.n * st.stiffness, stack_stroke=c.stack_stroke, rated_voltage=st.max_voltage,
-        max_fraction=c.voltage_fraction_max, force=req.requirements.blocked_force,
-        stroke=req.requirements.stroke,
-        bulk_modulus=float(fluid_props.bulk_modulus_at(f.bulk_modulus, f.bulk_modulus_temperature_coefficient, T)),
-        wide_gap=req.options.wide_gap, pressure_rating=s.pressure_rating,
-        natural_frequency=req.natural_frequency, stroke_time=req.stroke_time,
-        n_capacitance=c.n * st.capacitance, max_current=c.amplifier.max_current,
-        margin=req.options.design_margin,
-        fixed_mass=c.n * st.mass * (1 + geometry.FRAME_FRACTION) + c.amplifier.mass,
-        fixed_cost=c.n * st.cost_usd + c.amplifier.cost_usd + 2 * s.cost_usd + geometry.FIXED_HYDRAULIC_USD,
-        fixed_volume=1.5 * c.n * stack_volume,
-        oil_density=float(fluid_props.density_at(f.density, f.thermal_expansion, T)),
-        oil_cost=f.cost_usd * 1000.0)
-
-
-def _size(req, combos, progress):
-    sizer = GPSizer(req.objectives.minimize)
-    out = []
-    for i, c in enumerate(combos):
-        out.append((c, sizer.solve(sizing_input(req, c))))
-        if i % 8 == 0 or i == len(combos) - 1:
-            _progress(progress, "sizing", i + 1, len(combos))
-    return out
-
-
-def _designs(req, catalog, sized) -> list[dict]:
-    """Build the sized designs with the same code as ``sizing evaluate``."""
-    reference = reference_bouc_wen(catalog.stacks)
-    T, S = req.requirements.max_temperature, req.requirements.stroke
-    rows, designs = [], []
-    for combo, res in sized:
-        if not (math.isfinite(res.ratio) and math.isfinite(res.wide_area)):
-            designs.append({"combo": combo, "gp": res, "gp_success": False, "index": None, "simulated": None})
-            continue
-        v = min(res.voltage_fraction, combo.voltage_fraction_max)
-        voltage = v * combo.stack.max_voltage
-        free = res.ratio * combo.stack_stroke * v
-        rise = 0.5 * req.stroke_time * free / S          # reach the stroke in half the time allowed
-        bw, bw_source = stack_bouc_wen(combo.stack, reference)
-        rows.append(part_row(combo.stack, combo.n, res.ratio, res.wide_area, voltage, bw, T,
-                             req.options.wide_gap, combo.fluid, combo.seal, combo.amplifier))
-        designs.append({"combo": combo, "gp": res, "gp_success": res.success, "index": len(rows) - 1,
-                        "rise": rise, "bouc_wen_source": bw_source, "simulated": None})
-    if not rows:
-        return designs
-    c = Candidates.from_rows(rows)
-    rise = np.array([d["rise"] for d in designs if d["index"] is not None])
-    ramp = ramp_time(c, rise)
-    static = static_figures(c, ramp)
-    met = metrics(c, ramp)
-    for d in designs:
-        i = d["index"]
-        if i is None:
-            continue
-        d["cand"] = c.take([i])
-        d["ramp"] = float(ramp[i])
-        d["static"] = {k: float(np.asarray(v)[i]) for k, v in static.items()}
-        d["metrics"] = {k: float(np.asarray(v)[i]) for k, v in met.items()}
-        d["static_margins"] = _static_margins(req, d)
-    return designs
-
-
-def _static_margins(req, d) -> dict:
-    r, o, combo, st = req.requirements, req.options, d["combo"], d["static"]
-    stack = combo.stack
-    c_large = combo.n * stack.capacitance * stack_phys.LARGE_SIGNAL_CAPACITANCE_FACTOR
-    volts_to_stroke = r.stroke * stack.max_voltage / (st["ratio"] * combo.stack_stroke)
-    i_req = c_large * volts_to_stroke / req.stroke_time
-    drift = st["thermal_drift_per_K_m"] * (r.max_temperature - o.drift_reference_temperature)
-    st["thermal_drift_m"] = drift
-    st["required_current_A"] = i_req
-    st["speed_m_s"] = st["free_stroke_m"] / d["ramp"]       # the planned drive ramp, at the amplifier's limit
-    st["rise_time_s"] = d["ramp"]
-    return {
-        "stroke": floor_margin(st["free_stroke_m"], r.stroke),
-        "blocked_force": floor_margin(st["blocked_force_compliant_N"], r.blocked_force),
-        "speed": floor_margin(st["speed_m_s"], r.speed),
-        "temperature": combo.margins["temperature"],
-        "amplifier_temperature": combo.margins["amplifier_temperature"],
-        "pressure": floor_margin(combo.seal.pressure_rating, st["blocked_pressure_Pa"]),
-        "drive_current": floor_margin(combo.amplifier.max_current, i_req),
-        "natural_frequency": floor_margin(st["natural_frequency_Hz"], req.natural_frequency),
-        "thermal_drift": ceiling_margin(abs(drift), o.max_drift_fraction * r.stroke),
-    }
 
 
 # --- verification ---------------------------------------------------------
@@ -194,17 +113,36 @@ def _simulate(req, designs, loads, progress) -> None:
         return
     keys = [OBJECTIVE_KEYS[k] for k in req.objectives.minimize]
     F = np.array([[d["metrics"][k] for k in keys] for d in pool])
-    ok = np.array([min(v for k, v in d["static_margins"].items() if k != "thermal_drift") >= 0 for d in pool])
+    ok = np.array([min(v for k, v in d["static_margins"].items() if k not in SCREEN_IGNORES) >= 0 for d in pool])
     level = np.full(len(pool), 10**6)
     if ok.any():
         level[ok] = nondominated_levels(F[ok])
     order = np.lexsort((level, ~ok))[: req.options.max_simulated]
     chosen = [pool[i] for i in order]
+    # designs that differ only in the structure material have the same force
+    # path (the material screen keeps the members' stiffness) and so the same
+    # dynamics: simulate one of each and share the result
+    twins: dict[tuple, list] = {}
+    for d in chosen:
+        twins.setdefault(_dynamic_key(d), []).append(d)
+    unique = [group[0] for group in twins.values()]
     S = req.requirements.stroke
-    for start in range(0, len(chosen), SIM_CHUNK):
-        chunk = chosen[start:start + SIM_CHUNK]
+    for start in range(0, len(unique), SIM_CHUNK):
+        chunk = unique[start:start + SIM_CHUNK]
         _simulate_chunk(chunk, loads, S)
-        _progress(progress, "simulating", min(start + SIM_CHUNK, len(chosen)), len(chosen))
+        _progress(progress, "simulating", min(start + SIM_CHUNK, len(unique)), len(unique))
+    for group in twins.values():
+        for d in group[1:]:
+            d["simulated"] = group[0]["simulated"]
+
+
+def _dynamic_key(d) -> tuple:
+    """What the simulation depends on, beyond the parts: the force path's
+    mechanical and hydraulic stiffness, the ramp, the masses and the leak."""
+    st, c = d["static"], d["cand"]
+    comp = d["variant"].compensator
+    return (d["combo"].key, comp.id if comp else None, f"{st['force_path_stiffness_N_m']:.9e}",
+            f"{d['ramp']:.9e}", f"{float(c.wide_mass[0]):.9e}", f"{d['spacer']:.9e}")
 
 
 def _simulate_chunk(chunk, loads, S) -> None:
@@ -267,7 +205,7 @@ def _pruned_candidate(req, combo: Combo) -> dict:
         "components": _components(combo, None), "stack_params": _stack_params(combo),
         "static": {"work_J": float(stack_phys.work_capacity(combo.n, s.stiffness, combo.stack_stroke * combo.voltage_fraction_max))},
         "simulated": {}, "margins": dict(combo.margins),
-        "metrics": {"mass_kg": combo.n * s.mass * (1 + geometry.FRAME_FRACTION) + a.mass,
+        "metrics": {"mass_kg": combo.n * s.mass + a.mass,
                     "cost_usd": combo.n * s.cost_usd + a.cost_usd},
         "metrics_lower_bound": True, "temperatures": _temperatures(combo),
         "reason": "ruled out before sizing: " + ", ".join(reasons),
@@ -275,14 +213,16 @@ def _pruned_candidate(req, combo: Combo) -> dict:
 
 
 def _design_candidates(req, d) -> list[dict]:
-    combo, res = d["combo"], d["gp"]
-    o = req.options
+    combo, res, var = d["combo"], d["gp"], d["variant"]
+    comp = var.compensator
+    components = dict(_components(combo, res.ratio), material=var.material.id,
+                      compensator=comp.id if comp else None)
     base = {
-        "technology": "piezohydraulic", "components": _components(combo, res.ratio),
-        "stack_params": _stack_params(combo), "temperatures": _temperatures(combo),
+        "id": combo.key + var.suffix(), "technology": "piezohydraulic", "variant": var.name,
+        "components": components, "stack_params": _stack_params(combo), "temperatures": _temperatures(combo),
     }
     if d["index"] is None:
-        return [dict(base, id=combo.key, variant="uncompensated", stage="gp_failed", static={}, simulated={},
+        return [dict(base, stage="gp_failed", static={}, simulated={},
                      margins={**combo.margins, res.driver or "solver": -math.inf},
                      metrics={}, reason=f"the geometric program failed ({res.status})")]
     margins = dict(d["static_margins"])
@@ -294,34 +234,47 @@ def _design_candidates(req, d) -> list[dict]:
     stage = "simulated" if simulated else ("sized" if res.success else "gp_infeasible")
     T = req.requirements.max_temperature
     f = combo.fluid
+    st = d["static"]
     base.update({
-        "stage": stage, "static": d["static"], "simulated": simulated,
+        "stage": stage, "static": st, "simulated": simulated,
         "static_margins": d["static_margins"],
+        "force_path": d["force_path"],
+        "thermal_budget": {k: st["thermal_" + k] for k in (*thermal.TERMS, "net_m")},
+        "seal_friction_N": d["seal_friction"],
+        "compensator": _compensator_entry(comp, d),
         "design": {"technology": "piezohydraulic", "stack": combo.stack.id, "n_stacks": combo.n,
-                   "voltage": d["cand"].voltage[0], "wide_diameter": d["static"]["wide_diameter_m"],
-                   "narrow_diameter": d["static"]["narrow_diameter_m"], "fluid": f.id, "seal": combo.seal.id,
-                   "amplifier": combo.amplifier.id, "wide_gap": o.wide_gap, "rise_time": d["ramp"],
-                   "temperature": T},
+                   "voltage": d["cand"].voltage[0], "wide_diameter": st["wide_diameter_m"],
+                   "narrow_diameter": st["narrow_diameter_m"], "fluid": f.id, "seal": combo.seal.id,
+                   "amplifier": combo.amplifier.id, "wide_gap": st["wide_gap_m"], "rise_time": d["ramp"],
+                   "temperature": T, "material": var.material.id, "end_cap_thickness": res.cap_thickness,
+                   "frame_area": res.frame_area, "compensator": comp.id if comp else None,
+                   "strokes_per_second": req.duty.strokes_per_second},
         "fluid_at_temperature": {
             "kinematic_viscosity_m2_s": float(fluid_props.kinematic_viscosity(f.viscosity_40C, f.viscosity_100C, T)),
             "bulk_modulus_Pa": float(d["cand"].bulk_modulus[0]),
             "flash_point_degC": f.flash_point},
         "bouc_wen_source": d["bouc_wen_source"],
+        "hysteresis": (piezo_designs.hysteresis(combo.stack, d["bw"][0], float(d["cand"].voltage[0]), d["ramp"])
+                       if d["simulated"] is not None else None),
         "gp": {"success": res.success, "status": res.status, "binding": res.binding, "slack": res.slack},
         "reason": "" if res.success else "no design of these parts meets: " + ", ".join(res.binding),
+        "metrics": dict(d["metrics"]), "margins": margins,
+        "rests_on_assumed": piezo_designs.assumed(combo, var),
     })
-    plain = dict(base, id=combo.key, variant="uncompensated", margins=margins, metrics=dict(d["metrics"]))
-    out = [plain]
-    if o.thermal_compensation:
-        m = {k: v for k, v in margins.items() if k != "thermal_drift"}
-        met = dict(d["metrics"])
-        met["mass_kg"] += o.compensator_mass
-        met["cost_usd"] += o.compensator_cost_usd
-        expansion = d["static"]["oil_volume_m3"] * f.thermal_expansion * abs(T - o.drift_reference_temperature)
-        out.append(dict(base, id=combo.key + "-tc", variant="compensated", margins=m, metrics=met,
-                        compensator={"mass_kg": o.compensator_mass, "cost_usd": o.compensator_cost_usd,
-                                     "expansion_volume_m3": expansion}))
-    return out
+    if d["spacer"] > 0:
+        base["passive_compensation"] = {"spacer_length_m": d["spacer"],
+                                        "spacer_material": next(r["material"] for r in d["force_path"] if r["member"] == "spacer")}
+        base["design"]["spacer_length"] = d["spacer"]
+    return [base]
+
+
+def _compensator_entry(comp, d) -> dict | None:
+    if comp is None:
+        return None
+    k = next((r["stiffness_N_m"] for r in d["force_path"] if r["member"] == "compensator"), None)
+    return {"id": comp.id, "kind": comp.kind, "stiffness_N_m": k, "leak_m3_s_Pa": comp.leak_conductance,
+            "mass_kg": comp.mass, "cost_usd": comp.cost_usd, "capacity_m3": comp.capacity,
+            "volume_taken_m3": d["static"]["thermal_compensator_volume_m3"]}
 
 
 def _rank(req, candidates) -> None:
@@ -363,7 +316,7 @@ def _disagreements(designs) -> list[dict]:
             m_sim = b / req_value - 1
             flip = (sm[key] >= 0) != (m_sim >= 0)
             if flip or abs(b / a - 1) > 0.10:
-                out.append({"id": d["combo"].key, "requirement": key, "static": a, "simulated": b,
+                out.append({"id": d["id"], "requirement": key, "static": a, "simulated": b,
                             "static_margin": sm[key], "simulated_margin": m_sim, "verdict_changes": flip})
     return out
 

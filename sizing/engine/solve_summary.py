@@ -15,8 +15,10 @@ from .dc_candidates import dc_duration
 from .verify import simulate_cases
 
 TRACE_POINTS = 600
-GROUPS = (("piezohydraulic", "uncompensated"), ("piezohydraulic", "compensated"), ("dc_motor", "catalog"))
+GROUPS = (("piezohydraulic", "uncompensated"), ("piezohydraulic", "passive"), ("piezohydraulic", "compensated"),
+          ("dc_motor", "catalog"))
 LABELS = {("piezohydraulic", "uncompensated"): "piezohydraulic, as built (no thermal compensation)",
+          ("piezohydraulic", "passive"): "piezohydraulic, passive compensation (low-expansion spacer, longer frame)",
           ("piezohydraulic", "compensated"): "piezohydraulic with thermal compensator",
           ("dc_motor", "catalog"): "DC motor lead-screw actuators (catalog)"}
 
@@ -40,7 +42,14 @@ def _assumptions(req: RequirementsFile) -> list[str]:
         f"stack counts 1 to {o.max_stacks}; every stack, fluid, seal and amplifier of the catalog combined",
         f"static sizing margin {o.design_margin:.0%} on stroke and blocked force (the simulation then checks them)",
         f"wide-chamber oil gap {o.wide_gap * 1e3:g} mm; oil volume = A_wide gap + A_narrow stroke",
-        "blocked force includes the oil column spring (bulk modulus at the required temperature) in series with the stacks",
+        "blocked force: the stack stroke over the summed compliances of the whole force path (stacks, base plate, "
+        "tie-rod frame, wide piston, oil column at the required temperature, open accumulator, end cap, narrow piston), "
+        "over R, less the seal friction at the blocked pressure; plates simply supported (Roark, mean deflection)",
+        f"end caps, base plate and frame at least {o.structure_stiffness_ratio:g} x the stacks' stiffness and within "
+        "half the yield; sized in 6061-T6 by the geometric program, re-sized in closed form for the other materials",
+        "seal friction grows with the chamber pressure (friction_per_length + friction_pressure_coefficient x p), "
+        "in the static screen and in the simulation",
+        f"amplifier continuous current over {req.duty.strokes_per_second:g} full strokes per second ([duty])",
         "pressure: the stack force over the wide piston must stay within the seal's pressure rating",
         f"drive current: the charge n C_large V that reaches the stroke must flow within stroke/speed = {req.stroke_time:g} s; "
         f"C_large = {stack_phys.LARGE_SIGNAL_CAPACITANCE_FACTOR:g} x the small-signal capacitance",
@@ -52,8 +61,9 @@ def _assumptions(req: RequirementsFile) -> list[str]:
         "speed = required stroke / time to reach it (DC motor: 98 % of it)",
         f"thermal drift of the enclosed oil from {o.drift_reference_temperature:g} to {r.max_temperature:g} degC must stay "
         f"within {o.max_drift_fraction:.0%} of the stroke unless compensated",
-        (f"compensated designs carry an assumed spring-loaded accumulator: +{o.compensator_mass:g} kg, "
-         f"+{o.compensator_cost_usd:g} USD" if o.thermal_compensation else "no compensated designs evaluated"),
+        ("compensated designs carry a catalog compensator (catalogs/compensators.toml) in their force path and "
+         "simulation; passive designs a low-expansion spacer that cancels the thermal budget"
+         if o.thermal_compensation else "no compensated designs evaluated"),
         amp,
         "temperature margin = (rated - required) / required, temperatures in kelvin",
         "Bouc-Wen hysteresis of stacks without their own data is transferred in normalised form from the measured stack",
@@ -137,13 +147,15 @@ def _thermal_statement(req, candidates) -> str:
     drifting = [c for c in plain if c["margins"]["thermal_drift"] < 0]
     smallest = min(plain, key=lambda c: abs(c["static"].get("thermal_drift_m", math.inf)))
     drift = abs(smallest["static"]["thermal_drift_m"])
-    text = (f"Thermal expansion of the enclosed oil moves the output by V alpha_T dT / A_narrow: between "
-            f"{req.options.drift_reference_temperature:g} and {T:g} degC the smallest drift of any sized design is "
-            f"{drift * 1e3:.1f} mm ({smallest['id']}) against a stroke of {req.requirements.stroke * 1e3:g} mm "
-            f"(allowed: {req.options.max_drift_fraction:.0%}). ")
+    text = (f"Thermal budget from {req.options.drift_reference_temperature:g} to {T:g} degC (oil, casing, stacks, "
+            f"pistons, frame; net against {req.options.max_drift_fraction:.0%} of the "
+            f"{req.requirements.stroke * 1e3:g} mm stroke): the smallest net drift of any sized as-built design is "
+            f"{drift * 1e3:.1f} mm ({smallest['id']}); its oil term alone is "
+            f"{smallest.get('thermal_budget', {}).get('oil_m', math.nan) * 1e3:.1f} mm. ")
     if len(drifting) == len(plain):
         text += ("The drift makes EVERY uncompensated piezohydraulic design infeasible. "
-                 "Compensated designs (with an assumed thermal compensator) are shown separately.")
+                 "Passively compensated designs (a low-expansion spacer and a longer frame) and designs with a "
+                 "catalog compensator are shown separately.")
     else:
         text += f"{len(drifting)} of {len(plain)} sized uncompensated designs fail it."
     return text
@@ -158,7 +170,7 @@ def _downsample(t, y):
 def _traces(req, candidates, designs, dc, loads, top=3) -> list[dict]:
     """Time traces of the top designs: the best feasible ones, the best of
     each technology group, re-simulated with their traces kept."""
-    by_key = {d["combo"].key: d for d in designs if d.get("index") is not None}
+    by_key = {d["id"]: d for d in designs if d.get("index") is not None}
     chosen = [c for c in candidates if c["feasible"]][:top]
     for key in GROUPS:
         members = [c for c in candidates if _group(c) == key and c.get("stage") in ("simulated", "sized")]
@@ -167,7 +179,7 @@ def _traces(req, candidates, designs, dc, loads, top=3) -> list[dict]:
     out, seen = [], set()
     S = req.requirements.stroke
     for c in chosen:
-        base = c["id"].removesuffix("-tc")
+        base = c["id"]
         if base in seen:
             continue
         seen.add(base)
@@ -193,6 +205,13 @@ def _traces(req, candidates, designs, dc, loads, top=3) -> list[dict]:
 
 def _clean(obj):
     """JSON-safe: numpy to Python, non-finite floats to None."""
+    t = type(obj)
+    if t is float:
+        return obj if math.isfinite(obj) else None
+    if t is str or t is int or t is bool or obj is None:
+        return obj
+    if t is dict:
+        return {k if type(k) is str else str(k): _clean(v) for k, v in obj.items()}
     if isinstance(obj, dict):
         return {str(k): _clean(v) for k, v in obj.items()}
     if isinstance(obj, (list, tuple)):

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..physics import geometry, hydraulics, stack as stack_phys, thermal
+from ..physics import geometry, hydraulics, stack as stack_phys, structure, thermal
+from . import force_path
 from ..sim.metrics import step_metrics
 from ..sim.piezohydraulic import PiezoHydraulicModel, simulate
 from .piezo import Candidates
@@ -22,29 +23,99 @@ def ramp_time(c: Candidates, rise_time) -> np.ndarray:
     return np.maximum.reduce([np.broadcast_to(rise_time, c.voltage.shape), t_current, t_slew])
 
 
-def static_figures(c: Candidates, rise_time) -> dict[str, np.ndarray]:
-    out = hydraulics.static_figures(
-        c.n_stacks, c.stiffness, c.stack_free_stroke, c.ratio,
-        wide_area=c.wide_area, oil_volume=c.oil_volume, bulk_modulus=c.bulk_modulus,
-        wide_mass=c.wide_mass, narrow_mass=c.narrow_mass)
+GAP_CLEARANCE_M = 0.5e-3       # assumed: wide gap left over the stack stroke (machining, tilt, oil film)
+STACK_SPACING_M = 1e-3         # assumed: clearance between neighbouring stacks under the wide piston
+FILL_TEMPERATURE_DEGC = 20.0   # oil filled and sealed at this temperature (thermal budget reference)
+PISTON_CTE = 23.6e-6           # 1/K, 6061-T6 casing and pistons (catalogs/materials.toml al-6061-t6)
+
+
+def static_figures(c: Candidates, rise_time, strokes_per_second=1.0) -> dict[str, np.ndarray]:
+    """Static figures with the whole force path in series (force_path.py),
+    seals at pressure, the thermal budget, the geometry checks and the
+    amplifier's continuous current over the duty cycle."""
+    m = force_path.members(c)
+    tot = force_path.totals(m)
+    x = c.stack_free_stroke
+    R = c.ratio
+    k_stacks = c.n_stacks * c.stiffness
+    k = tot["total"]
+    out = {
+        "free_stroke_m": R * x,
+        # CONTRACTS second round: d33 V over the summed compliances, over R
+        "blocked_force_N": x / tot["compliance_sum"] / R,
+        "blocked_force_ideal_N": k_stacks * x / R,
+        "stack_force_N": k_stacks * x,
+        "work_J": k_stacks * x**2,
+        "force_path_stiffness_N_m": k,
+        "fluid_stiffness_N_m": m["oil_column"]["stiffness"],
+        "compliance_force_fraction": k / k_stacks,
+        "output_stiffness_N_m": k / R**2,
+        "blocked_pressure_Pa": k * x / c.wide_area,
+        "reflected_mass_kg": c.reflected_mass,
+    }
+    out["blocked_force_compliant_N"] = out["blocked_force_N"]
+    out["blocked_force_oil_only_N"] = hydraulics.series(k_stacks, m["oil_column"]["stiffness"]) * x / R
+    with np.errstate(divide="ignore"):
+        out["natural_frequency_Hz"] = np.sqrt(k / c.reflected_mass) / (2 * np.pi)
+    out.update(_seal_figures(c, out["blocked_pressure_Pa"]))
+    out["blocked_force_net_N"] = out["blocked_force_N"] - out["seal_output_force_blocked_N"]
     out["ratio"] = c.ratio
     out["wide_diameter_m"] = 2 * geometry.radius(c.wide_area)
     out["narrow_diameter_m"] = 2 * geometry.radius(c.narrow_area)
     out["drive_current_A"] = stack_phys.drive_current(c.n_stacks, c.capacitance, c.voltage / np.asarray(rise_time))
+    # amplifier continuous current: charge n C_L V out and back per cycle
+    out["continuous_current_A"] = 2 * c.n_stacks * c.capacitance * stack_phys.LARGE_SIGNAL_CAPACITANCE_FACTOR \
+        * c.voltage * strokes_per_second
     out["oil_volume_m3"] = c.oil_volume
     out["thermal_drift_per_K_m"] = thermal.output_drift(c.oil_volume, c.thermal_expansion, 1.0, c.narrow_area)
+    out.update({"thermal_" + k_: v for k_, v in thermal_budget(c, m).items()})
+    out["wide_gap_m"] = c.wide_gap
+    out["gap_needed_m"] = x + GAP_CLEARANCE_M
+    out["stacks_that_fit"] = structure.stacks_that_fit(out["wide_diameter_m"], c.stack_diameter, STACK_SPACING_M)
+    structural = sum(np.asarray(m[k_]["mass"]) for k_ in ("base_plate", "end_cap", "frame", "spacer"))
+    out["structure_mass_kg"] = structural
     return out
+
+
+def _seal_figures(c: Candidates, pressure) -> dict[str, np.ndarray]:
+    """Running seal friction at the blocked pressure, and what it takes off
+    the output force (narrow seal plus wide seal over R)."""
+    wide = c.wide_friction + c.wide_friction_cp * pressure
+    narrow = c.narrow_friction + c.narrow_friction_cp * pressure
+    return {"seal_wide_blocked_N": wide, "seal_narrow_blocked_N": narrow,
+            "seal_output_force_blocked_N": narrow + wide / c.ratio}
+
+
+def seal_friction_at(c: Candidates, pressure) -> dict[str, np.ndarray]:
+    """Running friction of both seals at a chamber pressure (Pa), N."""
+    return {"wide": c.wide_friction + c.wide_friction_cp * pressure,
+            "narrow": c.narrow_friction + c.narrow_friction_cp * pressure}
+
+
+def thermal_budget(c: Candidates, m: dict | None = None) -> dict[str, np.ndarray]:
+    """physics/thermal.budget for the candidates, from the fill temperature
+    to the required one (``c.delta_T``)."""
+    m = m if m is not None else force_path.members(c)
+    t_p = geometry.plate_thickness(c.wide_area, c.pressure_rating)
+    L_n = c.free_stroke + geometry.ROD_EXTRA_LENGTH
+    stack_column = c.stack_cte * c.stack_length + c.spacer_cte * c.spacer_length
+    return thermal.budget(c.delta_T, c.ratio, c.narrow_area, c.oil_volume, c.thermal_expansion, PISTON_CTE,
+                          stack_column, 1.0, c.mat_cte, m["frame"]["length"], PISTON_CTE, t_p, L_n,
+                          compensated=c.comp_kind > 0, compensator_capacity=c.comp_capacity)
 
 
 def metrics(c: Candidates, rise_time) -> dict[str, np.ndarray]:
     """Mass (kg), cost (USD), volume (m^3) and peak electrical power (W)."""
+    m = force_path.members(c)
     hyd_mass = geometry.hydraulic_mass(c.wide_area, c.narrow_area, c.pressure_rating, c.wide_gap,
                                        c.free_stroke, c.density)
-    stacks_mass = c.n_stacks * c.stack_mass * (1 + geometry.FRAME_FRACTION)
-    mass = stacks_mass + hyd_mass + c.amp_mass
+    structural = ("base_plate", "end_cap", "frame", "spacer")
+    s_mass = sum(np.asarray(m[k]["mass"]) for k in structural)
+    s_cost = sum(np.asarray(m[k]["cost"]) for k in structural)
+    mass = c.n_stacks * c.stack_mass + hyd_mass + c.amp_mass + s_mass + c.comp_mass
     metal = hyd_mass - c.density * c.oil_volume
     cost = (c.n_stacks * c.stack_cost + c.amp_cost + c.seal_cost + c.fluid_cost * c.oil_volume * 1000
-            + geometry.MACHINING_USD_PER_KG * metal + geometry.FIXED_HYDRAULIC_USD)
+            + geometry.MACHINING_USD_PER_KG * metal + geometry.FIXED_HYDRAULIC_USD + s_cost + c.comp_cost)
     volume = 1.5 * c.n_stacks * c.stack_volume + geometry.hydraulic_volume(
         c.wide_area, c.narrow_area, c.pressure_rating, c.wide_gap, c.free_stroke)
     current = stack_phys.drive_current(c.n_stacks, c.capacitance, c.voltage / np.asarray(rise_time))
@@ -52,14 +123,25 @@ def metrics(c: Candidates, rise_time) -> dict[str, np.ndarray]:
 
 
 def dynamic_model(c: Candidates, load_force, load_stiffness=0.0, **effects) -> PiezoHydraulicModel:
+    """The simulator's parameters: the mechanical side of the force path as
+    the stack stiffness, the hydraulic side folded into the oil's bulk
+    modulus, seals at pressure, the compensator's leak and the reflected
+    surface and narrow-bore oil."""
     bw = c.bouc_wen
+    m = force_path.members(c)
+    k_mech = structure.series(*(m[k]["stiffness"] for k in force_path.MECHANICAL))
+    narrow_oil = c.density * c.narrow_area * (c.free_stroke + geometry.ROD_EXTRA_LENGTH)
+    leak = np.where(c.comp_kind == 2, c.comp_leak, 0.0)
+    effects.setdefault("leak_conductance", leak)
     return PiezoHydraulicModel(
-        k_stacks=c.n_stacks * c.stiffness, d33=bw[:, 0], alpha=bw[:, 1], beta=bw[:, 2],
+        k_stacks=k_mech, d33=bw[:, 0], alpha=bw[:, 1], beta=bw[:, 2],
         gamma=bw[:, 3], delta=bw[:, 4], n_bw=bw[:, 5],
         wide_area=c.wide_area, narrow_area=c.narrow_area, oil_volume=c.oil_volume,
-        bulk_modulus=c.bulk_modulus, narrow_mass=c.narrow_mass, density=c.density,
+        bulk_modulus=force_path.simulator_bulk_modulus(c, m),
+        narrow_mass=c.narrow_mass + narrow_oil + c.surface_mass, density=c.density,
         k_contract=c.k_contract, k_expand=c.k_expand,
         wide_friction=c.wide_friction, narrow_friction=c.narrow_friction,
+        wide_friction_pressure=c.wide_friction_cp, narrow_friction_pressure=c.narrow_friction_cp,
         wide_breakaway=c.breakaway, narrow_breakaway=c.breakaway,
         load_force=load_force, load_stiffness=load_stiffness, no_return=c.no_return, **effects)
 
@@ -71,16 +153,18 @@ def ramp_drive(c: Candidates, ramp: np.ndarray, t_end: float):
     return t, frac * c.voltage[:, None]
 
 
-def simulate_cases(c: Candidates, load_forces, rise_time, target_stroke=None, keep_traces=False):
-    """Simulate every candidate under each load force (N). Returns one dict per
-    load case with arrays (n_cand,): stroke_m, time_to_stroke_s, speed_m_s,
-    overshoot, peak_m, and when asked the traces (t, position)."""
+def simulate_cases(c: Candidates, load_forces, rise_time, target_stroke=None, keep_traces=False,
+                   load_stiffness=0.0):
+    """Simulate every candidate under each load force (N), plus an optional
+    load spring (N/m). Returns one dict per load case with arrays (n_cand,):
+    stroke_m, time_to_stroke_s, speed_m_s, overshoot, peak_m, and when asked
+    the traces (t, position)."""
     ramp = ramp_time(c, rise_time)
     t_end = float(np.max(ramp)) + SETTLE_TIME_S
     t, volts = ramp_drive(c, ramp, t_end)
     cases = []
     for force in load_forces:
-        result = simulate(dynamic_model(c, force), t, volts)
+        result = simulate(dynamic_model(c, force, load_stiffness), t, volts)
         y = result["position_m"]
         target = 0.9 * y[:, -1] if target_stroke is None else np.broadcast_to(target_stroke, (len(c),))
         case = step_metrics(t, y, target)

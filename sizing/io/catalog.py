@@ -60,7 +60,7 @@ class Entry(Strict):
 
     @classmethod
     def quantity_fields(cls) -> list[str]:
-        skip = set(Entry.model_fields) | {"bouc_wen", "pid", "material", "type", "section"}
+        skip = set(Entry.model_fields) | {"bouc_wen", "pid", "material", "type", "section", "kind"}
         return [name for name in cls.model_fields if name not in skip]
 
     def assumed(self) -> dict[str, str]:
@@ -100,6 +100,7 @@ class Stack(Entry):
     curie_temperature: Optional[Qty("temperature")] = None
     stroke_temperature_coefficient: Qty("per_kelvin") = 0.0
     cost_usd: Qty("dimensionless", positive=True)
+    thermal_expansion: Optional[Qty("per_kelvin")] = None   # linear, along the stroke
     bouc_wen: Optional[BoucWenTable] = None
 
 
@@ -169,6 +170,37 @@ class DCActuator(Entry):
     pid: PIDTable
 
 
+class Material(Entry):
+    """A structural material of the force path (caps, frame, casing, pistons)."""
+
+    youngs_modulus: Qty("pressure", positive=True)
+    poisson: Qty("dimensionless", nonnegative=True)
+    density: Qty("density", positive=True)
+    thermal_expansion: Qty("per_kelvin", positive=True)
+    yield_strength: Qty("pressure", positive=True)
+    max_temperature: Qty("temperature")
+    cost_usd: Qty("dimensionless", nonnegative=True)          # per kg
+
+    @field_validator("poisson")
+    @classmethod
+    def _poisson(cls, value: float) -> float:
+        if not value < 0.5:
+            raise ValueError(f"expected a Poisson ratio below 0.5, got {value!r}")
+        return value
+
+
+class Compensator(Entry):
+    """An active thermal compensator of the oil (catalogs/compensators.toml)."""
+
+    kind: Literal["accumulator", "orifice_reservoir"]
+    volume_stiffness: Qty("volume_stiffness", positive=True)
+    leak_conductance: Qty("conductance", nonnegative=True) = 0.0
+    capacity: Qty("volume", positive=True)
+    mass: Qty("mass", nonnegative=True)
+    max_temperature: Qty("temperature")
+    cost_usd: Qty("dimensionless", nonnegative=True)
+
+
 # file name -> (TOML array name, model)
 KINDS: dict[str, tuple[str, type[Entry]]] = {
     "stacks.toml": ("stack", Stack),
@@ -176,6 +208,8 @@ KINDS: dict[str, tuple[str, type[Entry]]] = {
     "seals.toml": ("seal", Seal),
     "amplifiers.toml": ("amplifier", Amplifier),
     "dc_actuators.toml": ("dc_actuator", DCActuator),
+    "materials.toml": ("material", Material),
+    "compensators.toml": ("compensator", Compensator),
 }
 
 
@@ -187,11 +221,14 @@ class Catalog:
     seals: dict[str, Seal] = field(default_factory=dict)
     amplifiers: dict[str, Amplifier] = field(default_factory=dict)
     dc_actuators: dict[str, DCActuator] = field(default_factory=dict)
+    materials: dict[str, Material] = field(default_factory=dict)
+    compensators: dict[str, Compensator] = field(default_factory=dict)
     files: dict[str, str] = field(default_factory=dict)   # file name -> sha256
 
     def groups(self) -> dict[str, dict[str, Entry]]:
         return {"stack": self.stacks, "fluid": self.fluids, "seal": self.seals,
-                "amplifier": self.amplifiers, "dc_actuator": self.dc_actuators}
+                "amplifier": self.amplifiers, "dc_actuator": self.dc_actuators,
+                "material": self.materials, "compensator": self.compensators}
 
     def entries(self) -> list[tuple[str, Entry]]:
         return [(kind, e) for kind, group in self.groups().items() for e in group.values()]

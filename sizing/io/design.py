@@ -15,6 +15,7 @@ class LoadTable(Strict):
     span: Qty("length", positive=True) = 15 * 0.0254
     chord: Qty("length", positive=True) = 10 * 0.0254
     thickness: Qty("length", positive=True) = 0.0625 * 0.0254
+    density: Qty("density", positive=True) = 2700.0   # surface material (issue 9: its inertia, reflected by R^2); assumed aluminium
     dynamic_pressure: list[Qty("pressure", nonnegative=True)] = Field(default_factory=lambda: [10e3, 25e3])
     force: Optional[list[Qty("force")]] = None      # explicit forces instead of pressures
     stiffness: Qty("stiffness", nonnegative=True) = 0.0
@@ -43,11 +44,23 @@ class PiezoDesignFile(Strict):
     rise_time: Qty("time", positive=True) = 0.1
     temperature: Qty("temperature") = 25.0
     no_return: bool = False
+    # force path, thermal budget and drive duty (issue 9)
+    material: Optional[str] = None                     # catalogs/materials.toml id (caps, base plate, frame)
+    end_cap_thickness: Optional[Qty("length", positive=True)] = None
+    frame_area: Optional[Qty("area", positive=True)] = None
+    structure_stiffness_ratio: Qty("dimensionless", positive=True) = 3.0
+    compensator: Optional[str] = None                  # catalogs/compensators.toml id
+    spacer_length: Qty("length", nonnegative=True) = 0.0   # low-expansion spacer in the stack column (passive compensation)
+    air_fraction: Qty("dimensionless", nonnegative=True) = 0.0   # entrained air by volume
+    air_pressure: Qty("pressure", positive=True) = 101325.0       # absolute pressure the air fraction is stated at
+    strokes_per_second: Qty("frequency", positive=True) = 1.0     # duty for the amplifier's continuous current
     load: LoadTable = Field(default_factory=LoadTable)
     notes: Optional[str] = None
 
     @model_validator(mode="after")
     def _geometry(self):
+        if self.air_fraction >= 1.0:
+            raise ValueError(f"air_fraction: expected a volume fraction below 1, got {self.air_fraction!r}")
         if (self.wide_diameter is None) != (self.narrow_diameter is None):
             raise ValueError("give both wide_diameter and narrow_diameter, or neither")
         if self.ratio is None and self.wide_diameter is None:

@@ -57,6 +57,14 @@ RANGES: dict[str, dict[str, tuple[float, float]]] = {
         "continuous_current": (1e-6, 1e4), "max_power": (1e-3, 1e7), "slew_rate": (1.0, 1e10),
         "mass": (1e-3, 1000.0), "cost_usd": (0.0, 1e7),
     },
+    "material": {
+        "youngs_modulus": (1e9, 1e12), "density": (500.0, 25000.0), "thermal_expansion": (1e-8, 1e-4),
+        "yield_strength": (1e6, 5e9), "cost_usd": (0.0, 1e5),
+    },
+    "compensator": {
+        "volume_stiffness": (1e6, 1e16), "leak_conductance": (0.0, 1e-6), "capacity": (1e-9, 1e-1),
+        "mass": (0.0, 100.0), "cost_usd": (0.0, 1e6),
+    },
     "dc_actuator": {
         "max_force": (0.1, 1e7), "continuous_force": (0.01, 1e7), "max_speed": (1e-5, 100.0),
         "stroke": (1e-4, 10.0), "mass": (1e-3, 1000.0), "length": (1e-3, 10.0), "diameter": (1e-3, 2.0),
@@ -120,7 +128,8 @@ def _entry_problems(kind: str, entry: Entry, today: dt.date):
     if low is not None and high is not None and not low < high:
         yield "max_temperature", f"expected above min_temperature ({low:g} degC), got {high:g} degC"
     checks = {"stack": _stack, "fluid": _fluid, "seal": _seal, "amplifier": _amplifier, "dc_actuator": _dc}
-    yield from checks[kind](entry)
+    if kind in checks:
+        yield from checks[kind](entry)
 
 
 def _range_problems(kind: str, entry: Entry):

@@ -150,3 +150,31 @@ def free_displacement(t: np.ndarray, v: np.ndarray, params, h0=0.0) -> np.ndarra
     h0_arr = np.broadcast_to(np.asarray(h0, dtype=float), (P.shape[0],)).copy()
     out = _free_displacement_batch(np.asarray(t, float), np.asarray(v, float), P, h0_arr)
     return out[0] if single else out
+
+
+# The delta term of eq. 2 integrates delta v sgn(v') over time, so a ramp's
+# end stroke depends on how long the ramp takes (PHYSICS-NOTES, second
+# round): the transferred model matches the datasheet stroke at one time
+# scale only. These two functions say which, and what a design's own ramp gives.
+def ramp_stroke(params: BoucWen, v_max: float, ramp_time: float, points: int = 4000) -> float:
+    """Free stroke (m) at the end of a linear ramp 0 -> v_max lasting ramp_time (s)."""
+    t = np.linspace(0.0, ramp_time, points)
+    return float(free_displacement(t, v_max * t / ramp_time, params)[-1])
+
+
+def matching_ramp_time(params: BoucWen, v_max: float, stroke: float, t_lo: float = 1e-3,
+                       t_hi: float = 100.0) -> float:
+    """Ramp time (s) at which the model's end stroke equals ``stroke`` (the
+    datasheet's), by bisection in log time; nan when it is not bracketed."""
+    f = lambda T: ramp_stroke(params, v_max, T) - stroke  # noqa: E731
+    lo, hi = f(t_lo), f(t_hi)
+    if lo * hi > 0:
+        return float("nan")
+    a, b = np.log(t_lo), np.log(t_hi)
+    for _ in range(40):
+        m = 0.5 * (a + b)
+        if (f(np.exp(m)) > 0) == (lo > 0):
+            a = m
+        else:
+            b = m
+    return float(np.exp(0.5 * (a + b)))

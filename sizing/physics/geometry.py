@@ -18,7 +18,6 @@ DESIGN_STRESS = 138e6             # Pa, half the 276 MPa yield of 6061-T6
 PLATE_FACTOR = math.sqrt(3 * (3 + 0.33) / 8)
 MIN_WALL = 3e-3                   # m
 ROD_EXTRA_LENGTH = 0.03           # m, narrow piston beyond the stroke (seal land, eye)
-FRAME_FRACTION = 0.10             # stack reaction frame, fraction of the stack mass
 MACHINING_USD_PER_KG = 60.0       # assumed shop rate for the aluminium parts
 FIXED_HYDRAULIC_USD = 1500.0      # assumed: fill, bleed, assembly, test
 
@@ -44,13 +43,14 @@ def narrow_piston_mass(narrow_area, stroke):
 
 
 def casing_mass(wide_area, narrow_area, pressure, wide_gap, stroke):
-    """End cap + wide cylinder wall + narrow cylinder wall."""
+    """Wide cylinder wall + narrow cylinder wall. The end cap and the stack
+    base plate are members of the force path, sized for stiffness and
+    stress in their own material (engine/force_path.py)."""
     wide_length = plate_thickness(wide_area, pressure) + wide_gap + 0.01
     narrow_length = stroke + ROD_EXTRA_LENGTH
-    end_cap = ALUMINIUM_DENSITY * wide_area * plate_thickness(wide_area, pressure)
     wide_wall = ALUMINIUM_DENSITY * 2 * math.pi * radius(wide_area) * wall_thickness(wide_area, pressure) * wide_length
     narrow_wall = ALUMINIUM_DENSITY * 2 * math.pi * radius(narrow_area) * wall_thickness(narrow_area, pressure) * narrow_length
-    return end_cap + wide_wall + narrow_wall
+    return wide_wall + narrow_wall
 
 
 def hydraulic_mass(wide_area, narrow_area, pressure, wide_gap, stroke, oil_density):

@@ -18,3 +18,13 @@ def tip_force(dynamic_pressure, span, chord):
 def deflection_angle(tip_travel, chord):
     """Surface deflection (rad) for a tip travel along the arc."""
     return np.arcsin(np.clip(np.asarray(tip_travel) / np.asarray(chord), -1.0, 1.0))
+
+
+SURFACE_DENSITY = 2700.0   # kg/m^3, assumed: aluminium surface skin (the seed gives only its thickness)
+
+
+def tip_equivalent_mass(span, chord, thickness, density=SURFACE_DENSITY):
+    """Mass at the tip that has the hinged plate's inertia about its hinge:
+    I / c^2 = (rho b c t) c^2 / 3 / c^2 = rho b c t / 3 (kg). The 15 x 10 x
+    1/16 in aluminium surface: 0.415 kg, 0.138 kg at the tip."""
+    return np.asarray(density) * np.asarray(span) * np.asarray(chord) * np.asarray(thickness) / 3.0

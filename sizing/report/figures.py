@@ -9,7 +9,8 @@ UNITS = {"mass": ("mass_kg", 1.0, "mass (kg)"), "cost": ("cost_usd", 1.0, "cost 
          "volume": ("volume_m3", 1e3, "volume (L)"), "power": ("power_W", 1.0, "peak power (W)")}
 SHOWN_STAGES = ("simulated", "sized", "gp_infeasible")
 MARGIN_ORDER = ("stroke", "blocked_force", "speed", "temperature", "amplifier_temperature", "pressure",
-                "drive_current", "natural_frequency", "overshoot", "thermal_drift", "holding_force", "work")
+                "drive_current", "amplifier_continuous_current", "natural_frequency", "overshoot", "thermal_drift",
+                "wide_gap", "packing", "compensator_capacity", "compensator_leak", "holding_force", "work")
 
 
 def _axes(objectives: list[str]) -> tuple[str, str]:
@@ -43,6 +44,8 @@ def pareto_figure(results: dict) -> go.Figure:
         "piezohydraulic, compensated, infeasible": dict(symbol="circle-open", color="#1f77b4"),
         "piezohydraulic, uncompensated, feasible": dict(symbol="square", color="#2ca02c"),
         "piezohydraulic, uncompensated, infeasible": dict(symbol="x-thin-open", color="#7f7f7f"),
+        "piezohydraulic, passive, feasible": dict(symbol="triangle-up", color="#9467bd"),
+        "piezohydraulic, passive, infeasible": dict(symbol="triangle-up-open", color="#9467bd"),
         "DC motor, feasible": dict(symbol="diamond", color="#d62728"),
         "DC motor, infeasible": dict(symbol="diamond-open", color="#d62728"),
     }

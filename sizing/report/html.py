@@ -8,6 +8,7 @@ from collections import Counter
 import plotly.offline
 
 from .figures import MARGIN_ORDER, comparison_figure, pareto_figure, traces_figure
+from .force_path_html import section as force_path_section
 
 CSS = """
 body{font-family:system-ui,-apple-system,Segoe UI,Roboto,sans-serif;margin:2em auto;max-width:1200px;color:#222;padding:0 1em}
@@ -26,7 +27,13 @@ td.parts{text-align:left;min-width:30em}
 
 CHECKS = {
     "stroke": "simulated stroke from the loaded rest (static: free stroke R d33 V) against the required stroke",
-    "blocked_force": "blocked force with the oil column spring in series with the stacks (fluid compliance)",
+    "blocked_force": "blocked force with the whole force path in series (stacks, base plate, frame, wide piston, oil, "
+                     "compensator, end cap, narrow piston), less the seal friction at the blocked pressure",
+    "amplifier_continuous_current": "amplifier continuous rating against 2 n C_large V x strokes per second ([duty])",
+    "wide_gap": "wide oil gap against the stack stroke plus 0.5 mm clearance",
+    "packing": "stacks that fit under the wide piston (circle packing, 1 mm spacing) against the stack count",
+    "compensator_capacity": "compensator capacity against the hydraulic volume change it takes up",
+    "compensator_leak": "orifice compensator: output creep under the largest load over one duty cycle",
     "speed": "required stroke / simulated time to reach it, slowest load case (static: planned drive ramp)",
     "temperature": "every actuator component's rating (stacks, fluid, seals; DC actuator) against the required maximum",
     "amplifier_temperature": "amplifier rating against where it sits (electronics bay or actuator, see assumptions)",
@@ -34,7 +41,7 @@ CHECKS = {
     "drive_current": "amplifier peak current against n C_large dV/dt needed to reach the stroke in time",
     "natural_frequency": "sqrt(k / (m_wide + R^2 m_narrow)) with the fluid spring, against the minimum",
     "overshoot": "simulated overshoot against the allowed overshoot",
-    "thermal_drift": "output drift V alpha_T dT / A_narrow of the enclosed oil against the allowed drift",
+    "thermal_drift": "net of the thermal budget (oil, casing, stacks, pistons, frame, compensator) against the allowed drift",
     "holding_force": "DC actuator continuous force against the largest load case",
     "work": "work bound n k_s (d33 V)^2 >= F S",
     "amplifier_voltage": "amplifier voltage against the voltage the work bound needs",
@@ -204,7 +211,7 @@ speed {req['speed_m_s'] * 1e3:g} mm/s (stroke within {req['stroke_time_s']:g} s)
 {len(dc)} DC actuators.</p>
 {headline}
 <h2>Verdict per technology</h2><ul>{verdicts}</ul>
-<h2>100 degC: thermal drift of the enclosed oil</h2>
+<h2>100 degC: the thermal budget</h2>
 <div class="box">{_e(summary['thermal'])}</div>
 <h2>Pareto front</h2>{divs[0]}
 <h2>Margins per requirement</h2>
@@ -217,6 +224,7 @@ they exist. Top feasible designs, then the best candidate of each technology:</p
 {_margin_table(comp) if comp else '<p>None evaluated.</p>'}
 <h2>Uncompensated designs (as built)</h2>
 {_margin_table(plain) if plain else '<p>No combination reached sizing.</p>'}
+{force_path_section(cands, lambda f: f.to_html(full_html=False, include_plotlyjs=False, config={"displaylogo": False}))}
 <h2>Checks beyond the seed</h2><ul>{checks}</ul>
 {_checks_table(top + best_each)}
 <h2>Time traces under each load case</h2>{divs[1]}

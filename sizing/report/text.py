@@ -40,6 +40,12 @@ def evaluation_summary(result: dict) -> str:
             f"{_label(k)} {_fmt(k, v)}" for k, v in case.items()
             if k in ("stroke_m", "time_to_stroke_s", "speed_m_s", "overshoot")))
     lines.append("metrics: " + ", ".join(f"{_label(k)} {_fmt(k, v)}" for k, v in result["metrics"].items()))
+    if result.get("force_path"):
+        lines.append("force path (in series, referred to the wide piston; share of the compliance):")
+        lines += [f"  {m['member']:<14} {m['stiffness_N_m'] or float('inf'):10.3g} N/m  {m['compliance_share']:6.1%}"
+                  + (f"  {m['material']}" if m.get("material") else "") for m in result["force_path"]]
+    for warning in [w for w in result.get("warnings", []) if w.startswith("cannot be built")]:
+        lines.append(warning)
     if result.get("assumed"):
         lines.append("rests on assumed catalog values (status \"assumed\"; see `sizing catalog show ID`):")
         lines += [f"  {entry_id}: {', '.join(fields)}" for entry_id, fields in result["assumed"].items()]

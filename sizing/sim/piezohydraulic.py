@@ -12,7 +12,9 @@ Model (seed eqs. 1-10 with the corrections of PHYSICS-NOTES):
   compliance), with optional leakage V_leak' = G p;
 - narrow (output) piston: a mass with the flow loss of eqs. 8-9 written
   u|u| and direction-aware (PHYSICS-NOTES item 5), viscous damping, Karnopp
-  stick-slip seal friction (breakaway > running) and the load
+  stick-slip seal friction (breakaway > running) whose running value grows
+  with the chamber pressure, F = F_0 + c_p |p| (pressure-dependent Karnopp
+  friction, issue 9; both seals), and the load
   F_load = F0 + k_L y.
 
 Integration: semi-implicit Euler at a fixed step chosen per candidate from
@@ -41,6 +43,7 @@ PARAMS = (
     "wide_friction", "narrow_friction", "wide_breakaway", "narrow_breakaway",
     "load_force", "load_stiffness", "viscous_damping", "leak_conductance",
     "creep_fraction", "creep_time", "slew_rate", "no_return", "dt_max",
+    "wide_friction_pressure", "narrow_friction_pressure",
 )
 IDX = {name: i for i, name in enumerate(PARAMS)}
 CHANNELS = ("position_m", "pressure_Pa", "wide_position_m", "voltage_V")
@@ -85,6 +88,8 @@ class PiezoHydraulicModel(ParameterSet):
     no_return: object = 0.0
     h0: object = 0.0
     dt_max: object = 5e-5
+    wide_friction_pressure: object = 0.0     # N/Pa: running friction grows with |p| (seals at pressure)
+    narrow_friction_pressure: object = 0.0
 
 
 
@@ -181,6 +186,8 @@ def _simulate_one(p, dt_max, t_in, inv_dt, v_row, t_out, rec):
     Fw, Fn, brk_w, brk_n = p[16], p[17], p[18], p[19]
     F0, kL, cv, G = p[20], p[21], p[22], p[23]
     kappa, tau, slew, no_ret = p[24], p[25], p[26], p[27]
+    cpw, cpn = p[29], p[30]
+    Fw0, Fn0 = Fw, Fn
     R = A_w / A_n
     bern = 1.0 - 1.0 / (R * R)
     # constants of the step, so the loop multiplies instead of dividing
@@ -220,6 +227,8 @@ def _simulate_one(p, dt_max, t_in, inv_dt, v_row, t_out, rec):
             if tau > 0.0:
                 creep += dt * (kappa * xf_lin - creep) * inv_tau
             v_leak += G * pr * dt
+            Fw = Fw0 + cpw * abs(pr)
+            Fn = Fn0 + cpn * abs(pr)
             thr = Fw if sliding else Fw * brk_w
             x, sliding = _wide_piston(x, xf_lin + creep, y, v_leak, K, aA_w, A_n, kf, inv_Kkf, inv_kf,
                                       Fw, thr, no_ret)

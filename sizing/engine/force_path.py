@@ -1,0 +1,192 @@
+"""The force path of piezohydraulic candidates: every member between the
+stacks and the output as a spring in series, referred to the wide piston
+(CONTRACTS.md second round, ``force_path``), with its mass and cost.
+
+Order from the stack base: stacks, (thermal spacer), base plate, frame (tie
+rods), wide piston, oil column, (accumulator), end cap, narrow piston. The
+mechanical members (stacks to wide piston) make the simulator's stack-side
+stiffness; the hydraulic ones (oil, accumulator, end cap, narrow piston)
+are folded into the simulator's effective bulk modulus, so the simulated
+blocked force equals the static one.
+
+Plates: simply supported (the conservative edge; see physics/structure.py),
+with the clamped value reported beside it.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..physics import geometry, structure
+
+MECHANICAL = ("stacks", "spacer", "base_plate", "frame", "wide_piston")
+HYDRAULIC = ("oil_column", "compensator", "end_cap", "narrow_piston")
+ALUMINIUM_E = 68.9e9          # Pa, 6061-T6 pistons (physics/geometry.py); catalogs/materials.toml al-6061-t6
+STRESS_SAFETY = 2.0           # allowable stress = yield / 2 (geometry.py's rule)
+FRAME_MARGIN_M = 0.0          # frame spans stacks + wide piston + gap exactly
+
+
+@dataclass(frozen=True)
+class FallbackMaterial:
+    """6061-T6 (the catalog's al-6061-t6 values) for catalogs without materials.toml."""
+
+    id: str = "al-6061-t6 (built in)"
+    youngs_modulus: float = 68.9e9
+    poisson: float = 0.33
+    density: float = 2700.0
+    thermal_expansion: float = 23.6e-6
+    yield_strength: float = 276e6
+    max_temperature: float = 150.0
+    cost_usd: float = 10.0
+
+
+DEFAULT_MATERIAL = "al-6061-t6"
+
+
+def default_material(materials: dict):
+    """The catalog's 6061-T6, else its first material, else the built-in one."""
+    if DEFAULT_MATERIAL in materials:
+        return materials[DEFAULT_MATERIAL]
+    return next(iter(materials.values()), FallbackMaterial())
+
+
+def spacer_material(materials: dict):
+    """The lowest-expansion material: what a passive-compensation spacer is made of."""
+    return min(materials.values(), key=lambda m: m.thermal_expansion) if materials else FallbackMaterial()
+
+
+def frame_length(stack_length, wide_piston_thickness, wide_gap, spacer_length=0.0):
+    """Length of the tie rods between base plate and end cap (m)."""
+    return (np.asarray(stack_length) + np.asarray(wide_piston_thickness) + np.asarray(wide_gap)
+            + np.asarray(spacer_length) + FRAME_MARGIN_M)
+
+
+def size_structure(stack_stiffness_total, stack_force, wide_area, frame_len, E, nu, yield_strength,
+                   stiffness_ratio):
+    """Closed-form sizing of the end cap / base plate thickness and the frame
+    section: each at least ``stiffness_ratio`` x the stacks' stiffness and
+    within yield / STRESS_SAFETY at the stack force (blocked pressure).
+    Returns (cap_thickness m, frame_area m^2)."""
+    a = np.sqrt(np.asarray(wide_area) / math.pi)
+    allow = np.asarray(yield_strength) / STRESS_SAFETY
+    q = np.asarray(stack_force) / np.asarray(wide_area)
+    k_target = np.asarray(stiffness_ratio) * np.asarray(stack_stiffness_total)
+    t = np.maximum(structure.plate_thickness_for_stiffness(k_target, a, E, nu),
+                   structure.plate_thickness_for_stress(q, a, allow, nu))
+    area = np.maximum(k_target * np.asarray(frame_len) / np.asarray(E), np.asarray(stack_force) / allow)
+    return t, area
+
+
+def members(c) -> dict[str, dict[str, np.ndarray]]:
+    """Every member of ``c`` (piezo.Candidates): stiffness (N/m, referred to
+    the wide piston; inf when absent), mass (kg) and cost (USD)."""
+    n = len(c)
+    inf = np.full(n, np.inf)
+    zero = np.zeros(n)
+    a = np.sqrt(c.wide_area / math.pi)
+    t_p = geometry.plate_thickness(c.wide_area, c.pressure_rating)
+    L_f = frame_length(c.stack_length, t_p, c.wide_gap, c.spacer_length)
+    plate = structure.plate_stiffness(a, c.cap_thickness, c.mat_E, c.mat_nu)
+    plate_clamped = structure.plate_stiffness(a, c.cap_thickness, c.mat_E, c.mat_nu, edge="clamped")
+    plate_mass = c.mat_density * c.wide_area * c.cap_thickness
+    unit = c.mat_cost + geometry.MACHINING_USD_PER_KG
+    footprint = c.n_stacks * math.pi * c.stack_diameter**2 / 4
+    spacer = np.where(c.spacer_length > 0, c.spacer_E * footprint / np.maximum(c.spacer_length, 1e-12), inf)
+    spacer_mass = c.spacer_density * footprint * c.spacer_length
+    L_n = c.free_stroke + geometry.ROD_EXTRA_LENGTH
+    out = {
+        "stacks": {"stiffness": c.n_stacks * c.stiffness, "mass": c.n_stacks * c.stack_mass,
+                   "cost": c.n_stacks * c.stack_cost},
+        "spacer": {"stiffness": spacer, "mass": spacer_mass, "cost": spacer_mass * (c.spacer_cost + geometry.MACHINING_USD_PER_KG)},
+        "base_plate": {"stiffness": plate, "stiffness_clamped": plate_clamped, "mass": plate_mass,
+                       "cost": plate_mass * unit, "thickness": c.cap_thickness},
+        "frame": {"stiffness": structure.rod_stiffness(c.mat_E, c.frame_area, L_f),
+                  "mass": c.mat_density * c.frame_area * L_f, "cost": c.mat_density * c.frame_area * L_f * unit,
+                  "length": L_f, "area": c.frame_area},
+        "wide_piston": {"stiffness": structure.rod_stiffness(ALUMINIUM_E, c.wide_area, t_p), "mass": c.wide_mass,
+                        "cost": zero},
+        "oil_column": {"stiffness": c.bulk_modulus * c.wide_area**2 / c.oil_volume,
+                       "mass": c.density * c.oil_volume, "cost": zero},
+        "compensator": {"stiffness": np.where(c.comp_kind == 1, c.comp_volume_stiffness * c.wide_area**2, inf),
+                        "mass": c.comp_mass, "cost": c.comp_cost},
+        "end_cap": {"stiffness": plate, "stiffness_clamped": plate_clamped, "mass": plate_mass,
+                    "cost": plate_mass * unit, "thickness": c.cap_thickness},
+        "narrow_piston": {"stiffness": c.ratio**2 * structure.rod_stiffness(ALUMINIUM_E, c.narrow_area, L_n),
+                          "mass": c.narrow_mass, "cost": zero},
+    }
+    return out
+
+
+def totals(m: dict) -> dict[str, np.ndarray]:
+    """Series stiffness of the whole path and of its two sides (N/m)."""
+    mech = structure.series(*(m[k]["stiffness"] for k in MECHANICAL))
+    hyd = structure.series(*(m[k]["stiffness"] for k in HYDRAULIC))
+    return {"total": structure.series(mech, hyd), "mechanical": mech, "hydraulic": hyd,
+            "compliance_sum": sum(1.0 / np.asarray(m[k]["stiffness"], float) for k in MECHANICAL + HYDRAULIC)}
+
+
+def simulator_bulk_modulus(c, m: dict) -> np.ndarray:
+    """Effective bulk modulus of the simulator's oil spring that gives the
+    hydraulic side's stiffness: beta_eff A_w^2 / V = k_hydraulic."""
+    k_h = structure.series(*(m[k]["stiffness"] for k in HYDRAULIC))
+    return k_h * c.oil_volume / c.wide_area**2
+
+
+def as_list(m: dict, i: int, material_id: str, compensator_id: str | None,
+            spacer_id: str | None = None) -> list[dict]:
+    """The contract's ``force_path`` list for candidate i (absent members left out)."""
+    out = []
+    for name in MECHANICAL + HYDRAULIC:
+        k = float(np.asarray(m[name]["stiffness"])[i])
+        if name == "spacer" and not math.isfinite(k):
+            continue
+        if name == "compensator" and compensator_id is None:
+            continue
+        row = {"member": name, "stiffness_N_m": k if math.isfinite(k) else None,
+               "mass_kg": float(np.asarray(m[name]["mass"])[i]), "cost_usd": float(np.asarray(m[name]["cost"])[i])}
+        if name in ("base_plate", "end_cap", "frame"):
+            row["material"] = material_id
+        if name == "spacer":
+            row["material"] = spacer_id
+        if name in ("base_plate", "end_cap"):
+            row["stiffness_clamped_N_m"] = float(np.asarray(m[name]["stiffness_clamped"])[i])
+            row["thickness_m"] = float(np.asarray(m[name]["thickness"])[i])
+            row["edge"] = "simply_supported"
+        if name == "frame":
+            row["length_m"] = float(np.asarray(m[name]["length"])[i])
+            row["area_m2"] = float(np.asarray(m[name]["area"])[i])
+        if name == "compensator":
+            row["id"] = compensator_id
+        out.append(row)
+    total = sum(1.0 / r["stiffness_N_m"] for r in out if r["stiffness_N_m"])
+    for r in out:
+        r["compliance_share"] = (1.0 / r["stiffness_N_m"] / total) if r["stiffness_N_m"] else 0.0
+    return out
+
+
+def design_structure(n_stiffness, stack_force, wide_area, stack_length, wide_gap, pressure_rating,
+                     material, stiffness_ratio, cap_thickness=None, frame_area=None):
+    """Cap thickness and frame section of one design: the given values, or
+    the closed-form rule of ``size_structure`` (SI floats)."""
+    t_p = float(geometry.plate_thickness(wide_area, pressure_rating))
+    L_f = float(frame_length(stack_length, t_p, wide_gap))
+    t, area = size_structure(n_stiffness, stack_force, wide_area, L_f, material.youngs_modulus,
+                             material.poisson, material.yield_strength, stiffness_ratio)
+    return (float(t) if cap_thickness is None else cap_thickness,
+            float(area) if frame_area is None else frame_area)
+
+
+def resize_for_material(cap_thickness, frame_area, wide_area, frame_len, stack_force, old, new):
+    """The same end cap / base plate and frame stiffness in another material
+    (a cheap screen: the force path, and so blocked force and natural
+    frequency, stay as sized), thickened where the new material's stress
+    limit needs it. Returns (cap_thickness, frame_area), m and m^2."""
+    a = math.sqrt(wide_area / math.pi)
+    k_plate = float(structure.plate_stiffness(a, cap_thickness, old.youngs_modulus, old.poisson))
+    k_frame = float(structure.rod_stiffness(old.youngs_modulus, frame_area, frame_len))
+    t, area = size_structure(1.0, stack_force, wide_area, frame_len, new.youngs_modulus, new.poisson,
+                             new.yield_strength, 0.0)
+    t_k = float(structure.plate_thickness_for_stiffness(k_plate, a, new.youngs_modulus, new.poisson))
+    return max(float(t), t_k), max(float(area), k_frame * frame_len / new.youngs_modulus)

@@ -1,0 +1,365 @@
+"""Piezohydraulic designs of ``sizing solve``: the variants of every
+combination (structure material, thermal compensation), their sizing by the
+geometric program, the closed-form material screen, the passive spacer, the
+static figures and margins, the nominal figures of pruned combinations and
+the hysteresis time scale (issue 9)."""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+from functools import lru_cache
+
+import numpy as np
+
+from ..io.catalog import Catalog
+from ..io.requirements import RequirementsFile
+from ..physics import bouc_wen, fluid as fluid_props
+from ..physics import geometry, load as load_phys, stack as stack_phys, structure, thermal
+from ..physics.bouc_wen import BoucWen
+from . import force_path
+from .convex import GPSizer, SizingInput
+from .evaluate import load_cases
+from .piezo import Candidates, part_row, reference_bouc_wen, stack_bouc_wen, structure_row
+from .rank import ceiling_margin, floor_margin
+from .search import Combo, temperature_margin
+from .verify import (GAP_CLEARANCE_M, STACK_SPACING_M, metrics, ramp_time, seal_friction_at,
+                     static_figures)
+
+MAX_SPACER_M = 0.5          # longest passive-compensation spacer considered
+
+
+def _progress(callback, stage, done, total):
+    if callback is not None:
+        callback(stage, done, total)
+
+
+@dataclass
+class Variant:
+    """One way to build a combination: structure material and thermal
+    compensation (None: as built; "passive": a low-expansion spacer that
+    cancels the thermal budget; a catalog compensator)."""
+
+    material: object
+    compensator: object = None
+    passive: bool = False
+
+    @property
+    def name(self) -> str:
+        if self.compensator is not None:
+            return "compensated"
+        return "passive" if self.passive else "uncompensated"
+
+    def suffix(self) -> str:
+        tail = f"-{self.material.id}"
+        if self.compensator is not None:
+            return tail + f"-tc-{self.compensator.id}"
+        return tail + ("-pc" if self.passive else "")
+
+
+def effective_gap(req: RequirementsFile, stack_free_stroke: float) -> float:
+    """The wide gap: the option, raised to the stack stroke plus a clearance
+    (a gap below the stroke bottoms the wide piston out)."""
+    return max(req.options.wide_gap, stack_free_stroke + GAP_CLEARANCE_M)
+
+
+def sizing_input(req: RequirementsFile, c: Combo, material=None, compensator=None) -> SizingInput:
+    T = req.requirements.max_temperature
+    f, s, st = c.fluid, c.seal, c.stack
+    material = material if material is not None else force_path.default_material({})
+    stack_volume = st.length * st.diameter**2 * (1.0 if st.section == "square" else math.pi / 4)
+    accumulator = (1.0 / compensator.volume_stiffness
+                   if compensator is not None and compensator.kind == "accumulator" else 0.0)
+    return SizingInput(
+        n_stiffness=c.n * st.stiffness, stack_stroke=c.stack_stroke, rated_voltage=st.max_voltage,
+        max_fraction=c.voltage_fraction_max, force=req.requirements.blocked_force,
+        stroke=req.requirements.stroke,
+        bulk_modulus=float(fluid_props.bulk_modulus_at(f.bulk_modulus, f.bulk_modulus_temperature_coefficient, T)),
+        wide_gap=effective_gap(req, c.stack_stroke * c.voltage_fraction_max), pressure_rating=s.pressure_rating,
+        natural_frequency=req.natural_frequency, stroke_time=req.stroke_time,
+        n_capacitance=c.n * st.capacitance, max_current=c.amplifier.max_current,
+        margin=req.options.design_margin,
+        fixed_mass=c.n * st.mass + c.amplifier.mass + (compensator.mass if compensator else 0.0),
+        fixed_cost=(c.n * st.cost_usd + c.amplifier.cost_usd + 2 * s.cost_usd + geometry.FIXED_HYDRAULIC_USD
+                    + (compensator.cost_usd if compensator else 0.0)),
+        fixed_volume=1.5 * c.n * stack_volume,
+        oil_density=float(fluid_props.density_at(f.density, f.thermal_expansion, T)),
+        oil_cost=f.cost_usd * 1000.0,
+        youngs_modulus=material.youngs_modulus, poisson=material.poisson, material_density=material.density,
+        material_unit_cost=material.cost_usd + geometry.MACHINING_USD_PER_KG,
+        allowable_stress=material.yield_strength / force_path.STRESS_SAFETY, stack_length=st.length,
+        stiffness_ratio=req.options.structure_stiffness_ratio,
+        packing_area=math.pi / 4 * float(structure.packing_diameter(c.n, st.diameter, STACK_SPACING_M)) ** 2,
+        accumulator_compliance=accumulator, seal_f0=s.friction_per_length, seal_cp=s.friction_pressure_coefficient,
+        surface_mass=_surface_mass(req))
+
+
+def _surface_mass(req: RequirementsFile) -> float:
+    L = req.load
+    return 0.0 if L.force is not None else float(load_phys.tip_equivalent_mass(L.span, L.chord, L.thickness, L.density))
+
+
+def variants(req: RequirementsFile, catalog: Catalog) -> list[Variant]:
+    """Every structure material rated to the requirement, each as built and
+    with each catalog compensator rated to it (when compensation is on)."""
+    T = req.requirements.max_temperature
+    mats = [m for m in catalog.materials.values() if m.max_temperature >= T] or [force_path.default_material({})]
+    comps = [c for c in catalog.compensators.values() if c.max_temperature >= T] if req.options.thermal_compensation else []
+    return [Variant(m, comp) for m in mats for comp in [None, *comps]]
+
+
+def size(req, catalog, combos, progress=None):
+    """One geometric program per combination, as built and with each open
+    accumulator, in the default structure material; the other materials
+    get the same member stiffnesses re-sized in closed form (a cheap,
+    vectorisable screen: the force path is unchanged, mass and cost and
+    the thermal budget follow the material). An orifice reservoir adds no
+    stiffness, so it reuses the as-built sizing."""
+    sizer = GPSizer(req.objectives.minimize)
+    out = []
+    vs = variants(req, catalog)
+    base = force_path.default_material(catalog.materials)
+    if base.id not in {v.material.id for v in vs}:
+        base = vs[0].material
+    for i, c in enumerate(combos):
+        solved = {}
+        for v in vs:
+            key = v.compensator.id if v.compensator is not None and v.compensator.kind == "accumulator" else None
+            if key not in solved:
+                solved[key] = sizer.solve(sizing_input(req, c, base, v.compensator if key else None))
+            res = solved[key]
+            if v.material.id != base.id and math.isfinite(res.cap_thickness):
+                res = _resized(req, c, res, base, v.material)
+            out.append((c, v, res))
+        if i % 8 == 0 or i == len(combos) - 1:
+            _progress(progress, "sizing", i + 1, len(combos))
+    return out
+
+
+def _resized(req, c: Combo, res, old, new):
+    v = min(res.voltage_fraction, c.voltage_fraction_max)
+    x = c.stack_stroke * v
+    t_p = float(geometry.plate_thickness(res.wide_area, c.seal.pressure_rating))
+    L_f = float(force_path.frame_length(c.stack.length, t_p, effective_gap(req, x)))
+    t, area = force_path.resize_for_material(res.cap_thickness, res.frame_area, res.wide_area, L_f,
+                                             c.n * c.stack.stiffness * x, old, new)
+    return replace(res, cap_thickness=t, frame_area=area)
+
+
+def designs(req, catalog, sized) -> list[dict]:
+    """Build the sized designs with the same code as ``sizing evaluate``;
+    then, for as-built designs that drift, the passive variant."""
+    reference = reference_bouc_wen(catalog.stacks)
+    spacer = force_path.spacer_material(catalog.materials)
+    designs = []
+    for combo, var, res in sized:
+        d = {"combo": combo, "variant": var, "gp": res, "gp_success": res.success, "index": None, "simulated": None,
+             "spacer": 0.0, "id": combo.key + var.suffix()}
+        if math.isfinite(res.ratio) and math.isfinite(res.wide_area):
+            d["bw"] = stack_bouc_wen(combo.stack, reference)
+        designs.append(d)
+    _build(req, [d for d in designs if "bw" in d], spacer)
+    passive = []
+    for d in designs:
+        if d.get("static") is None or d["variant"].compensator is not None:
+            continue
+        length = _spacer_length(req, d, spacer)
+        if length > 0:
+            var = Variant(d["variant"].material, None, True)
+            passive.append(dict(d, variant=var, spacer=length, simulated=None, static=None,
+                                id=d["combo"].key + var.suffix()))
+    _build(req, passive, spacer)
+    return designs + passive
+
+
+def _spacer_length(req, d, spacer) -> float:
+    """Low-expansion spacer in the stack column (the frame longer by as
+    much) that brings the as-built thermal budget to zero: net / (R
+    (alpha_frame - alpha_spacer) dT). 0 when the design does not drift
+    beyond the allowance, drifts the other way, or the frame material
+    expands no more than the spacer."""
+    st = d["static"]
+    net = st["thermal_net_m"]
+    allowed = req.options.max_drift_fraction * req.requirements.stroke
+    dT = req.requirements.max_temperature - req.options.drift_reference_temperature
+    d_alpha = d["variant"].material.thermal_expansion - spacer.thermal_expansion
+    if abs(net) <= allowed or net <= 0 or d_alpha <= 0 or dT <= 0:
+        return 0.0
+    length = net / (st["ratio"] * d_alpha * dT)
+    return length if length < MAX_SPACER_M else 0.0
+
+
+def _build(req, designs, spacer) -> None:
+    """Candidate rows, static figures, metrics and static margins of the designs (in place)."""
+    if not designs:
+        return
+    T, S = req.requirements.max_temperature, req.requirements.stroke
+    rows = []
+    for d in designs:
+        combo, res, var = d["combo"], d["gp"], d["variant"]
+        v = min(res.voltage_fraction, combo.voltage_fraction_max)
+        voltage = v * combo.stack.max_voltage
+        free = res.ratio * combo.stack_stroke * v
+        d["rise"] = 0.5 * req.stroke_time * free / S          # reach the stroke in half the time allowed
+        bw, d["bouc_wen_source"] = d["bw"]
+        struct = structure_row(var.material, res.cap_thickness, res.frame_area, spacer, d["spacer"],
+                               var.compensator, _surface_mass(req), T - req.options.drift_reference_temperature)
+        rows.append(part_row(combo.stack, combo.n, res.ratio, res.wide_area, voltage, bw, T,
+                             effective_gap(req, combo.stack_stroke * v), combo.fluid, combo.seal, combo.amplifier,
+                             structure=struct))
+        d["index"] = len(rows) - 1
+    c = Candidates.from_rows(rows)
+    rise = np.array([d["rise"] for d in designs])
+    ramp = ramp_time(c, rise)
+    static = static_figures(c, ramp, req.duty.strokes_per_second)
+    met = metrics(c, ramp)
+    members = force_path.members(c)
+    loads = [case["load_N"] for case in load_cases(req.load)]
+    p_load = max(loads) / c.narrow_area
+    seal_f = seal_friction_at(c, p_load)
+    for d in designs:
+        i = d["index"]
+        d["cand"] = c.take([i])
+        d["ramp"] = float(ramp[i])
+        d["static"] = {k: float(np.asarray(v)[i]) for k, v in static.items()}
+        d["metrics"] = {k: float(np.asarray(v)[i]) for k, v in met.items()}
+        comp = d["variant"].compensator
+        d["force_path"] = force_path.as_list(members, i, d["variant"].material.id, comp.id if comp else None,
+                                             spacer.id if d["spacer"] > 0 else None)
+        d["seal_friction"] = {"wide": float(seal_f["wide"][i]), "narrow": float(seal_f["narrow"][i]),
+                              "at_pressure_Pa": float(p_load[i])}
+        d["static_margins"] = _static_margins(req, d)
+
+
+def _static_margins(req, d) -> dict:
+    """Every static check of one design, from its own figures (nothing is
+    copied between variants)."""
+    r, o, combo, st = req.requirements, req.options, d["combo"], d["static"]
+    stack, var = combo.stack, d["variant"]
+    c_large = combo.n * stack.capacitance * stack_phys.LARGE_SIGNAL_CAPACITANCE_FACTOR
+    volts_to_stroke = r.stroke * stack.max_voltage / (st["ratio"] * combo.stack_stroke)
+    i_req = c_large * volts_to_stroke / req.stroke_time
+    st["thermal_drift_m"] = st["thermal_net_m"]
+    st["thermal_drift_oil_only_m"] = st["thermal_drift_per_K_m"] * (r.max_temperature - o.drift_reference_temperature)
+    st["required_current_A"] = i_req
+    st["speed_m_s"] = st["free_stroke_m"] / d["ramp"]       # the planned drive ramp, at the amplifier's limit
+    st["rise_time_s"] = d["ramp"]
+    temps = [combo.margins["temperature"], temperature_margin(var.material.max_temperature, r.max_temperature)]
+    margins = {
+        "stroke": floor_margin(st["free_stroke_m"], r.stroke),
+        # the whole force path in series, less the seal friction at the blocked pressure
+        "blocked_force": floor_margin(st["blocked_force_net_N"], r.blocked_force),
+        "speed": floor_margin(st["speed_m_s"], r.speed),
+        "temperature": min(temps),
+        "amplifier_temperature": combo.margins["amplifier_temperature"],
+        "pressure": floor_margin(combo.seal.pressure_rating, st["blocked_pressure_Pa"]),
+        "drive_current": floor_margin(combo.amplifier.max_current, i_req),
+        "amplifier_continuous_current": floor_margin(combo.amplifier.continuous_current, st["continuous_current_A"]),
+        "natural_frequency": floor_margin(st["natural_frequency_Hz"], req.natural_frequency),
+        "thermal_drift": ceiling_margin(abs(st["thermal_net_m"]), o.max_drift_fraction * r.stroke),
+        "wide_gap": floor_margin(st["wide_gap_m"], st["gap_needed_m"]),
+        "packing": floor_margin(st["stacks_that_fit"], combo.n),
+    }
+    comp = var.compensator
+    if comp is not None:
+        margins["temperature"] = min(margins["temperature"], temperature_margin(comp.max_temperature, r.max_temperature))
+        margins["compensator_capacity"] = floor_margin(comp.capacity, st["thermal_compensator_volume_m3"])
+        if comp.leak_conductance > 0:
+            # output creep under the worst load over one duty cycle's hold
+            hold = 1.0 / req.duty.strokes_per_second
+            creep = comp.leak_conductance * d["seal_friction"]["at_pressure_Pa"] * hold / (st["narrow_diameter_m"] ** 2 * math.pi / 4)
+            st["compensator_creep_m"] = creep
+            margins["compensator_leak"] = ceiling_margin(creep, o.max_drift_fraction * r.stroke)
+    return margins
+
+
+def nominal_figures(req, catalog, combos: list[Combo], candidates: list[dict]) -> None:
+    """Combinations ruled out before sizing still carry a force path, a
+    thermal budget, seal friction and the static figures of a nominal
+    design (in place): R that just gives the stroke at the voltage the
+    amplifier allows, the bore at the seal's pressure rating (or the stack
+    packing), the default structure material sized by the closed-form rule,
+    no compensator. Marked ``nominal_geometry``: not a sized design."""
+    if not combos:
+        return
+    T, r, o = req.requirements.max_temperature, req.requirements, req.options
+    material = force_path.default_material(catalog.materials)
+    spacer = force_path.spacer_material(catalog.materials)
+    surface, dT = _surface_mass(req), T - o.drift_reference_temperature
+    rows, ratios, index, where = [], [], {}, []
+    for c in combos:
+        # the figures below do not depend on the amplifier beyond its voltage: build each once
+        key = (c.stack.id, c.n, c.fluid.id, c.seal.id, c.voltage_fraction_max)
+        if key in index:
+            where.append(index[key])
+            continue
+        index[key] = len(rows)
+        where.append(len(rows))
+        x = c.stack_stroke * c.voltage_fraction_max
+        R = max(r.stroke * (1 + o.design_margin) / x, 1.5)
+        nk = c.n * c.stack.stiffness
+        pack = math.pi / 4 * float(structure.packing_diameter(c.n, c.stack.diameter, STACK_SPACING_M)) ** 2
+        A = max(nk * x / c.seal.pressure_rating, pack)
+        gap = effective_gap(req, x)
+        t, area = force_path.design_structure(nk, nk * x, A, c.stack.length, gap, c.seal.pressure_rating,
+                                              material, o.structure_stiffness_ratio)
+        struct = structure_row(material, t, area, spacer, 0.0, None, surface, dT)
+        rows.append(part_row(c.stack, c.n, R, A, c.voltage, BoucWen(x / c.voltage, 0, 0, 0, 0, 1), T, gap,
+                             c.fluid, c.seal, c.amplifier, structure=struct))
+        ratios.append(R)
+    cand = Candidates.from_rows(rows)
+    static = static_figures(cand, req.stroke_time / 2, req.duty.strokes_per_second)
+    members = force_path.members(cand)
+    p_load = max(case["load_N"] for case in load_cases(req.load)) / cand.narrow_area
+    seal_f = seal_friction_at(cand, p_load)
+    keys = ("free_stroke_m", "blocked_force_N", "blocked_force_ideal_N", "blocked_force_net_N",
+            "natural_frequency_Hz", "wide_diameter_m", "narrow_diameter_m", "ratio", "thermal_net_m",
+            "wide_gap_m", "stacks_that_fit", "continuous_current_A")
+    per_row = [{"static": {k: float(static[k][i]) for k in keys},
+                "force_path": force_path.as_list(members, i, material.id, None),
+                "thermal_budget": {k: float(static["thermal_" + k][i]) for k in (*thermal.TERMS, "net_m")},
+                "seal_friction_N": {"wide": float(seal_f["wide"][i]), "narrow": float(seal_f["narrow"][i]),
+                                    "at_pressure_Pa": float(p_load[i])}} for i in range(len(rows))]
+    pruned = [c for c in candidates if c.get("stage") == "pruned"]
+    for cd, i in zip(pruned, where):
+        row = per_row[i]
+        cd["static"].update(row["static"])
+        cd["components"]["ratio"] = ratios[i]
+        cd["components"]["material"] = material.id
+        cd["nominal_geometry"] = True
+        cd["force_path"] = row["force_path"]
+        cd["thermal_budget"] = row["thermal_budget"]
+        cd["seal_friction_N"] = row["seal_friction_N"]
+        cd["compensator"] = None
+
+
+def assumed(combo: Combo, var: Variant) -> list[str]:
+    """Catalog values marked assumed that this design rests on, as part.field."""
+    parts = (combo.stack, combo.fluid, combo.seal, combo.amplifier, var.material, var.compensator)
+    return [f"{p.id}.{k}" for p in parts if hasattr(p, "assumed") for k in p.assumed()]
+
+
+@lru_cache(maxsize=4096)
+def _ramp_stroke(stack_id, params, voltage, ramp):
+    return bouc_wen.ramp_stroke(BoucWen(*params), voltage, ramp, points=1000)
+
+
+def hysteresis(stack, bw, voltage, ramp) -> dict:
+    """The stroke the (transferred) Bouc-Wen model gives at this design's own
+    ramp against the datasheet stroke at that voltage (issue 9, item 5)."""
+    params = tuple(float(v) for v in bw.as_array())
+    got = _ramp_stroke(stack.id, params, round(voltage, 3), round(ramp, 4))
+    nominal = stack.stroke * voltage / stack.max_voltage
+    return {"ramp_time_s": ramp, "model_stroke_m": got, "datasheet_stroke_m": nominal, "ratio": got / nominal}
+
+
+def hysteresis_time_scales(catalog: Catalog) -> dict:
+    """Per stack: the ramp time at which its Bouc-Wen model (own or
+    transferred) gives the datasheet stroke, and the stroke at 0.01, 1 and 10 s."""
+    reference = reference_bouc_wen(catalog.stacks)
+    out = {}
+    for st in catalog.stacks.values():
+        bw, source = stack_bouc_wen(st, reference)
+        out[st.id] = {"matching_ramp_time_s": bouc_wen.matching_ramp_time(bw, st.max_voltage, st.stroke),
+                      "datasheet_stroke_m": st.stroke, "source": source,
+                      "stroke_at_m": {str(T): bouc_wen.ramp_stroke(bw, st.max_voltage, T) for T in (0.01, 1.0, 10.0)}}
+    return out

@@ -1,0 +1,145 @@
+"""The force path of a piezohydraulic actuator: plates, frame, packing.
+
+Every member between the stacks and the output is a spring in series
+(CONTRACTS.md, second round, ``force_path``); stiffness is referred to the
+wide piston (force on the wide piston / its volume-equivalent displacement).
+
+End caps (Roark, Formulas for Stress and Strain, 7th ed., Table 11.2, cases
+10a simply supported and 10b fixed edge, uniform pressure q over the whole
+plate, radius a, thickness t, D = E t^3 / (12 (1 - nu^2))):
+
+    clamped:            w(r) = q (a^2 - r^2)^2 / (64 D),     y_c = q a^4 / (64 D)
+    simply supported:   w(r) = q (a^2 - r^2) ((5+nu)/(1+nu) a^2 - r^2) / (64 D),
+                        y_c = (5+nu) q a^4 / (64 D (1+nu))
+
+For the oil what counts is the volume the plate sweeps, so the stiffness is
+the force q pi a^2 over the *mean* deflection (volume / pi a^2). Integrating
+w(r) 2 pi r dr over the plate (derivation in tests/test_structure.py):
+
+    clamped:            w_mean = y_c / 3             = q a^4 / (192 D)
+    simply supported:   w_mean = (7+nu)/(3 (5+nu)) y_c = (7+nu) q a^4 / (192 D (1+nu))
+
+so k = 192 pi D / a^2 (clamped) and 192 pi D (1+nu) / ((7+nu) a^2)
+(simply supported). A bolted cap lies between the two; the verdict uses
+the simply supported value (the softer, conservative one) and the clamped
+value is reported beside it. Shear deflection of thick plates is not
+included (it softens thick caps further; t/a < 0.4 here).
+
+Stress: the simply supported plate peaks at its centre,
+sigma = 3 (3+nu) q a^2 / (8 t^2) (Roark 10a); the clamped one at its edge,
+3 q a^2 / (4 t^2) (Roark 10b), which is smaller for any nu >= 0, so the
+simply supported centre is the envelope used to size for stress.
+
+Frame: tie rods of total section A_f and length L_f in tension, k = E A_f / L_f.
+
+Stack packing: the smallest circle holding n equal circles (best known
+packings, E. Specht, packomania.com, after Graham, Lubachevsky et al.,
+Discrete Math. 181 (1998) 139-154), ratio D/d for n = 1..20; beyond 20 the
+hexagonal-density bound D/d = 1 + sqrt(n / 0.9069) * 1.05 is used (assumed:
+5 % above the density limit, covers the tabulated n = 20 value).
+
+Everything is plain arithmetic on numpy arrays (or on cvxpy expressions,
+where a function is a monomial), SI units.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+EDGES = ("simply_supported", "clamped")
+
+# D/d of the smallest circle holding n unit circles, n = 1..20 (packomania).
+PACKING_RATIO = (1.0, 2.0, 2.1547005, 2.4142136, 2.7013016, 3.0, 3.0, 3.3047649, 3.6131259,
+                 3.8130256, 3.9238044, 4.0296019, 4.2360680, 4.3284285, 4.5213558, 4.6154256,
+                 4.7920337, 4.8637033, 4.8637033, 5.1223207)
+HEX_DENSITY = math.pi / (2 * math.sqrt(3))      # 0.9069, densest packing of the plane
+
+
+def flexural_rigidity(E, t, nu):
+    """D = E t^3 / (12 (1 - nu^2)), N m."""
+    return np.asarray(E) * np.asarray(t) ** 3 / (12.0 * (1.0 - np.asarray(nu) ** 2))
+
+
+def plate_centre_deflection(q, a, t, E, nu, edge="simply_supported"):
+    """Centre deflection of a circular plate under uniform pressure q (m), Roark 10a/10b."""
+    D = flexural_rigidity(E, t, nu)
+    y = np.asarray(q) * np.asarray(a) ** 4 / (64.0 * D)
+    if edge == "clamped":
+        return y
+    return y * (5.0 + np.asarray(nu)) / (1.0 + np.asarray(nu))
+
+
+def mean_deflection_factor(nu, edge="simply_supported"):
+    """w_mean / y_centre: 1/3 clamped, (7+nu)/(3 (5+nu)) simply supported."""
+    if edge == "clamped":
+        return np.full_like(np.asarray(nu, dtype=float), 1.0 / 3.0)
+    nu = np.asarray(nu, dtype=float)
+    return (7.0 + nu) / (3.0 * (5.0 + nu))
+
+
+def plate_compliance_factor(nu, edge="simply_supported"):
+    """c in 1/k = c a^2 / D: (7+nu)/(192 pi (1+nu)) simply supported,
+    1/(192 pi) clamped, from k = q pi a^2 / w_mean."""
+    nu = np.asarray(nu, dtype=float)
+    if edge == "clamped":
+        return np.full_like(nu, 1.0 / (192.0 * math.pi))
+    return (7.0 + nu) / (192.0 * math.pi * (1.0 + nu))
+
+
+def plate_stiffness(a, t, E, nu, edge="simply_supported"):
+    """Stiffness of a circular plate under uniform pressure, referred to a
+    piston of the plate's own area: force / volume-equivalent displacement (N/m)."""
+    return 1.0 / (plate_compliance_factor(nu, edge) * np.asarray(a) ** 2 / flexural_rigidity(E, t, nu))
+
+
+def plate_stress(q, a, t, nu):
+    """Peak bending stress, simply supported centre (the envelope of both
+    edge conditions): 3 (3+nu) q a^2 / (8 t^2), Pa."""
+    return 3.0 * (3.0 + np.asarray(nu)) / 8.0 * np.asarray(q) * np.asarray(a) ** 2 / np.asarray(t) ** 2
+
+
+def plate_thickness_for_stiffness(k, a, E, nu, edge="simply_supported"):
+    """Thickness that gives stiffness k (N/m) to a plate of radius a (m)."""
+    D = np.asarray(k) * plate_compliance_factor(nu, edge) * np.asarray(a) ** 2
+    return (12.0 * (1.0 - np.asarray(nu) ** 2) * D / np.asarray(E)) ** (1.0 / 3.0)
+
+
+def plate_thickness_for_stress(q, a, allowable, nu):
+    """Thickness that keeps the plate's peak stress at ``allowable`` (m)."""
+    return np.asarray(a) * np.sqrt(3.0 * (3.0 + np.asarray(nu)) / 8.0 * np.asarray(q) / np.asarray(allowable))
+
+
+def rod_stiffness(E, area, length):
+    """Axial stiffness E A / L of a bar or a set of tie rods (N/m)."""
+    return np.asarray(E) * np.asarray(area) / np.asarray(length)
+
+
+def series(*stiffnesses):
+    """Springs in series: 1 / sum(1 / k_i). Infinite members drop out."""
+    compliance = sum(1.0 / np.asarray(k, dtype=float) for k in stiffnesses)
+    return 1.0 / compliance
+
+
+def packing_ratio(n):
+    """D/d of the smallest circle that holds n circles of diameter d."""
+    n = np.asarray(n, dtype=int)
+    table = np.asarray(PACKING_RATIO)
+    beyond = 1.0 + 1.05 * np.sqrt(np.maximum(n, 1) / HEX_DENSITY)
+    return np.where(n <= len(table), table[np.clip(n, 1, len(table)) - 1], beyond)
+
+
+def packing_diameter(n, stack_diameter, spacing=0.0):
+    """Bore needed to place n stacks of ``stack_diameter`` with ``spacing``
+    between neighbours (m): D/d (d + spacing)."""
+    return packing_ratio(n) * (np.asarray(stack_diameter) + np.asarray(spacing))
+
+
+def stacks_that_fit(bore, stack_diameter, spacing=0.0):
+    """How many stacks fit under a piston of diameter ``bore`` (count)."""
+    ratio = np.asarray(bore, dtype=float) / (np.asarray(stack_diameter) + np.asarray(spacing))
+    table = np.asarray(PACKING_RATIO)
+    n_table = np.searchsorted(table, ratio + 1e-9, side="right")
+    # beyond the table: invert the density bound
+    n_beyond = np.floor(HEX_DENSITY * ((ratio - 1.0) / 1.05) ** 2 + 1e-9).astype(int)
+    return np.where(ratio >= table[-1], np.maximum(n_beyond, len(table)), n_table)

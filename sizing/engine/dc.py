@@ -70,12 +70,21 @@ def metrics(act: DCActuator) -> dict[str, float]:
 
 def step_cases(act: DCActuator, step: float, load_forces, duration: float = 1.0, keep_traces=False):
     """Closed-loop response to a step of ``step`` metres under each load."""
+    cases = step_cases_for(lambda force: model(act, force), step, load_forces, duration, keep_traces)
+    for case in cases:
+        case["max_speed_m_s"] = max_speed(act, case["load_N"])
+    return cases
+
+
+def step_cases_for(make_model, step: float, load_forces, duration: float = 1.0, keep_traces=False):
+    """Closed-loop step response of ``make_model(force)`` under each load:
+    the figures of ``step_metrics`` plus peak current and peak speed."""
     t = np.arange(0.0, duration + 0.5 / OUTPUT_RATE_HZ, 1.0 / OUTPUT_RATE_HZ)
     reference = np.full_like(t, step)
     reference[0] = 0.0
     cases = []
     for force in load_forces:
-        out = simulate(model(act, force), t, reference)
+        out = simulate(make_model(force), t, reference)
         y = out["position_m"]
         case = {k: float(v[0]) for k, v in step_metrics(t, y, np.array([SETTLED * step])).items()}
         case["load_N"] = float(force)

@@ -14,7 +14,8 @@
    thermal compensator (an assumed spring-loaded accumulator, with a stated
    mass and cost): both are in the results, side by side.
 5. The catalog's DC actuators are simulated under the same load cases and
-   ranked in the same list (``dc_candidates.py``).
+   ranked in the same list (``dc_candidates.py``), and so are DC actuators
+   sized from parts, motor x screw x gear x drive (``dc_sizing.py``).
 """
 from __future__ import annotations
 
@@ -32,6 +33,7 @@ from ..physics import fluid as fluid_props
 from ..physics import geometry, stack as stack_phys
 from .convex import GPSizer, SizingInput
 from .dc_candidates import dc_candidates
+from .dc_sizing import dc_parts_candidates
 from .evaluate import load_cases
 from .piezo import Candidates, part_row, reference_bouc_wen, stack_bouc_wen
 from .rank import ceiling_margin, floor_margin, nondominated_levels, rank_order, verdict
@@ -70,6 +72,10 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
         candidates.extend(_design_candidates(req, d))
     dc = dc_candidates(req, catalog, loads) if req.options.dc_motors else []
     candidates.extend(dc["candidates"] if dc else [])
+    parts = dc_parts_candidates(req, catalog, loads, progress) if req.options.dc_motors else {}
+    candidates.extend(parts.get("candidates", []))
+    if dc:
+        dc["models"] = parts.get("models", {})
     _rank(req, candidates)
     candidates.sort(key=lambda c: c["rank"])
     results = {
@@ -85,7 +91,8 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
         "disagreements": _disagreements(designs),
         "counts": {"combinations": len(combos), "pruned": len(combos) - len(to_size), "sized": len(to_size),
                    "gp_feasible": sum(1 for d in designs if d["gp_success"]),
-                   "simulated": sum(1 for d in designs if d["simulated"] is not None)},
+                   "simulated": sum(1 for d in designs if d["simulated"] is not None),
+                   "dc_parts": _dc_counts(parts.get("candidates", []))},
     }
     traces = _traces(req, candidates, designs, dc, loads)
     results["runtime_s"] = time.perf_counter() - start
@@ -340,6 +347,11 @@ def _rank(req, candidates) -> None:
         c["rank"] = int(rank[i])
         c["pareto"] = bool(feasible[i] and level[i] == 1)
         c["pareto_level"] = int(level[i]) if feasible[i] else None
+
+
+def _dc_counts(parts: list[dict]) -> dict:
+    stages = [c["stage"] for c in parts]
+    return {"combinations": len(parts), "pruned": stages.count("pruned"), "simulated": stages.count("simulated")}
 
 
 def _objective(value) -> float:

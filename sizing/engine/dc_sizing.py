@@ -105,6 +105,7 @@ def dc_parts_candidates(req, catalog, loads, progress=None) -> dict:
             simulated, sim_margins = _sim_figures(req, p, i, st, sim)
             m.update(sim_margins)
             kept[cid] = sim["model"]
+        m = {k: val for k, val in m.items() if val != math.inf}     # no limit to check (e.g. no magnet rating)
         failed = [k for k, v in m.items() if not v >= 0]
         stage = "simulated" if sim is not None else ("sized" if not failed else "pruned")
         controller = {"kp": float(gains["kp"][i]), "ki": float(gains["ki"][i]), "kd": float(gains["kd"][i]),

@@ -12,9 +12,9 @@ import hashlib
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Literal, Optional
+from typing import Annotated, Literal, Optional
 
-from pydantic import field_validator, model_validator
+from pydantic import AfterValidator, field_validator, model_validator
 
 from ..errors import InputError
 from .schema import Qty, Strict, load_toml, parse_model
@@ -174,6 +174,15 @@ class DCActuator(Entry):
 
 
 # --- parts of a DC actuator sized from parts (issue 11) ---------------------
+def _at_most_one(value: float) -> float:
+    if not 0 < value <= 1:
+        raise ValueError(f"expected an efficiency in (0, 1], got {value!r}")
+    return value
+
+
+Efficiency = Annotated[Qty("dimensionless", positive=True), AfterValidator(_at_most_one)]
+
+
 class Motor(Entry):
     """Brushless motor. k_e is bus-referred (V s/rad: no-load speed = bus
     voltage / k_e); resistance and inductance terminal to terminal at 25 degC."""
@@ -204,7 +213,7 @@ class Screw(Entry):
     type: Literal["ball", "lead", "roller"]
     lead: Qty("length", positive=True)
     diameter: Qty("length", positive=True)
-    efficiency: Qty("dimensionless", positive=True)
+    efficiency: Efficiency
     dynamic_load_rating: Qty("force", positive=True)
     inertia_per_length: Qty("inertia_per_length", positive=True)
     mass_per_length: Qty("mass_per_length", positive=True)
@@ -214,30 +223,16 @@ class Screw(Entry):
     max_temperature: Qty("temperature")
     cost_usd: Qty("dimensionless", nonnegative=True)
 
-    @field_validator("efficiency")
-    @classmethod
-    def _efficiency(cls, value: float) -> float:
-        if not 0 < value <= 1:
-            raise ValueError(f"expected an efficiency in (0, 1], got {value!r}")
-        return value
-
 
 class Gear(Entry):
     ratio: Qty("dimensionless", positive=True)
-    efficiency: Qty("dimensionless", positive=True)
+    efficiency: Efficiency
     inertia: Qty("inertia", nonnegative=True)          # referred to the input shaft
     mass: Qty("mass", positive=True)
     max_input_speed: Qty("angular_speed", positive=True)
     max_output_torque: Qty("torque", positive=True)
     max_temperature: Qty("temperature")
     cost_usd: Qty("dimensionless", nonnegative=True)
-
-    @field_validator("efficiency")
-    @classmethod
-    def _efficiency(cls, value: float) -> float:
-        if not 0 < value <= 1:
-            raise ValueError(f"expected an efficiency in (0, 1], got {value!r}")
-        return value
 
 
 class Drive(Entry):

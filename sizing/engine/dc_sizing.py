@@ -24,11 +24,11 @@ from ..sim.dc_motor import DCMotorModel, simulate
 from ..sim.metrics import step_metrics
 from . import dc_controller as ctl
 from .dc import OUTPUT_RATE_HZ, SETTLED
-from .dc_parts import enumerate_parts, metrics, static_screen, temperature_margin, winding
+from .dc_parts import enumerate_parts, metrics, static_screen, temperature_margin
 from .dc_candidates import dc_duration
 from .rank import nondominated_levels
 
-MAX_SIMULATED = 300     # designs simulated per solve (each under every load case): every statically feasible one here
+MAX_SIMULATED = 300     # designs simulated per solve (each under every load case)
 MIN_SIMULATED = 24      # filled with the closest-to-feasible when fewer pass the screen
 SIM_CHUNK = 64          # rows (design x load case) per batched simulation
 OBJECTIVE_KEYS = {"mass": "mass_kg", "cost": "cost_usd", "volume": "volume_m3", "power": "power_W"}
@@ -73,7 +73,7 @@ def _choose(margins, met, req) -> np.ndarray:
         level[ok] = nondominated_levels(F[ok])
     score = F.sum(axis=1) / np.maximum(F.min(axis=0), 1e-12).sum()
     order = np.lexsort((score, -worst, level, ~ok))
-    n = min(len(order), max(MAX_SIMULATED if ok.sum() >= MIN_SIMULATED else MIN_SIMULATED, 0))
+    n = min(len(order), MAX_SIMULATED, max(int(ok.sum()), MIN_SIMULATED))
     return order[:n]
 
 
@@ -149,6 +149,7 @@ def _simulate(req, pl, static, gains, p, chosen, loads, r_hot, progress) -> dict
         y, v, i_trace = out["position_m"], out["velocity_m_s"], out["current_A"]
         fig = step_metrics(t, y, np.full(len(y), SETTLED * S))
         rms = duty_rms(t, i_trace, period)
+        P = model.matrix()
         for k, design in enumerate(idx):
             rows = slice(k * n_l, (k + 1) * n_l)
             cases = []
@@ -158,16 +159,16 @@ def _simulate(req, pl, static, gains, p, chosen, loads, r_hot, progress) -> dict
                              "peak_speed_m_s": float(np.max(np.abs(v[row]))), "rms_current_A": float(rms[row]),
                              "max_speed_m_s": float(_case_ceiling(p, pl, static, design, loads[j]))})
                 cases.append(case)
-            result[int(design)] = {"cases": cases, "model": _row_params(model, k * n_l)}
+            result[int(design)] = {"cases": cases, "model": _row_params(P[k * n_l])}
         if progress is not None:
             progress("simulating DC", min(start + per_chunk, len(chosen)), len(chosen))
     return result
 
 
-def _row_params(model: DCMotorModel, row: int) -> dict:
-    """The scalar parameters of one row (load_force excluded: set per case)."""
-    M = model.matrix()[row]
-    return {name: float(M[j]) for j, name in enumerate(model.PARAMS) if name != "load_force"}
+def _row_params(row) -> dict:
+    """The scalar parameters of one row of the model matrix (load_force
+    excluded: set per case)."""
+    return {name: float(row[j]) for j, name in enumerate(DCMotorModel.PARAMS) if name != "load_force"}
 
 
 def _case_ceiling(p, pl, static, i, load) -> float:
@@ -185,8 +186,10 @@ def _sim_figures(req, p, i, st, sim) -> tuple[dict, dict]:
     S = r.stroke
     reached = all(c["stroke_m"] >= SETTLED * S for c in cases)
     i_rms = max(c["rms_current_A"] for c in cases)
-    w = winding(p.take([i]), r.max_temperature, i_rms)
-    Tw = float(w["temperature_degC"][0])
+    v = p.values
+    Tw = r.max_temperature + float(motor_phys.winding_rise(v["motor_thermal_resistance"][i], v["motor_winding_resistance"][i],
+                                                          v["motor_resistance_temperature_coefficient"][i],
+                                                          r.max_temperature, i_rms))
     peak = max(c["peak_speed_m_s"] for c in cases)
     figures = {"stroke_m": worst["stroke_m"], "time_to_stroke_s": worst["time_to_stroke_s"],
                "speed_m_s": min(c["speed_m_s"] for c in cases), "overshoot": max(c["overshoot"] for c in cases),

@@ -107,3 +107,32 @@ def test_drive_below_the_motor_voltage_exits_2(tmp_path):
     out = tmp_path / "out"
     code, _, err = run_cli("solve", ROOT / "studies" / "seed-requirements.toml", "--catalog", folder, "--out", out, "--quiet")
     assert code == 2 and "drives.toml" in err and not out.exists()
+
+
+def test_evaluate_reproduces_a_solved_design(seed, tmp_path):
+    """The `design` entry of a DC design from parts is a `sizing evaluate`
+    input giving the same figures (same screen, controller and simulation)."""
+    from sizing import api
+    req, cat, loads = seed
+    found = dc_sizing.dc_parts_candidates(req, cat, loads)["candidates"]
+    best = min((c for c in found if c["stage"] == "simulated" and c["components"]["gear"]),
+               key=lambda c: c["metrics"]["mass_kg"])
+    d = best["design"]
+    lines = ['technology = "dc_motor"'] + [f'{k} = "{d[k]}"' for k in ("motor", "screw", "gear", "drive")]
+    lines += [f"{k} = {d[k]!r}" for k in ("step", "duration", "temperature", "speed", "strokes_per_second",
+                                          "electronics_bay_temperature")]
+    lines += [f'amplifier_location = "{d["amplifier_location"]}"', "[load]",
+              'dynamic_pressure = ["10 kPa", "25 kPa"]']
+    path = tmp_path / "dc.toml"
+    path.write_text("\n".join(lines) + "\n")
+    ev = api.evaluate(path)
+    assert ev["controller"] == best["controller"]
+    assert ev["static"]["max_speed_m_s"] == pytest.approx(best["static"]["max_speed_m_s"], rel=1e-12)
+    for a, b in zip(ev["simulated"]["cases"], best["simulated"]["cases"]):
+        assert a["speed_m_s"] == pytest.approx(b["speed_m_s"], rel=1e-9)
+    assert ev["simulated"]["winding_temperature_degC"] == pytest.approx(best["simulated"]["winding_temperature_degC"])
+    # a drive below the motor's rated voltage is refused with one line naming the file and field
+    path.write_text(path.read_text().replace(f'drive = "{d["drive"]}"', 'drive = "servo-28v-20a"')
+                    .replace(f'motor = "{d["motor"]}"', 'motor = "gen-bldc60-96v-h"'))
+    code, _, err = run_cli("evaluate", path)
+    assert code == 2 and len(err.strip().splitlines()) == 1 and "dc.toml" in err and "drive" in err

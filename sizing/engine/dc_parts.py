@@ -180,7 +180,7 @@ def static_screen(p: PartArrays, req, loads) -> tuple[dict, dict, dict]:
         "mechanical_speed_limit_m_s": screw_phys.output_speed(w_mech, lead), "current_limit_A": i_max,
         "load_current_A": i_load, "holding_winding_temperature_degC": hold["temperature_degC"],
         "buckling_load_N": P_cr, "screw_life_h": life_h, "inertia_kg_m2": pl["inertia"],
-        "effective_lead_m": lead, "efficiency": eta, "torque_constant_N_m_A": kt,
+        "effective_lead_m": lead, "efficiency": eta, "torque_constant_at_temperature": kt,
         "drive_voltage_V": u_drive, "hot_resistance_ohm": r_hot, "stroke_m": np.full(len(p), TRAVEL_FACTOR * r.stroke),
     }
     margins = {

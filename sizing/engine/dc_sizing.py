@@ -77,9 +77,10 @@ def _choose(margins, met, req) -> np.ndarray:
     return order[:n]
 
 
-def dc_parts_candidates(req, catalog, loads, progress=None) -> dict:
+def dc_parts_candidates(req, catalog, loads, progress=None, duration=None) -> dict:
     """Candidates of every parts combination; ``models`` keeps the
     simulation model of each simulated design for the report's traces."""
+    duration = dc_duration(req) if duration is None else duration
     p = enumerate_parts(catalog)
     if len(p) == 0:
         return {"candidates": [], "models": {}}
@@ -89,9 +90,8 @@ def dc_parts_candidates(req, catalog, loads, progress=None) -> dict:
     met = metrics(p, req, static["current_limit_A"])
     w0 = ctl.pole_target(req.stroke_time, p.values["drive_rate"])
     gains = ctl.ipd_gains(pl["c1"], pl["c2"], pl["lead"], w0)
-    r_hot = static["hot_resistance_ohm"]
     chosen = _choose(margins, met, req)
-    sims = _simulate(req, pl, static, gains, p, chosen, loads, r_hot, progress)
+    sims = _simulate(req, pl, static, gains, p, chosen, loads, duration, progress)
     out, kept = [], {}
     for i in range(len(p)):
         cid = design_id(p, i)
@@ -110,7 +110,7 @@ def dc_parts_candidates(req, catalog, loads, progress=None) -> dict:
         stage = "simulated" if sim is not None else ("sized" if not failed else "pruned")
         controller = {"kp": float(gains["kp"][i]), "ki": float(gains["ki"][i]), "kd": float(gains["kd"][i]),
                       "rate_Hz": float(p.values["drive_rate"][i]), "rule": "I-PD, triple closed-loop pole",
-                      "pole_rad_s": float(w0[i]), "bandwidth_Hz": float(ctl.bandwidth(w0[i]) / (2 * math.pi)),
+                      "pole_rad_per_second": float(w0[i]), "bandwidth_Hz": float(ctl.bandwidth(w0[i]) / (2 * math.pi)),
                       "current_limit_A": st["current_limit_A"], "bus_voltage_V": float(p.values["drive_bus_voltage"][i]),
                       "voltage_limit_V": st["drive_voltage_V"]}
         out.append({
@@ -123,18 +123,20 @@ def dc_parts_candidates(req, catalog, loads, progress=None) -> dict:
                                                                  p.values["gear_max_temperature"][i])),
                                          "required_degC": T}},
             "design": {"technology": "dc_motor", "motor": p.motor[i], "screw": p.screw[i], "gear": p.gear[i],
-                       "drive": p.drive[i], "step": r.stroke, "duration": dc_duration(req), "temperature": T},
+                       "drive": p.drive[i], "step": r.stroke, "duration": duration, "temperature": T,
+                       "speed": r.speed, "strokes_per_second": req.duty.strokes_per_second,
+                       "amplifier_location": req.options.amplifier_location,
+                       "electronics_bay_temperature": req.options.electronics_bay_temperature},
             "reason": "" if not failed or stage == "simulated" else "ruled out before simulation: " + ", ".join(failed),
         })
     return {"candidates": out, "models": kept}
 
 
-def _simulate(req, pl, static, gains, p, chosen, loads, r_hot, progress) -> dict:
+def _simulate(req, pl, static, gains, p, chosen, loads, duration, progress) -> dict:
     """Simulate the chosen designs under every load case, batched."""
     if len(chosen) == 0 or not loads:
         return {}
     S = req.requirements.stroke
-    duration = dc_duration(req)
     t = np.arange(0.0, duration + 0.5 / OUTPUT_RATE_HZ, 1.0 / OUTPUT_RATE_HZ)
     ref = np.full_like(t, S)
     ref[0] = 0.0
@@ -144,7 +146,7 @@ def _simulate(req, pl, static, gains, p, chosen, loads, r_hot, progress) -> dict
     result = {}
     for start in range(0, len(chosen), per_chunk):
         idx = chosen[start:start + per_chunk]
-        model = models(pl, static, gains, p, idx, loads, r_hot)
+        model = models(pl, static, gains, p, idx, loads, static["hot_resistance_ohm"])
         out = simulate(model, t, ref)
         y, v, i_trace = out["position_m"], out["velocity_m_s"], out["current_A"]
         fig = step_metrics(t, y, np.full(len(y), SETTLED * S))
@@ -207,3 +209,26 @@ def _sim_figures(req, p, i, st, sim) -> tuple[dict, dict]:
         "mechanical_speed": st["mechanical_speed_limit_m_s"] / max(peak, 1e-12) - 1.0,
     }
     return figures, margins
+
+
+def evaluate_parts(design, catalog, parts: dict, cases: list[dict]) -> dict:
+    """``sizing evaluate`` of one design from parts: the same screen,
+    controller and simulation as ``sizing solve`` (a one-design catalog)."""
+    from dataclasses import replace
+    from ..io.requirements import design_requirements
+    one = replace(catalog, motors={parts["motor"].id: parts["motor"]}, screws={parts["screw"].id: parts["screw"]},
+                  gears={parts["gear"].id: parts["gear"]} if parts["gear"] is not None else {},
+                  drives={parts["drive"].id: parts["drive"]})
+    loads = [c["load_N"] for c in cases]
+    req = design_requirements(design, loads)
+    found = dc_parts_candidates(req, one, loads, duration=design.duration)["candidates"]
+    c = next(x for x in found if x["components"]["gear"] == (parts["gear"].id if parts["gear"] is not None else None))
+    sim = c["simulated"] or {"cases": []}
+    simulated = [dict(case, **s) for case, s in zip(cases, sim["cases"])]
+    worst = max(simulated, key=lambda x: x["load_N"]) if simulated else {}
+    margins = {k: v for k, v in c["margins"].items() if k != "blocked_force"}
+    warnings = [f"{k}: margin {v:+.1%}" for k, v in margins.items() if not v >= 0]
+    return {"technology": "dc_motor", "design": dict(c["components"], step_m=design.step),
+            "controller": c["controller"], "static": c["static"],
+            "simulated": {"cases": simulated, "worst": worst, **{k: v for k, v in sim.items() if k != "cases"}},
+            "margins": margins, "metrics": c["metrics"], "warnings": warnings}

@@ -136,3 +136,24 @@ def test_evaluate_reproduces_a_solved_design(seed, tmp_path):
                     .replace(f'motor = "{d["motor"]}"', 'motor = "gen-bldc60-96v-h"'))
     code, _, err = run_cli("evaluate", path)
     assert code == 2 and len(err.strip().splitlines()) == 1 and "dc.toml" in err and "drive" in err
+
+
+def test_ratio_interval_closed_form_and_against_the_screen(seed):
+    """Hand numbers: k_t = k_e = 0.05, R 0.2 ohm, 20 A, lead 2 mm, eta 0.81,
+    48 V, 2.5 kN, 1210 N, 0.1 m/s, no rating cap. a = 3.183e-4 m;
+    force: N >= 2500 a / (0.81 x 0.05 x 20) = 0.9824; speed: roots of
+    (0.05 x 0.1 / a) N^2 - 48 N + 0.2 x 1210 a / (0.81 x 0.05) = 0."""
+    a = 0.002 / (2 * math.pi)
+    lo, hi = dc_parts.ratio_interval(0.05, 0.05, 0.2, 20.0, 0.002, 0.81, 48.0, np.inf, 2500.0, 1210.0, 0.1)
+    A, C = 0.05 * 0.1 / a, 0.2 * 1210 * a / (0.81 * 0.05)
+    assert lo == pytest.approx(max(2500 * a / (0.81 * 0.05 * 20), (48 - math.sqrt(48**2 - 4 * A * C)) / (2 * A)))
+    assert hi == pytest.approx((48 + math.sqrt(48**2 - 4 * A * C)) / (2 * A))
+    # consistency with the screen: a design whose ratio lies inside its interval
+    # meets force and speed at the bus voltage (ratings aside)
+    req, cat, loads = seed
+    p = dc_parts.enumerate_parts(cat)
+    _, st, m = dc_parts.static_screen(p, req, loads)
+    N = p.values["gear_ratio"]
+    inside = (N >= st["ratio_low"] * 1.001) & (N <= st["ratio_high"] * 0.999) & (st["drive_voltage_V"] == p.values["drive_bus_voltage"])
+    assert inside.any()
+    assert np.all(m["blocked_force"][inside] >= 0) and np.all(m["speed"][inside] >= 0)

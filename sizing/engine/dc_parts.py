@@ -23,7 +23,8 @@ a combination is ruled out by every margin below zero, and keeps them:
 - screw_life: L10 life at the duty against REQUIRED_LIFE_H.
 Continuous choices are catalog values (lead, ratio): the feasible ratios of
 a motor-screw pair form an interval (force needs N >= N_min, speed N <=
-N_max), which this enumeration covers exactly at the catalog's ratios.
+N_max; ``ratio_interval``, reported as static.ratio_low / ratio_high), and
+the enumeration covers it at the catalog's ratios (1 = direct).
 """
 from __future__ import annotations
 
@@ -174,6 +175,8 @@ def static_screen(p: PartArrays, req, loads) -> tuple[dict, dict, dict]:
     P_cr = screw_phys.buckling_load(v["screw_elastic_modulus"], v["screw_diameter"], pl["screw_length"])
     rev_per_s = 2 * r.stroke / v["screw_lead"] * req.duty.strokes_per_second
     life_h = screw_phys.l10_revolutions(v["screw_dynamic_load_rating"], F_load) / rev_per_s / 3600.0
+    n_low, n_high = ratio_interval(kt, v["motor_back_emf_constant"], r_hot, i_max, v["screw_lead"], eta,
+                                   v["drive_bus_voltage"], v["motor_max_speed"], r.blocked_force, F_load, r.speed)
     drive_ambient = o.electronics_bay_temperature if o.amplifier_location == "bay" else T
     static = {
         "blocked_force_N": F_peak, "max_speed_m_s": v_max, "voltage_speed_limit_m_s": screw_phys.output_speed(w_volt, lead),
@@ -181,7 +184,7 @@ def static_screen(p: PartArrays, req, loads) -> tuple[dict, dict, dict]:
         "load_current_A": i_load, "holding_winding_temperature_degC": hold["temperature_degC"],
         "buckling_load_N": P_cr, "screw_life_h": life_h, "inertia_kg_m2": pl["inertia"],
         "effective_lead_m": lead, "efficiency": eta, "torque_constant_at_temperature": kt,
-        "drive_voltage_V": u_drive, "hot_resistance_ohm": r_hot, "stroke_m": np.full(len(p), TRAVEL_FACTOR * r.stroke),
+        "drive_voltage_V": u_drive, "hot_resistance_ohm": r_hot, "ratio_low": n_low, "ratio_high": n_high, "stroke_m": np.full(len(p), TRAVEL_FACTOR * r.stroke),
     }
     margins = {
         "blocked_force": F_peak / r.blocked_force - 1.0,
@@ -196,6 +199,27 @@ def static_screen(p: PartArrays, req, loads) -> tuple[dict, dict, dict]:
         "screw_life": life_h / REQUIRED_LIFE_H - 1.0,
     }
     return pl, static, margins
+
+
+def ratio_interval(kt, ke, r_hot, i_max, lead, eta, u_bus, w_mech_motor, force, load, speed):
+    """The continuous reduction ratios N (motor turns per screw turn) with
+    which a motor and screw meet the force and the speed: a 1-D convex
+    program solved in closed form, against which the catalog's ratios are
+    snapped. With a = l / 2 pi and eta the whole train's efficiency:
+      force:  2 pi eta k_t i_max N / l >= F          -> N >= F a / (eta k_t i_max)
+      speed:  (U - R F a / (eta k_t N)) / k_e >= v N / a
+              -> (k_e v / a) N^2 - U N + R F a / (eta k_t) <= 0, between its roots
+      rating: v N / a <= w_mech.
+    Returns (N_low, N_high); N_low > N_high where no ratio works."""
+    a = np.asarray(lead) / (2 * np.pi)
+    n_force = force * a / (eta * kt * i_max)
+    A, B, C = ke * speed / a, -u_bus, r_hot * load * a / (eta * kt)
+    disc = B**2 - 4 * A * C
+    root = np.sqrt(np.maximum(disc, 0.0))
+    lo = np.where(disc >= 0, (-B - root) / (2 * A), np.inf)
+    hi = np.where(disc >= 0, (-B + root) / (2 * A), -np.inf)
+    hi = np.minimum(hi, w_mech_motor * a / speed)
+    return np.maximum(n_force, lo), hi
 
 
 def metrics(p: PartArrays, req, i_max) -> dict[str, np.ndarray]:

@@ -24,7 +24,8 @@ def evaluate(design_path: str | Path, catalog_dir: str | Path | None = None) -> 
         result = evaluate_dc(design, cat, str(design_path))
     # provenance: the catalog values this result rests on that are assumed
     from .io.provenance import assumed_values
-    parts = {k: v for k, v in result["design"].items() if k in ("stack", "fluid", "seal", "amplifier", "actuator")}
+    parts = {k: v for k, v in result["design"].items() if k in ("stack", "fluid", "seal", "amplifier", "actuator",
+                                                                 "motor", "screw", "gear", "drive")}
     result["assumed"] = assumed_values(cat, parts)
     return result
 

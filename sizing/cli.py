@@ -88,6 +88,8 @@ def solve(requirements: Path = typer.Argument(..., help="requirements.toml (CONT
         for group in results["summary"]["groups"]:
             typer.echo(f"{group['label']}: {group['text']}")
         typer.echo(results["summary"]["thermal"])
+        if results["summary"].get("comparison", {}).get("text"):
+            typer.echo(results["summary"]["comparison"]["text"])
         typer.echo(f"{out}/report.html, results.json, candidates.csv written "
                    f"({results['runtime_s']:.1f} s)")
 
@@ -145,7 +147,7 @@ def catalog_diff(old: str = typer.Argument(..., help="Old catalog: a folder, or 
 
 
 @catalog_app.command("add")
-def catalog_add(kind: str = typer.Argument(..., help="Part kind: stack, fluid, seal, amplifier or dc_actuator."),
+def catalog_add(kind: str = typer.Argument(..., help="Part kind: stack, fluid, seal, amplifier, dc_actuator, motor, screw, gear or drive."),
                 sheet: Path = typer.Argument(..., help="CSV of new parts, one per row; header = field names, units in the header or the cells."),
                 catalog: Optional[Path] = CatalogOpt):
     """Validate a vendor sheet (CSV) and append its parts to the kind's catalog file."""

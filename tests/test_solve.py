@@ -278,10 +278,31 @@ def test_seed_solve_end_to_end(tmp_path, seed_requirements):
     assert r["requirements"]["stroke_m"] == pytest.approx(0.04)
     dc = [c for c in r["candidates"] if c["technology"] == "dc_motor"]
     assert dc and all("temperature" in c["margins"] for c in dc)
+    # issue 11: catalog actuators keep {"actuator": ID}; DC designs sized from
+    # parts carry motor, screw, gear, drive and a controller (CONTRACTS, second round)
+    catalog_dc = [c for c in dc if c["variant"] == "catalog"]
+    assert catalog_dc and all(CONTRACT_KEYS <= set(c) and c["components"] == {"actuator": c["components"]["actuator"]}
+                              for c in catalog_dc)
+    parts = [c for c in dc if c["variant"] == "parts"]
+    assert all(set(c["components"]) == {"motor", "screw", "gear", "drive"} for c in parts)
+    assert all({"kp", "ki", "kd", "rate_Hz"} <= set(c["controller"]) for c in parts)
+    simulated = [c for c in dc if c["stage"] == "simulated"]
+    assert len([c for c in simulated if c["variant"] == "parts"]) >= 20
+    for c in simulated:
+        # every DC candidate reports its peak speed and what its motor allows
+        assert "peak_speed_m_s" in c["simulated"] and "max_speed_m_s" in c["static"], c["id"]
+        for case in c["simulated"]["cases"]:
+            # none simulates faster than the bus voltage lets its motor turn under that load
+            assert case["peak_speed_m_s"] <= case["max_speed_m_s"] * (1 + 1e-6), (c["id"], case)
+        if c["variant"] == "parts":
+            assert "winding_temperature" in c["margins"]
+            assert c["simulated"]["peak_speed_m_s"] <= c["static"]["no_load_max_speed_m_s"] * (1 + 1e-6)
+    assert r["summary"]["comparison"]["technologies"].keys() == {"piezohydraulic", "dc_motor"}
     plain = [c for c in r["candidates"] if c["technology"] == "piezohydraulic" and c["variant"] == "uncompensated"]
     assert not any(c["feasible"] for c in plain)
     html = (out / "report.html").read_text()
     assert "EVERY uncompensated piezohydraulic design infeasible" in html
+    assert "DC motor front (feasible)" in html and "piezohydraulic front (feasible)" in html   # both fronts, one plot
     assert "<script src=" not in html and "Plotly.newPlot" in html and r["catalog_sha256"] in html and r["requirements_sha256"] in html
     header = (out / "candidates.csv").read_text().splitlines()[0]
     assert header.startswith("rank,id,technology")

@@ -162,6 +162,15 @@ def _worst(cases: list[dict]) -> dict:
 
 
 def evaluate_dc(design: DCDesignFile, catalog: Catalog, file: str) -> dict:
+    if design.actuator is None:
+        from .dc_sizing import evaluate_parts
+        cases = load_cases(design.load)
+        parts = {kind: _lookup(catalog, getattr(catalog, kind + "s"), getattr(design, kind), file, kind)
+                 for kind in ("motor", "screw", "gear", "drive")}
+        if parts["drive"].bus_voltage < parts["motor"].rated_voltage:
+            raise InputError(file, "drive", f"drive {parts['drive'].id} has a {parts['drive'].bus_voltage:g} V bus, "
+                             f"below the {parts['motor'].rated_voltage:g} V rated voltage of motor {parts['motor'].id}")
+        return evaluate_parts(design, catalog, parts, cases)
     act = _lookup(catalog, catalog.dc_actuators, design.actuator, file, "actuator")
     cases = load_cases(design.load)
     sims = dc_engine.step_cases(act, design.step, [c["load_N"] for c in cases], design.duration)

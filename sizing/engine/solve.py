@@ -17,7 +17,8 @@
    cancels the budget ("passive"), and with each catalog compensator
    ("compensated"), each with its own margins.
 5. The catalog's DC actuators are simulated under the same load cases and
-   ranked in the same list (``dc_candidates.py``).
+   ranked in the same list (``dc_candidates.py``), and so are DC actuators
+   sized from parts, motor x screw x gear x drive (``dc_sizing.py``).
 """
 from __future__ import annotations
 
@@ -35,6 +36,7 @@ from ..physics import fluid as fluid_props
 from ..physics import stack as stack_phys, thermal
 from . import piezo_designs
 from .dc_candidates import dc_candidates
+from .dc_sizing import dc_parts_candidates
 from .evaluate import load_cases
 from .piezo import Candidates
 from .piezo_designs import Variant, effective_gap, sizing_input, variants  # noqa: F401  (the module's API)
@@ -80,6 +82,10 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
         candidates.extend(_design_candidates(req, d))
     dc = dc_candidates(req, catalog, loads) if req.options.dc_motors else []
     candidates.extend(dc["candidates"] if dc else [])
+    parts = dc_parts_candidates(req, catalog, loads, progress) if req.options.dc_motors else {}
+    candidates.extend(parts.get("candidates", []))
+    if dc:
+        dc["models"] = parts.get("models", {})
     _rank(req, candidates)
     candidates.sort(key=lambda c: c["rank"])
     results = {
@@ -96,7 +102,8 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
         "hysteresis_time_scales": piezo_designs.hysteresis_time_scales(catalog),
         "counts": {"combinations": len(combos), "pruned": len(combos) - len(to_size), "sized": len(to_size),
                    "gp_feasible": sum(1 for d in designs if d["gp_success"]),
-                   "simulated": sum(1 for d in designs if d["simulated"] is not None)},
+                   "simulated": sum(1 for d in designs if d["simulated"] is not None),
+                   "dc_parts": _dc_counts(parts.get("candidates", []))},
     }
     traces = _traces(req, candidates, designs, dc, loads)
     results["runtime_s"] = time.perf_counter() - start
@@ -293,6 +300,11 @@ def _rank(req, candidates) -> None:
         c["rank"] = int(rank[i])
         c["pareto"] = bool(feasible[i] and level[i] == 1)
         c["pareto_level"] = int(level[i]) if feasible[i] else None
+
+
+def _dc_counts(parts: list[dict]) -> dict:
+    stages = [c["stage"] for c in parts]
+    return {"combinations": len(parts), "pruned": stages.count("pruned"), "simulated": stages.count("simulated")}
 
 
 def _objective(value) -> float:

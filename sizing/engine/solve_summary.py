@@ -12,15 +12,18 @@ from ..io.requirements import RequirementsFile
 from ..physics import stack as stack_phys
 from . import dc as dc_engine
 from .dc_candidates import dc_duration
+from ..sim.dc_motor import DCMotorModel
+from .comparison import technology_comparison
 from .verify import simulate_cases
 
 TRACE_POINTS = 600
 GROUPS = (("piezohydraulic", "uncompensated"), ("piezohydraulic", "passive"), ("piezohydraulic", "compensated"),
-          ("dc_motor", "catalog"))
+          ("dc_motor", "catalog"), ("dc_motor", "parts"))
 LABELS = {("piezohydraulic", "uncompensated"): "piezohydraulic, as built (no thermal compensation)",
           ("piezohydraulic", "passive"): "piezohydraulic, passive compensation (low-expansion spacer, longer frame)",
           ("piezohydraulic", "compensated"): "piezohydraulic with thermal compensator",
-          ("dc_motor", "catalog"): "DC motor lead-screw actuators (catalog)"}
+          ("dc_motor", "catalog"): "DC motor lead-screw actuators (catalog)",
+          ("dc_motor", "parts"): "DC motor actuators sized from parts (motor x screw x gear x drive)"}
 
 
 def _requirements_si(req: RequirementsFile) -> dict:
@@ -103,6 +106,7 @@ def _summary(req: RequirementsFile, candidates: list[dict], catalog) -> dict:
                              f"{furthest['id']} ({furthest['stage']}), misses it by {_pct(m)}")
         groups.append(entry)
     return {"groups": groups, "thermal": _thermal_statement(req, candidates),
+            "comparison": technology_comparison(req, candidates),
             "feasible": sum(1 for c in candidates if c["feasible"]),
             "pareto": [c["id"] for c in candidates if c["pareto"]]}
 
@@ -184,8 +188,15 @@ def _traces(req, candidates, designs, dc, loads, top=3) -> list[dict]:
             continue
         seen.add(base)
         if c["technology"] == "dc_motor":
-            act = dc["actuators"][c["components"]["actuator"]]
-            sims = dc_engine.step_cases(act, S, loads, dc_duration(req), keep_traces=True)
+            if "actuator" in c["components"]:
+                act = dc["actuators"][c["components"]["actuator"]]
+                sims = dc_engine.step_cases(act, S, loads, dc_duration(req), keep_traces=True)
+            elif c["id"] in dc.get("models", {}):
+                params = dc["models"][c["id"]]
+                sims = dc_engine.step_cases_for(lambda force: DCMotorModel(**params, load_force=force), S, loads,
+                                                dc_duration(req), keep_traces=True)
+            else:
+                continue
             cases = []
             for s in sims:
                 t, y = _downsample(s["t"], s["position_m"])

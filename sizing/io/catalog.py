@@ -12,9 +12,9 @@ import hashlib
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Literal, Optional
+from typing import Annotated, Literal, Optional
 
-from pydantic import field_validator, model_validator
+from pydantic import AfterValidator, field_validator, model_validator
 
 from ..errors import InputError
 from .schema import Qty, Strict, load_toml, parse_model
@@ -168,6 +168,82 @@ class DCActuator(Entry):
     supply_voltage: Qty("voltage", positive=True)
     cost_usd: Qty("dimensionless", nonnegative=True)
     pid: PIDTable
+    # the voltage ceiling (PHYSICS-NOTES, second round): bus-referred back-EMF
+    # constant and winding resistance; absent = no voltage limit
+    back_emf_constant: Optional[Qty("back_emf_constant", positive=True)] = None
+    winding_resistance: Optional[Qty("resistance", positive=True)] = None
+
+
+# --- parts of a DC actuator sized from parts (issue 11) ---------------------
+def _at_most_one(value: float) -> float:
+    if not 0 < value <= 1:
+        raise ValueError(f"expected an efficiency in (0, 1], got {value!r}")
+    return value
+
+
+Efficiency = Annotated[Qty("dimensionless", positive=True), AfterValidator(_at_most_one)]
+
+
+class Motor(Entry):
+    """Brushless motor. k_e is bus-referred (V s/rad: no-load speed = bus
+    voltage / k_e); resistance and inductance terminal to terminal at 25 degC."""
+    torque_constant: Qty("torque_constant", positive=True)
+    back_emf_constant: Qty("back_emf_constant", positive=True)
+    winding_resistance: Qty("resistance", positive=True)
+    resistance_temperature_coefficient: Qty("per_kelvin", nonnegative=True) = 0.00393   # copper
+    torque_constant_temperature_coefficient: Qty("per_kelvin") = 0.0
+    inductance: Qty("inductance", positive=True)
+    rotor_inertia: Qty("inertia", positive=True)
+    viscous_damping: Qty("rotational_damping", nonnegative=True)
+    continuous_torque: Qty("torque", positive=True)
+    peak_torque: Qty("torque", positive=True)
+    max_speed: Qty("angular_speed", positive=True)
+    rated_voltage: Qty("voltage", positive=True)
+    thermal_resistance: Qty("thermal_resistance", positive=True)
+    thermal_time_constant: Qty("time", positive=True)
+    max_winding_temperature: Qty("temperature")
+    magnet_max_temperature: Optional[Qty("temperature")] = None
+    max_temperature: Qty("temperature")            # ambient
+    mass: Qty("mass", positive=True)
+    cost_usd: Qty("dimensionless", nonnegative=True)
+
+
+class Screw(Entry):
+    """Ball, lead or roller screw with its nut; diameter is the root
+    diameter used for buckling."""
+    type: Literal["ball", "lead", "roller"]
+    lead: Qty("length", positive=True)
+    diameter: Qty("length", positive=True)
+    efficiency: Efficiency
+    dynamic_load_rating: Qty("force", positive=True)
+    inertia_per_length: Qty("inertia_per_length", positive=True)
+    mass_per_length: Qty("mass_per_length", positive=True)
+    nut_mass: Qty("mass", nonnegative=True)
+    max_speed: Qty("angular_speed", positive=True)
+    elastic_modulus: Qty("pressure", positive=True) = 2.0e11     # steel
+    max_temperature: Qty("temperature")
+    cost_usd: Qty("dimensionless", nonnegative=True)
+
+
+class Gear(Entry):
+    ratio: Qty("dimensionless", positive=True)
+    efficiency: Efficiency
+    inertia: Qty("inertia", nonnegative=True)          # referred to the input shaft
+    mass: Qty("mass", positive=True)
+    max_input_speed: Qty("angular_speed", positive=True)
+    max_output_torque: Qty("torque", positive=True)
+    max_temperature: Qty("temperature")
+    cost_usd: Qty("dimensionless", nonnegative=True)
+
+
+class Drive(Entry):
+    bus_voltage: Qty("voltage", positive=True)
+    continuous_current: Qty("current", positive=True)
+    peak_current: Qty("current", positive=True)
+    rate: Qty("frequency", positive=True) = 1250.0     # position loop rate
+    max_temperature: Qty("temperature")                # rated ambient
+    mass: Qty("mass", positive=True)
+    cost_usd: Qty("dimensionless", nonnegative=True)
 
 
 class Material(Entry):
@@ -210,6 +286,10 @@ KINDS: dict[str, tuple[str, type[Entry]]] = {
     "dc_actuators.toml": ("dc_actuator", DCActuator),
     "materials.toml": ("material", Material),
     "compensators.toml": ("compensator", Compensator),
+    "motors.toml": ("motor", Motor),
+    "screws.toml": ("screw", Screw),
+    "gears.toml": ("gear", Gear),
+    "drives.toml": ("drive", Drive),
 }
 
 
@@ -223,12 +303,17 @@ class Catalog:
     dc_actuators: dict[str, DCActuator] = field(default_factory=dict)
     materials: dict[str, Material] = field(default_factory=dict)
     compensators: dict[str, Compensator] = field(default_factory=dict)
+    motors: dict[str, Motor] = field(default_factory=dict)
+    screws: dict[str, Screw] = field(default_factory=dict)
+    gears: dict[str, Gear] = field(default_factory=dict)
+    drives: dict[str, Drive] = field(default_factory=dict)
     files: dict[str, str] = field(default_factory=dict)   # file name -> sha256
 
     def groups(self) -> dict[str, dict[str, Entry]]:
         return {"stack": self.stacks, "fluid": self.fluids, "seal": self.seals,
                 "amplifier": self.amplifiers, "dc_actuator": self.dc_actuators,
-                "material": self.materials, "compensator": self.compensators}
+                "material": self.materials, "compensator": self.compensators,
+                "motor": self.motors, "screw": self.screws, "gear": self.gears, "drive": self.drives}
 
     def entries(self) -> list[tuple[str, Entry]]:
         return [(kind, e) for kind, group in self.groups().items() for e in group.values()]
@@ -276,7 +361,21 @@ def load_catalog(folder: str | Path | None = None) -> Catalog:
             group[entry.id] = entry
     if not found:
         raise InputError(str(folder), None, f"no catalog files ({', '.join(KINDS)})")
+    _check_drives(catalog)
     return catalog
+
+
+def _check_drives(catalog: Catalog) -> None:
+    """A drive whose bus is below the rated voltage of every motor can run
+    none of them at its rating: a catalog error, not a design to rank."""
+    if not catalog.motors:
+        return
+    lowest = min(m.rated_voltage for m in catalog.motors.values())
+    for d in catalog.drives.values():
+        if d.bus_voltage < lowest * (1 - 1e-9):
+            raise InputError(str(catalog.folder / "drives.toml"), f"[[drive]] {d.id}: bus_voltage",
+                             f"expected at least the lowest motor rated_voltage in motors.toml "
+                             f"({lowest:g} V), got {d.bus_voltage:g} V")
 
 
 def _parse_entry(model: type[Entry], raw: object, path: Path, label: str) -> Entry:

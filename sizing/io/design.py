@@ -71,13 +71,35 @@ class PiezoDesignFile(Strict):
 
 
 class DCDesignFile(Strict):
+    """A catalog actuator (``actuator``), or a design from parts (``motor``,
+    ``screw``, ``drive``, optional ``gear``) as ``sizing solve`` writes it:
+    its controller follows from ``speed`` (the rule of engine/dc_controller),
+    its winding temperature from ``strokes_per_second``, its drive's
+    ambient from ``amplifier_location``."""
     technology: Literal["dc_motor"]
-    actuator: str
+    actuator: Optional[str] = None
+    motor: Optional[str] = None
+    screw: Optional[str] = None
+    gear: Optional[str] = None
+    drive: Optional[str] = None
     step: Qty("length", positive=True) = 0.04
     duration: Qty("time", positive=True) = 1.0
     temperature: Qty("temperature") = 25.0
+    speed: Qty("speed", positive=True) = 0.1
+    strokes_per_second: float = Field(1.0, gt=0.0, allow_inf_nan=False)
+    amplifier_location: Literal["bay", "actuator"] = "bay"
+    electronics_bay_temperature: Qty("temperature") = 30.0
     load: LoadTable = Field(default_factory=LoadTable)
     notes: Optional[str] = None
+
+    @model_validator(mode="after")
+    def _one_kind(self):
+        parts = [self.motor, self.screw, self.drive]
+        if self.actuator is None and None in parts:
+            raise ValueError("give actuator, or motor, screw and drive (and optionally gear)")
+        if self.actuator is not None and any(x is not None for x in parts + [self.gear]):
+            raise ValueError("give actuator or parts (motor, screw, gear, drive), not both")
+        return self
 
 
 DesignFile = Union[PiezoDesignFile, DCDesignFile]

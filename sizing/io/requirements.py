@@ -109,3 +109,16 @@ def load_requirements(path: str | Path) -> tuple[RequirementsFile, str]:
         from ..errors import InputError
         raise InputError(str(path), "[load].dynamic_pressure", "expected at least one load case")
     return req, hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def design_requirements(design, loads: list[float]) -> RequirementsFile:
+    """The requirements a DC design file from parts implies for ``sizing
+    evaluate``: its step, speed (the controller rule), temperature, duty and
+    drive location; blocked force 1 N (evaluate reports figures, not that
+    margin)."""
+    return RequirementsFile.model_validate({
+        "requirements": {"stroke": design.step, "blocked_force": 1.0, "speed": design.speed,
+                         "max_temperature": design.temperature},
+        "load": {"force": list(loads)}, "duty": {"strokes_per_second": design.strokes_per_second},
+        "options": {"amplifier_location": design.amplifier_location,
+                    "electronics_bay_temperature": design.electronics_bay_temperature}})

@@ -70,6 +70,28 @@ RANGES: dict[str, dict[str, tuple[float, float]]] = {
         "stroke": (1e-4, 10.0), "mass": (1e-3, 1000.0), "length": (1e-3, 10.0), "diameter": (1e-3, 2.0),
         "screw_lead": (1e-5, 0.5), "torque_constant": (1e-4, 100.0), "current_limit": (1e-3, 1e4),
         "supply_voltage": (0.1, 1e4), "cost_usd": (0.0, 1e7),
+        "back_emf_constant": (1e-4, 100.0), "winding_resistance": (1e-4, 1e3),
+    },
+    "motor": {
+        "torque_constant": (1e-4, 100.0), "back_emf_constant": (1e-4, 100.0), "winding_resistance": (1e-4, 1e3),
+        "resistance_temperature_coefficient": (0.0, 0.01), "torque_constant_temperature_coefficient": (-0.01, 0.0),
+        "inductance": (1e-7, 1.0), "rotor_inertia": (1e-9, 1.0), "viscous_damping": (0.0, 10.0),
+        "continuous_torque": (1e-4, 1e4), "peak_torque": (1e-4, 1e4), "max_speed": (1.0, 1e4),
+        "rated_voltage": (1.0, 1e4), "thermal_resistance": (0.01, 100.0), "thermal_time_constant": (1.0, 1e5),
+        "mass": (1e-3, 1000.0), "cost_usd": (0.0, 1e7),
+    },
+    "screw": {
+        "lead": (1e-4, 0.1), "diameter": (1e-3, 0.2), "dynamic_load_rating": (10.0, 1e7),
+        "inertia_per_length": (1e-9, 1.0), "mass_per_length": (1e-3, 100.0), "nut_mass": (0.0, 100.0),
+        "max_speed": (1.0, 1e4), "elastic_modulus": (1e9, 1e12), "cost_usd": (0.0, 1e7),
+    },
+    "gear": {
+        "ratio": (1.0, 1e3), "inertia": (0.0, 1.0), "mass": (1e-3, 1000.0), "max_input_speed": (1.0, 1e4),
+        "max_output_torque": (1e-3, 1e5), "cost_usd": (0.0, 1e7),
+    },
+    "drive": {
+        "bus_voltage": (1.0, 1e4), "continuous_current": (1e-3, 1e4), "peak_current": (1e-3, 1e4),
+        "rate": (10.0, 1e6), "mass": (1e-3, 1000.0), "cost_usd": (0.0, 1e7),
     },
 }
 
@@ -127,9 +149,10 @@ def _entry_problems(kind: str, entry: Entry, today: dt.date):
     low, high = getattr(entry, "min_temperature", None), getattr(entry, "max_temperature", None)
     if low is not None and high is not None and not low < high:
         yield "max_temperature", f"expected above min_temperature ({low:g} degC), got {high:g} degC"
-    checks = {"stack": _stack, "fluid": _fluid, "seal": _seal, "amplifier": _amplifier, "dc_actuator": _dc}
-    if kind in checks:
-        yield from checks[kind](entry)
+    checks = {"stack": _stack, "fluid": _fluid, "seal": _seal, "amplifier": _amplifier, "dc_actuator": _dc,
+              "motor": _motor, "screw": _no_check, "gear": _no_check, "drive": _drive,
+              "material": _no_check, "compensator": _no_check}
+    yield from checks[kind](entry)
 
 
 def _range_problems(kind: str, entry: Entry):
@@ -207,6 +230,20 @@ def _dc(a):
         yield "continuous_force", f"expected at most max_force ({a.max_force:g} N), got {a.continuous_force:g} N"
     if not 0 < a.screw_efficiency <= 1:
         yield "screw_efficiency", f"expected in (0, 1], got {a.screw_efficiency:g}"
+
+
+def _motor(m):
+    if m.continuous_torque > m.peak_torque * (1 + 1e-9):
+        yield "continuous_torque", f"expected at most peak_torque ({m.peak_torque:g} N m), got {m.continuous_torque:g} N m"
+
+
+def _drive(d):
+    if d.continuous_current > d.peak_current * (1 + 1e-9):
+        yield "continuous_current", f"expected at most peak_current ({d.peak_current:g} A), got {d.continuous_current:g} A"
+
+
+def _no_check(_entry):
+    return iter(())
 
 
 def stale_entries(catalog: Catalog, max_age_days: int, today: dt.date | None = None) -> list[str]:

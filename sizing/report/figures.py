@@ -21,8 +21,12 @@ def _axes(objectives: list[str]) -> tuple[str, str]:
 
 def hover_text(c: dict) -> str:
     comp = c["components"]
-    if c["technology"] == "dc_motor":
+    if c["technology"] == "dc_motor" and "actuator" in comp:
         head = f"DC actuator {comp['actuator']}"
+    elif c["technology"] == "dc_motor":
+        ctl = c.get("controller") or {}
+        head = (f"DC from parts: {comp['motor']}, {comp['screw']}, {comp['gear'] or 'no gear'}, {comp['drive']}"
+                f"<br>I-PD kp {ctl.get('kp', 0):.3g} A/m, ki {ctl.get('ki', 0):.3g} A/(m s), kd {ctl.get('kd', 0):.3g} A s/m")
     else:
         ratio = comp.get("ratio")
         head = (f"{comp['n_stacks']} x {comp['stack']}, R = {ratio:.0f}<br>{comp['fluid']}, {comp['seal']}, "
@@ -32,6 +36,16 @@ def hover_text(c: dict) -> str:
     margins = "<br>".join(f"{k}: {v:+.0%}" if v is not None else f"{k}: n/a" for k, v in c["margins"].items())
     state = "feasible" if c["feasible"] else "infeasible"
     return f"<b>{c['id']}</b><br>{head}<br>rank {c['rank']}, {state}, driver {c['driver']}<br>{margins}"
+
+
+def _front_2d(points):
+    """The non-dominated points of (x, y), both minimised, sorted by x."""
+    front, best_y = [], float("inf")
+    for x, y in sorted(points):
+        if y < best_y:
+            front.append((x, y))
+            best_y = y
+    return front
 
 
 def pareto_figure(results: dict) -> go.Figure:
@@ -48,14 +62,20 @@ def pareto_figure(results: dict) -> go.Figure:
         "piezohydraulic, passive, infeasible": dict(symbol="triangle-up-open", color="#9467bd"),
         "DC motor, feasible": dict(symbol="diamond", color="#d62728"),
         "DC motor, infeasible": dict(symbol="diamond-open", color="#d62728"),
+        "DC motor from parts, feasible": dict(symbol="triangle-up", color="#ff7f0e"),
+        "DC motor from parts, infeasible": dict(symbol="triangle-up-open", color="#ff7f0e"),
     }
     pts = {k: ([], [], []) for k in groups}
-    front = []
+    fronts: dict[str, list] = {}
     for c in results["candidates"]:
         m = c.get("metrics") or {}
         if m.get(xk) is None or m.get(yk) is None:
             continue
-        if c["technology"] == "dc_motor":
+        if c["technology"] == "dc_motor" and c.get("variant") == "parts":
+            if c.get("stage") not in SHOWN_STAGES:
+                continue
+            key = "DC motor from parts"
+        elif c["technology"] == "dc_motor":
             key = "DC motor"
         elif c.get("stage") in SHOWN_STAGES:
             key = f"piezohydraulic, {c.get('variant', 'uncompensated')}"
@@ -65,21 +85,22 @@ def pareto_figure(results: dict) -> go.Figure:
         pts[key][0].append(m[xk] * xs)
         pts[key][1].append(m[yk] * ys)
         pts[key][2].append(hover_text(c))
-        if c["pareto"]:
-            front.append((m[xk] * xs, m[yk] * ys))
+        if c["feasible"]:
+            fronts.setdefault(c["technology"], []).append((m[xk] * xs, m[yk] * ys))
     fig = go.Figure()
     for key, style in groups.items():
         x, y, text = pts[key]
         if not x:
             continue
-        size = 13 if key.startswith("DC") else 8
+        size = 13 if key.startswith("DC motor,") else 8
         fig.add_trace(go.Scatter(x=x, y=y, mode="markers", name=key, text=text, hoverinfo="text",
                                  marker=dict(symbol=style["symbol"], color=style["color"], size=size,
                                              line=dict(width=1.5, color=style["color"]))))
-    if front:
-        front.sort()
+    for tech, pts_ in fronts.items():
+        front = _front_2d(pts_)
         fig.add_trace(go.Scatter(x=[p[0] for p in front], y=[p[1] for p in front], mode="lines",
-                                 name="Pareto front (feasible)", line=dict(color="black", dash="dot"),
+                                 name=f"{'DC motor' if tech == 'dc_motor' else tech} front (feasible)",
+                                 line=dict(color="#d62728" if tech == "dc_motor" else "black", dash="dot"),
                                  hoverinfo="skip"))
     fig.update_layout(title=f"Designs in objective space ({xo} vs {yo}); hover for the design",
                       xaxis_title=xl, yaxis_title=yl, xaxis_type="log", yaxis_type="log",

@@ -83,7 +83,9 @@ def _design_table(cands: list[dict]) -> str:
     for c in cands:
         m, s, sim = c.get("metrics", {}), c.get("static", {}), c.get("simulated", {})
         if c["technology"] == "dc_motor":
-            parts = f"DC actuator {c['components']['actuator']}"
+            k = c["components"]
+            parts = (f"DC actuator {k['actuator']}" if "actuator" in k else
+                     f"DC from parts: {k['motor']}, {k['screw']}, {k['gear'] or 'no gear'}, {k['drive']}")
         else:
             k = c["components"]
             parts = (f"{k['n_stacks']} x {k['stack']}, R = {_num(k['ratio'], fmt='{:.1f}')}, "
@@ -126,13 +128,28 @@ def _checks_table(cands: list[dict]) -> str:
 
 
 def _pruned_table(results: dict) -> str:
-    pruned = [c for c in results["candidates"] if c.get("stage") == "pruned"]
+    pruned = [c for c in results["candidates"] if c.get("stage") == "pruned" and c["technology"] == "piezohydraulic"]
     by = Counter((c["components"]["stack"], c["driver"]) for c in pruned)
     rows = "".join(f"<tr><td class='l'>{_e(s)}</td><td class='l'>{_e(d)}</td><td>{n}</td></tr>"
                    for (s, d), n in sorted(by.items()))
     return (f"<p>{len(pruned)} combinations were ruled out before sizing; each stays in results.json with its "
             f"margins. By stack and the requirement that rules them out:</p><table><tr><th class='l'>stack</th>"
-            f"<th class='l'>ruled out by</th><th>combinations</th></tr>{rows}</table>")
+            f"<th class='l'>ruled out by</th><th>combinations</th></tr>{rows}</table>" + _dc_pruned_table(results))
+
+
+def _dc_pruned_table(results: dict) -> str:
+    """DC combinations ruled out by the static screen, by motor and the
+    requirement that rules them out (the smallest margin)."""
+    pruned = [c for c in results["candidates"] if c.get("stage") == "pruned" and c.get("variant") == "parts"]
+    if not pruned:
+        return ""
+    by = Counter((c["components"]["motor"], c["driver"]) for c in pruned)
+    rows = "".join(f"<tr><td class='l'>{_e(m)}</td><td class='l'>{_e(d)}</td><td>{n}</td></tr>"
+                   for (m, d), n in sorted(by.items()))
+    return (f"<p>{len(pruned)} DC motor x screw x gear x drive combinations were ruled out by the static screen "
+            f"(force through screw and gear, back-EMF speed at the drive voltage, winding temperature at the "
+            f"holding current, buckling, life). By motor and the requirement that rules them out:</p>"
+            f"<table><tr><th class='l'>motor</th><th class='l'>ruled out by</th><th>combinations</th></tr>{rows}</table>")
 
 
 def _changes(results: dict, limit: int = 60) -> str:
@@ -156,8 +173,17 @@ def _pick_comparison(cands: list[dict]) -> list[dict]:
         group = [c for c in cands if c["technology"] == tech and c.get("variant") == variant and c.get("stage") != "pruned"]
         if group:
             picks.append(group[0])
-    picks += [c for c in cands if c["technology"] == "dc_motor"]
+    picks += [c for c in cands if c["technology"] == "dc_motor" and "actuator" in c["components"]]
+    picks += [c for c in cands if c.get("variant") == "parts" and c.get("stage") == "simulated"][:2]
     return picks
+
+
+def _dc_parts_line(counts: dict) -> str:
+    p = counts.get("dc_parts") or {}
+    if not p.get("combinations"):
+        return "no DC designs from parts"
+    return (f"{p['combinations']} DC motor x screw x gear x drive combinations ({p['pruned']} ruled out by the "
+            f"static screen, {p['simulated']} verified by simulation)")
 
 
 def render(results: dict, traces: list[dict]) -> str:
@@ -208,9 +234,12 @@ speed {req['speed_m_s'] * 1e3:g} mm/s (stroke within {req['stroke_time_s']:g} s)
 {req['max_temperature_degC']:g} degC. Load cases: {_e(loads)}. Objectives: minimise {_e(', '.join(results['objectives']))}.
 {counts['combinations']} piezohydraulic combinations ({counts['pruned']} ruled out before sizing,
 {counts['sized']} sized by geometric programs, {counts['simulated']} verified by simulation) and
-{len(dc)} DC actuators.</p>
+{sum(1 for c in dc if 'actuator' in c['components'])} catalog DC actuators;
+{_dc_parts_line(counts)}.</p>
 {headline}
 <h2>Verdict per technology</h2><ul>{verdicts}</ul>
+<div class="box ok"><b>Technologies compared</b> (best of each, its binding check, and the ratio of their objectives):
+{_e(summary.get('comparison', {}).get('text', ''))}</div>
 <h2>100 degC: the thermal budget</h2>
 <div class="box">{_e(summary['thermal'])}</div>
 <h2>Pareto front</h2>{divs[0]}

@@ -34,11 +34,18 @@ def evaluation_summary(result: dict) -> str:
         f"{k}={v}" for k, v in result["design"].items() if not isinstance(v, dict) and v is not None)]
     lines.append("static:")
     lines += [f"  {_label(k):<28} {_fmt(k, v)}" for k, v in result["static"].items()]
+    if result.get("controller"):
+        lines.append("controller: " + ", ".join(f"{k} {_fmt(k, v)}" for k, v in result["controller"].items()))
     lines.append("simulated (per load case):")
     for case in result["simulated"]["cases"]:
         lines.append("  load " + _fmt("load_N", case["load_N"]) + ": " + ", ".join(
             f"{_label(k)} {_fmt(k, v)}" for k, v in case.items()
-            if k in ("stroke_m", "time_to_stroke_s", "speed_m_s", "overshoot")))
+            if k in ("stroke_m", "time_to_stroke_s", "speed_m_s", "overshoot", "peak_speed_m_s", "max_speed_m_s")))
+    for key in ("rms_current_A", "winding_temperature_degC"):
+        if key in result["simulated"]:
+            lines.append(f"  {_label(key):<28} {_fmt(key, result['simulated'][key])}")
+    if result.get("margins"):
+        lines.append("margins: " + ", ".join(f"{k} {v:+.1%}" for k, v in result["margins"].items() if v is not None))
     lines.append("metrics: " + ", ".join(f"{_label(k)} {_fmt(k, v)}" for k, v in result["metrics"].items()))
     if result.get("force_path"):
         lines.append("force path (in series, referred to the wide piston; share of the compliance):")

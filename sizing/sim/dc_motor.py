@@ -3,7 +3,16 @@
 A discrete PID at the controller rate (1.25 kHz in the seed) sets the motor
 current from the reference and the measured position; the current is held
 over each period and clipped at the current limit (conditional integration
-stops wind-up). The plant is advanced over the period with the exact
+stops wind-up). The drive's bus voltage U adds the back-EMF ceiling
+(PHYSICS-NOTES, second round): when the held current would need more than U
+(R i + k_e omega > U) the motor is voltage-driven for that period,
+i = (U - k_e omega) / R, which turns eq. 13 into the same linear form with
+the pole c1 - c2 k_e / R and input U / R; so the speed can never pass
+(U - R i_load) / k_e. c1 itself stays the current-driven pole (viscous
+only): the seed identified it with the drive's current loop closed. With
+U = inf (the default) the model is the seed's eq. 13-14 unchanged. The
+proportional term may act on the measurement instead of the error (I-PD,
+``proportional_on_measurement``), which removes the closed loop's zeros. The plant is advanced over the period with the exact
 zero-order-hold solution of eq. 13 (eq. 14 for the velocity), with the load
 current of PHYSICS-NOTES and optional Coulomb friction (Karnopp: a piston at
 rest stays at rest while the net current is inside the friction band).
@@ -22,7 +31,8 @@ from .params import ParameterSet
 PARAMS = (
     "c1", "c2", "lead", "rate", "kp", "ki", "kd", "derivative_on_measurement",
     "current_limit", "load_force", "load_stiffness", "efficiency", "torque_constant",
-    "coulomb_friction",
+    "coulomb_friction", "proportional_on_measurement", "bus_voltage", "back_emf_constant",
+    "winding_resistance",
 )
 CHANNELS = ("position_m", "velocity_m_s", "current_A")
 
@@ -32,7 +42,10 @@ class DCMotorModel(ParameterSet):
     PARAMS = PARAMS  # the kernel's column order
     """Parameters (float or (n_cand,) array), SI: c1 1/s, c2 rad/(s^2 A),
     lead m, rate Hz, kp A/m, ki A/(m s), kd A s/m, current_limit A, load N and
-    N/m, efficiency -, torque_constant N m/A, coulomb_friction N."""
+    N/m, efficiency -, torque_constant N m/A, coulomb_friction N,
+    bus_voltage V (inf: no ceiling), back_emf_constant V s/rad (bus-referred),
+    winding_resistance ohm. ``lead`` is output metres per motor radian x 2 pi
+    (screw lead / gear ratio)."""
 
     c1: object
     c2: object
@@ -48,7 +61,10 @@ class DCMotorModel(ParameterSet):
     efficiency: object = 0.9
     torque_constant: object = 1.0
     coulomb_friction: object = 0.0
-
+    proportional_on_measurement: object = 0.0
+    bus_voltage: object = np.inf
+    back_emf_constant: object = 0.0
+    winding_resistance: object = 1.0
 
 
 @numba.njit(cache=True)
@@ -78,15 +94,68 @@ def _plant_step(y, v, u, a, b, a_y, b_y, c1, g, Ts, i_fric):
 
 
 @numba.njit(cache=True)
-def _simulate_one(p, t_ref, r_row, t_out, rec):
-    c1, c2, lead, rate, kp, ki, kd = p[0], p[1], p[2], p[3], p[4], p[5], p[6]
-    d_meas, i_max, F0, kL, eta, kt, Fc = p[7], p[8], p[9], p[10], p[11], p[12], p[13]
-    Ts = 1.0 / rate
-    g = lead / (2.0 * np.pi) * c2
+def _zoh(c1, g, Ts):
     a = np.exp(c1 * Ts)
     phi = (a - 1.0) / c1 if c1 != 0.0 else Ts
     psi = (phi - Ts) / c1 if c1 != 0.0 else Ts * Ts / 2
-    b, a_y, b_y = phi * g, phi, psi * g
+    return a, phi * g, phi, psi * g
+
+
+@numba.njit(cache=True)
+def _hit_time(v0, v_star, c, g, u):
+    """Time at which v' = c v + g u, v(0) = v0, reaches v_star (inf if never)."""
+    if c != 0.0:
+        v_ss = -g * u / c
+        ratio = (v_star - v_ss) / (v0 - v_ss) if v0 != v_ss else -1.0
+        if ratio <= 0.0:
+            return np.inf
+        t = np.log(ratio) / c
+        return t if t >= 0.0 else np.inf
+    if g * u == 0.0:
+        return np.inf
+    t = (v_star - v0) / (g * u)
+    return t if t >= 0.0 else np.inf
+
+
+@numba.njit(cache=True)
+def _advance(y, v, i, dt, c1, c1v, g, load_i, i_fric, U, ke, Rw, to_speed, limited):
+    """Advance the plant over dt with the drive holding current i, except
+    where the bus voltage cannot push it: then the motor is voltage-driven
+    (i = (U - k_e w) / R) from the instant R i + k_e w reaches U.
+    Returns y, v and the current flowing at the end."""
+    if not limited:
+        a, b, a_y, b_y = _zoh(c1, g, dt)
+        y, v = _plant_step(y, v, i - load_i, a, b, a_y, b_y, c1, g, dt, i_fric)
+        return y, v, i
+    need = Rw * i + ke * v * to_speed
+    if abs(need) <= U:
+        # current-driven until the needed voltage reaches the bus
+        sgn = 1.0 if (i > 0.0 or (i == 0.0 and v >= 0.0)) else -1.0
+        v_star = (sgn * U - Rw * i) / ke / to_speed
+        t_hit = _hit_time(v, v_star, c1, g, i - load_i)
+        t1 = min(t_hit, dt)
+        a, b, a_y, b_y = _zoh(c1, g, t1)
+        y, v = _plant_step(y, v, i - load_i, a, b, a_y, b_y, c1, g, t1, i_fric)
+        if t_hit >= dt:
+            return y, v, i
+        dt = dt - t1
+        v = v_star
+    V_app = U if Rw * i + ke * v * to_speed > 0.0 else -U
+    a, b, a_y, b_y = _zoh(c1v, g, dt)
+    y, v = _plant_step(y, v, V_app / Rw - load_i, a, b, a_y, b_y, c1v, g, dt, i_fric)
+    return y, v, (V_app - ke * v * to_speed) / Rw
+
+
+@numba.njit(cache=True)
+def _simulate_one(p, t_ref, r_row, t_out, rec):
+    c1, c2, lead, rate, kp, ki, kd = p[0], p[1], p[2], p[3], p[4], p[5], p[6]
+    d_meas, i_max, F0, kL, eta, kt, Fc = p[7], p[8], p[9], p[10], p[11], p[12], p[13]
+    p_meas, U, ke, Rw = p[14], p[15], p[16], p[17]
+    Ts = 1.0 / rate
+    g = lead / (2.0 * np.pi) * c2
+    limited = U < np.inf and ke > 0.0
+    c1v = c1 - c2 * ke / Rw if limited else c1          # voltage-driven pole
+    to_speed = 2.0 * np.pi / lead                        # motor rad/s per m/s
     to_current = lead / (2.0 * np.pi * eta * kt)     # A per N at the output
     i_fric = Fc * to_current
     y, v = 0.0, 0.0
@@ -99,32 +168,29 @@ def _simulate_one(p, t_ref, r_row, t_out, rec):
     j = 0
     n_out = t_out.shape[0]
     while j < n_out:
+        load_i = (F0 + kL * y) * to_current
         # record every output time that falls inside this control period
         while j < n_out and t_out[j] < t + Ts - 1e-12:
             tau = t_out[j] - t
-            e = np.exp(c1 * tau)
-            ph = (e - 1.0) / c1 if c1 != 0.0 else tau
-            ps = (ph - tau) / c1 if c1 != 0.0 else tau * tau / 2
-            u = i - (F0 + kL * y) * to_current
-            if v == 0.0 and abs(u) <= i_fric:
-                rec[0, j], rec[1, j] = y, 0.0
+            if tau <= 0.0:
+                rec[0, j], rec[1, j], rec[2, j] = y, v, i
             else:
-                rec[0, j] = y + ph * v + ps * g * u
-                rec[1, j] = e * v + ph * g * u
-            rec[2, j] = i
+                rec[0, j], rec[1, j], rec[2, j] = _advance(y, v, i, tau, c1, c1v, g, load_i, i_fric,
+                                                          U, ke, Rw, to_speed, limited)
             j += 1
         if j >= n_out:
             break
         # controller tick at time t + Ts: sample, compute, hold
-        y, v = _plant_step(y, v, i - (F0 + kL * y) * to_current, a, b, a_y, b_y, c1, g, Ts, i_fric)
+        y, v, _ = _advance(y, v, i, Ts, c1, c1v, g, load_i, i_fric, U, ke, Rw, to_speed, limited)
         t += Ts
         r = np.interp(t, t_ref, r_row)
         err = r - y
         deriv = -(y - y_prev) / Ts if d_meas > 0.5 else (err - e_prev) / Ts
-        i_try = kp * err + ki * (integ + err * Ts) + kd * deriv
+        prop = -y if p_meas > 0.5 else err
+        i_try = kp * prop + ki * (integ + err * Ts) + kd * deriv
         if abs(i_try) < i_max or i_try * err < 0.0:
             integ += err * Ts
-        i_new = kp * err + ki * integ + kd * deriv
+        i_new = kp * prop + ki * integ + kd * deriv
         i = min(max(i_new, -i_max), i_max)
         e_prev, y_prev = err, y
     return rec

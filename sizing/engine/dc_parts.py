@@ -1,0 +1,235 @@
+"""DC actuators sized from parts: every motor x screw x gear (or none) x
+drive of the catalog, screened statically, vectorised over combinations.
+
+Each check is a margin (rank.py conventions) named after what it protects;
+a combination is ruled out by every margin below zero, and keeps them:
+- blocked_force: peak motor torque (the lower of the motor's peak torque and
+  the drive's peak current times k_t at temperature) through gear and screw,
+  F = 2 pi eta_s eta_g N T / l (physics/screw.py), capped by the gear's
+  output torque;
+- speed: the output speed the bus allows under the worst load,
+  (U - R_hot i_load) / k_e (physics/motor.py), capped by the motor's, the
+  gear's and the screw's speed limits: static.max_speed_m_s;
+- winding_temperature: the steady winding temperature at the required
+  ambient with the RMS current of the duty cycle (static: the holding
+  current of the worst load, held all the time; the simulation then gives
+  the cycle's own RMS) against the insulation's max_winding_temperature;
+- magnet_temperature: the rotor taken at the winding temperature against
+  the magnet's limit (where the catalog gives one);
+- temperature: motor, screw and gear rated ambient against the requirement;
+  drive_temperature: the drive where it sits (options.amplifier_location);
+- drive_current: the drive's continuous current against the duty's RMS;
+- buckling: Euler load of the screw (fixed-pinned) against the blocked force;
+- screw_life: L10 life at the duty against REQUIRED_LIFE_H.
+Continuous choices are catalog values (lead, ratio): the feasible ratios of
+a motor-screw pair form an interval (force needs N >= N_min, speed N <=
+N_max; ``ratio_interval``, reported as static.ratio_low / ratio_high), and
+the enumeration covers it at the catalog's ratios (1 = direct).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..physics import motor as motor_phys
+from ..physics import screw as screw_phys
+
+# Assumed construction (README, DC sizing): stated here, used everywhere.
+TRAVEL_FACTOR = 1.10          # designed travel over the required stroke: 10 % for end stops and rigging (assumed)
+SCREW_EXTRA_LENGTH = 0.05     # m: nut, bearings and end stop beyond the travel (assumed)
+ROD_MASS = 0.15               # kg: output rod and rod end moving with the nut (assumed)
+HOUSING_MASS_PER_LENGTH = 1.2  # kg/m: aluminium tube housing the screw (assumed, 2 mm wall, ~50 mm)
+HOUSING_FIXED_MASS = 0.25     # kg: bearing block, end caps, rod-end clevis (assumed)
+ASSEMBLY_USD = 600.0          # assumed: machining and assembly of housing and bearing block
+REQUIRED_LIFE_H = 200.0       # assumed: ground test, qualification and flights of a glide body
+
+
+@dataclass
+class PartArrays:
+    """One row per combination; ids for the results, SI floats for physics."""
+    motor: np.ndarray
+    screw: np.ndarray
+    gear: np.ndarray          # object array, None for a direct drive
+    drive: np.ndarray
+    values: dict              # name -> (n,) float array
+
+    def __len__(self):
+        return len(self.motor)
+
+    def take(self, idx) -> "PartArrays":
+        return PartArrays(self.motor[idx], self.screw[idx], self.gear[idx], self.drive[idx],
+                          {k: v[idx] for k, v in self.values.items()})
+
+
+def _col(entries, name, default=np.nan):
+    return np.array([getattr(e, name) if getattr(e, name, None) is not None else default for e in entries], float)
+
+
+def enumerate_parts(catalog) -> PartArrays:
+    """Every motor x screw x (gear or none) x drive."""
+    M, S, G, D = (list(catalog.motors.values()), list(catalog.screws.values()),
+                  [None] + list(catalog.gears.values()), list(catalog.drives.values()))
+    if not (M and S and D):
+        return PartArrays(*(np.array([], dtype=object) for _ in range(4)), values={})
+    im, isc, ig, idr = (a.ravel() for a in np.meshgrid(np.arange(len(M)), np.arange(len(S)), np.arange(len(G)),
+                                                          np.arange(len(D)), indexing="ij"))
+    gears = [g for g in G if g is not None]
+    has_gear = ig > 0
+    gi = np.maximum(ig - 1, 0)
+
+    def gear_col(name, none_value):
+        if not gears:
+            return np.full(len(ig), none_value)
+        return np.where(has_gear, _col(gears, name)[gi], none_value)
+
+    v = {}
+    for name in ("torque_constant", "back_emf_constant", "winding_resistance", "resistance_temperature_coefficient",
+                 "torque_constant_temperature_coefficient", "inductance", "rotor_inertia", "viscous_damping",
+                 "continuous_torque", "peak_torque", "max_speed", "rated_voltage", "thermal_resistance",
+                 "thermal_time_constant", "max_winding_temperature", "max_temperature", "mass", "cost_usd"):
+        v["motor_" + name] = _col(M, name)[im]
+    v["motor_magnet_max_temperature"] = _col(M, "magnet_max_temperature", np.inf)[im]
+    for name in ("lead", "diameter", "efficiency", "dynamic_load_rating", "inertia_per_length", "mass_per_length",
+                 "nut_mass", "max_speed", "elastic_modulus", "max_temperature", "cost_usd"):
+        v["screw_" + name] = _col(S, name)[isc]
+    v["gear_ratio"] = gear_col("ratio", 1.0)
+    v["gear_efficiency"] = gear_col("efficiency", 1.0)
+    v["gear_inertia"] = gear_col("inertia", 0.0)
+    v["gear_mass"] = gear_col("mass", 0.0)
+    v["gear_max_input_speed"] = gear_col("max_input_speed", np.inf)
+    v["gear_max_output_torque"] = gear_col("max_output_torque", np.inf)
+    v["gear_max_temperature"] = gear_col("max_temperature", np.inf)
+    v["gear_cost_usd"] = gear_col("cost_usd", 0.0)
+    for name in ("bus_voltage", "continuous_current", "peak_current", "rate", "max_temperature", "mass", "cost_usd"):
+        v["drive_" + name] = _col(D, name)[idr]
+    ids = lambda entries, idx: np.array([e.id if e is not None else None for e in entries], dtype=object)[idx]
+    return PartArrays(ids(M, im), ids(S, isc), ids(G, ig), ids(D, idr), v)
+
+
+def plant(p: PartArrays, stroke: float, temperature: float) -> dict[str, np.ndarray]:
+    """Seed eq. 13 of each combination, referred to the motor shaft:
+    J = J_motor + J_gear + J_screw / N^2 + m_moving (l / 2 pi N)^2,
+    c1 = -b / J, c2 = k_t(T) / J, effective lead l / N (m per motor turn)."""
+    v = p.values
+    N = v["gear_ratio"]
+    lead_eff = v["screw_lead"] / N
+    screw_len = TRAVEL_FACTOR * stroke + SCREW_EXTRA_LENGTH
+    moving = v["screw_nut_mass"] + ROD_MASS
+    J = (v["motor_rotor_inertia"] + v["gear_inertia"] + v["screw_inertia_per_length"] * screw_len / N**2
+         + moving * (lead_eff / (2 * np.pi)) ** 2)
+    kt = motor_phys.torque_constant_at(v["motor_torque_constant"], v["motor_torque_constant_temperature_coefficient"],
+                                       temperature)
+    return {"inertia": J, "c1": -v["motor_viscous_damping"] / J, "c2": kt / J, "lead": lead_eff,
+            "efficiency": v["screw_efficiency"] * v["gear_efficiency"], "torque_constant": kt,
+            "screw_length": np.full(len(p), screw_len)}
+
+
+def drive_voltage(p: PartArrays, w_mech) -> np.ndarray:
+    """The drive's output voltage limit: the bus, or lower where the bus
+    would spin the motor past its (or the gear's, or the screw's) speed
+    rating at no load, U_lim = min(U_bus, k_e w_mech): a drive setting
+    that keeps every design within its mechanical ratings."""
+    return np.minimum(p.values["drive_bus_voltage"], p.values["motor_back_emf_constant"] * w_mech)
+
+
+def current_limit(p: PartArrays, kt) -> np.ndarray:
+    """Peak current: the drive's, or what gives the motor's peak torque."""
+    return np.minimum(p.values["drive_peak_current"], p.values["motor_peak_torque"] / kt)
+
+
+def winding(p: PartArrays, ambient, i_rms) -> dict[str, np.ndarray]:
+    """Winding rise and temperature at the RMS current; resistance hot."""
+    v = p.values
+    rise = motor_phys.winding_rise(v["motor_thermal_resistance"], v["motor_winding_resistance"],
+                                   v["motor_resistance_temperature_coefficient"], ambient, i_rms)
+    return {"rise_K": rise, "temperature_degC": ambient + rise}
+
+
+def temperature_margin(rated, required):
+    """search.temperature_margin, vectorised; an unbounded requirement (runaway) is -inf."""
+    required = np.asarray(required, float)
+    with np.errstate(invalid="ignore"):
+        return np.where(np.isfinite(required), (np.asarray(rated) - required) / np.maximum(np.abs(required), 1.0), -np.inf)
+
+
+def static_screen(p: PartArrays, req, loads) -> tuple[dict, dict, dict]:
+    """(plant, static figures, margins): dicts of (n,) arrays."""
+    r, o, v = req.requirements, req.options, p.values
+    T = r.max_temperature
+    F_load = max(loads) if loads else 0.0
+    pl = plant(p, r.stroke, T)
+    kt, lead, eta = pl["torque_constant"], pl["lead"], pl["efficiency"]
+    i_max = current_limit(p, kt)
+    F_peak = np.minimum(screw_phys.force_from_torque(kt * i_max, lead, eta),
+                        screw_phys.force_from_torque(v["gear_max_output_torque"], v["screw_lead"], v["screw_efficiency"]))
+    i_load = screw_phys.torque_for_force(F_load, lead, eta) / kt
+    hold = winding(p, T, i_load)
+    r_hot = motor_phys.resistance_at(v["motor_winding_resistance"], v["motor_resistance_temperature_coefficient"],
+                                     np.minimum(hold["temperature_degC"], 1e3))
+    w_mech = np.minimum.reduce([v["motor_max_speed"], v["gear_max_input_speed"], v["screw_max_speed"] * v["gear_ratio"]])
+    u_drive = drive_voltage(p, w_mech)
+    w_volt = motor_phys.speed_ceiling(u_drive, v["motor_back_emf_constant"], r_hot, i_load)
+    w_max = np.minimum(w_volt, w_mech)
+    v_max = screw_phys.output_speed(w_max, lead)
+    P_cr = screw_phys.buckling_load(v["screw_elastic_modulus"], v["screw_diameter"], pl["screw_length"])
+    rev_per_s = 2 * r.stroke / v["screw_lead"] * req.duty.strokes_per_second
+    life_h = screw_phys.l10_revolutions(v["screw_dynamic_load_rating"], F_load) / rev_per_s / 3600.0
+    n_low, n_high = ratio_interval(kt, v["motor_back_emf_constant"], r_hot, i_max, v["screw_lead"], eta,
+                                   v["drive_bus_voltage"], v["motor_max_speed"], r.blocked_force, F_load, r.speed)
+    drive_ambient = o.electronics_bay_temperature if o.amplifier_location == "bay" else T
+    static = {
+        "blocked_force_N": F_peak, "max_speed_m_s": v_max, "voltage_speed_limit_m_s": screw_phys.output_speed(w_volt, lead),
+        "mechanical_speed_limit_m_s": screw_phys.output_speed(w_mech, lead), "current_limit_A": i_max,
+        "load_current_A": i_load, "holding_winding_temperature_degC": hold["temperature_degC"],
+        "buckling_load_N": P_cr, "screw_life_h": life_h, "inertia_kg_m2": pl["inertia"],
+        "effective_lead_m": lead, "efficiency": eta, "torque_constant_at_temperature": kt,
+        "drive_voltage_V": u_drive, "hot_resistance_ohm": r_hot, "ratio_low": n_low, "ratio_high": n_high, "stroke_m": np.full(len(p), TRAVEL_FACTOR * r.stroke),
+    }
+    margins = {
+        "blocked_force": F_peak / r.blocked_force - 1.0,
+        "speed": v_max / r.speed - 1.0,
+        "winding_temperature": temperature_margin(v["motor_max_winding_temperature"], hold["temperature_degC"]),
+        "magnet_temperature": temperature_margin(v["motor_magnet_max_temperature"], hold["temperature_degC"]),
+        "temperature": temperature_margin(np.minimum.reduce([v["motor_max_temperature"], v["screw_max_temperature"],
+                                                             v["gear_max_temperature"]]), T),
+        "drive_temperature": temperature_margin(v["drive_max_temperature"], drive_ambient),
+        "drive_current": v["drive_continuous_current"] / np.maximum(i_load, 1e-12) - 1.0,
+        "buckling": P_cr / r.blocked_force - 1.0,
+        "screw_life": life_h / REQUIRED_LIFE_H - 1.0,
+    }
+    return pl, static, margins
+
+
+def ratio_interval(kt, ke, r_hot, i_max, lead, eta, u_bus, w_mech_motor, force, load, speed):
+    """The continuous reduction ratios N (motor turns per screw turn) with
+    which a motor and screw meet the force and the speed: a 1-D convex
+    program solved in closed form, against which the catalog's ratios are
+    snapped. With a = l / 2 pi and eta the whole train's efficiency:
+      force:  2 pi eta k_t i_max N / l >= F          -> N >= F a / (eta k_t i_max)
+      speed:  (U - R F a / (eta k_t N)) / k_e >= v N / a
+              -> (k_e v / a) N^2 - U N + R F a / (eta k_t) <= 0, between its roots
+      rating: v N / a <= w_mech.
+    Returns (N_low, N_high); N_low > N_high where no ratio works."""
+    a = np.asarray(lead) / (2 * np.pi)
+    n_force = force * a / (eta * kt * i_max)
+    A, B, C = ke * speed / a, -u_bus, r_hot * load * a / (eta * kt)
+    disc = B**2 - 4 * A * C
+    root = np.sqrt(np.maximum(disc, 0.0))
+    lo = np.where(disc >= 0, (-B - root) / (2 * A), np.inf)
+    hi = np.where(disc >= 0, (-B + root) / (2 * A), -np.inf)
+    hi = np.minimum(hi, w_mech_motor * a / speed)
+    return np.maximum(n_force, lo), hi
+
+
+def metrics(p: PartArrays, req, i_max) -> dict[str, np.ndarray]:
+    """Mass, cost, volume and peak electrical power of each combination."""
+    v = p.values
+    L = TRAVEL_FACTOR * req.requirements.stroke + SCREW_EXTRA_LENGTH
+    housing = HOUSING_FIXED_MASS + HOUSING_MASS_PER_LENGTH * L
+    mass = (v["motor_mass"] + v["gear_mass"] + v["screw_mass_per_length"] * L + v["screw_nut_mass"] + ROD_MASS
+            + housing + v["drive_mass"])
+    cost = v["motor_cost_usd"] + v["gear_cost_usd"] + v["screw_cost_usd"] + v["drive_cost_usd"] + ASSEMBLY_USD
+    # volume: the housing tube (screw diameter + 30 mm) plus motor and gear at 3000 kg/m^3 (assumed)
+    volume = np.pi / 4 * (v["screw_diameter"] + 0.03) ** 2 * L + (v["motor_mass"] + v["gear_mass"]) / 3000.0
+    return {"mass_kg": mass, "cost_usd": cost, "volume_m3": volume, "power_W": v["drive_bus_voltage"] * i_max}

@@ -1,0 +1,234 @@
+"""The DC option sized from parts (issue 11): screen every motor x screw x
+gear x drive (``dc_parts``), give each design its controller
+(``dc_controller``), simulate the best under every load case with the
+back-EMF, current and voltage limits and the load term (``sim/dc_motor``,
+batched over designs and cases), and turn the results into candidates
+(CONTRACTS.md, second round).
+
+Simulation-based margins replace the static ones where the simulation says
+more: stroke and speed (98 % of the step, as for the catalog actuators),
+overshoot, winding and magnet temperature and drive current from the RMS
+current of the simulated duty cycle, and ``mechanical_speed`` (the peak
+speed against the motor's, gear's and screw's speed ratings, which the
+drive does not enforce).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..physics import motor as motor_phys
+from ..physics import screw as screw_phys
+from ..sim.dc_motor import DCMotorModel, simulate
+from ..sim.metrics import step_metrics
+from . import dc_controller as ctl
+from .dc import OUTPUT_RATE_HZ, SETTLED
+from .dc_parts import enumerate_parts, metrics, static_screen, temperature_margin
+from .dc_candidates import dc_duration
+from .rank import nondominated_levels
+
+MAX_SIMULATED = 300     # designs simulated per solve (each under every load case)
+MIN_SIMULATED = 24      # filled with the closest-to-feasible when fewer pass the screen
+SIM_CHUNK = 64          # rows (design x load case) per batched simulation
+OBJECTIVE_KEYS = {"mass": "mass_kg", "cost": "cost_usd", "volume": "volume_m3", "power": "power_W"}
+
+
+def design_id(p, i) -> str:
+    return f"dc-{p.motor[i]}-{p.screw[i]}-{p.gear[i] or 'direct'}-{p.drive[i]}"
+
+
+def duty_rms(t, current, period) -> np.ndarray:
+    """RMS current over one duty period from step responses (n, n_t): the
+    trace up to the period, then the final (holding) current for the rest."""
+    dt = t[1] - t[0]
+    inside = t < period - 1e-12
+    energy = np.sum(current[:, inside] ** 2, axis=1) * dt
+    rest = max(period - t[inside][-1] - dt, 0.0)
+    return np.sqrt((energy + rest * current[:, -1] ** 2) / period)
+
+
+def models(pl, static, gains, p, idx, loads, hot_resistance) -> DCMotorModel:
+    """One row per (design, load case), designs outer."""
+    n_l = len(loads)
+    rep = lambda a: np.repeat(np.asarray(a)[idx], n_l)
+    return DCMotorModel(
+        c1=rep(pl["c1"]), c2=rep(pl["c2"]), lead=rep(pl["lead"]), rate=rep(p.values["drive_rate"]),
+        kp=rep(gains["kp"]), ki=rep(gains["ki"]), kd=rep(gains["kd"]), derivative_on_measurement=1.0,
+        proportional_on_measurement=1.0, current_limit=rep(static["current_limit_A"]),
+        load_force=np.tile(np.asarray(loads, float), len(idx)), efficiency=rep(pl["efficiency"]),
+        torque_constant=rep(pl["torque_constant"]), bus_voltage=rep(static["drive_voltage_V"]),
+        back_emf_constant=rep(p.values["motor_back_emf_constant"]), winding_resistance=rep(hot_resistance))
+
+
+def _choose(margins, met, req) -> np.ndarray:
+    """Statically feasible designs by Pareto level, then the closest to
+    feasible, up to MAX_SIMULATED (at least MIN_SIMULATED when there are)."""
+    M = np.vstack(list(margins.values()))
+    worst = np.nan_to_num(M.min(axis=0), nan=-np.inf, neginf=-1e9)
+    ok = worst >= 0
+    F = np.column_stack([met[OBJECTIVE_KEYS[k]] for k in req.objectives.minimize])
+    level = np.full(len(worst), 10**6)
+    if ok.any():
+        level[ok] = nondominated_levels(F[ok])
+    score = F.sum(axis=1) / np.maximum(F.min(axis=0), 1e-12).sum()
+    order = np.lexsort((score, -worst, level, ~ok))
+    n = min(len(order), MAX_SIMULATED, max(int(ok.sum()), MIN_SIMULATED))
+    return order[:n]
+
+
+def dc_parts_candidates(req, catalog, loads, progress=None, duration=None) -> dict:
+    """Candidates of every parts combination; ``models`` keeps the
+    simulation model of each simulated design for the report's traces."""
+    duration = dc_duration(req) if duration is None else duration
+    p = enumerate_parts(catalog)
+    if len(p) == 0:
+        return {"candidates": [], "models": {}}
+    r = req.requirements
+    T = r.max_temperature
+    pl, static, margins = static_screen(p, req, loads)
+    met = metrics(p, req, static["current_limit_A"])
+    w0 = ctl.pole_target(req.stroke_time, p.values["drive_rate"])
+    gains = ctl.ipd_gains(pl["c1"], pl["c2"], pl["lead"], w0)
+    chosen = _choose(margins, met, req)
+    sims = _simulate(req, pl, static, gains, p, chosen, loads, duration, progress)
+    out, kept = [], {}
+    for i in range(len(p)):
+        cid = design_id(p, i)
+        st = {k: float(v[i]) for k, v in static.items()}
+        m = {k: float(v[i]) for k, v in margins.items()}
+        st["no_load_max_speed_m_s"] = float(st["drive_voltage_V"] / p.values["motor_back_emf_constant"][i]
+                                            * pl["lead"][i] / (2 * math.pi))
+        sim = sims.get(i)
+        simulated = {}
+        if sim is not None:
+            simulated, sim_margins = _sim_figures(req, p, i, st, sim)
+            m.update(sim_margins)
+            kept[cid] = sim["model"]
+        m = {k: val for k, val in m.items() if val != math.inf}     # no limit to check (e.g. no magnet rating)
+        failed = [k for k, v in m.items() if not v >= 0]
+        stage = "simulated" if sim is not None else ("sized" if not failed else "pruned")
+        controller = {"kp": float(gains["kp"][i]), "ki": float(gains["ki"][i]), "kd": float(gains["kd"][i]),
+                      "rate_Hz": float(p.values["drive_rate"][i]), "rule": "I-PD, triple closed-loop pole",
+                      "pole_rad_per_second": float(w0[i]), "bandwidth_Hz": float(ctl.bandwidth(w0[i]) / (2 * math.pi)),
+                      "current_limit_A": st["current_limit_A"], "bus_voltage_V": float(p.values["drive_bus_voltage"][i]),
+                      "voltage_limit_V": st["drive_voltage_V"]}
+        out.append({
+            "id": cid, "technology": "dc_motor", "variant": "parts", "stage": stage,
+            "components": {"motor": p.motor[i], "screw": p.screw[i], "gear": p.gear[i], "drive": p.drive[i]},
+            "controller": controller, "stack_params": {}, "static": st, "simulated": simulated, "margins": m,
+            "metrics": {k: float(v[i]) for k, v in met.items()},
+            "temperatures": {"ambient": {"rated_degC": float(min(p.values["motor_max_temperature"][i],
+                                                                 p.values["screw_max_temperature"][i],
+                                                                 p.values["gear_max_temperature"][i])),
+                                         "required_degC": T}},
+            "design": {"technology": "dc_motor", "motor": p.motor[i], "screw": p.screw[i], "gear": p.gear[i],
+                       "drive": p.drive[i], "step": r.stroke, "duration": duration, "temperature": T,
+                       "speed": r.speed, "strokes_per_second": req.duty.strokes_per_second,
+                       "amplifier_location": req.options.amplifier_location,
+                       "electronics_bay_temperature": req.options.electronics_bay_temperature},
+            "reason": "" if not failed or stage == "simulated" else "ruled out before simulation: " + ", ".join(failed),
+        })
+    return {"candidates": out, "models": kept}
+
+
+def _simulate(req, pl, static, gains, p, chosen, loads, duration, progress) -> dict:
+    """Simulate the chosen designs under every load case, batched."""
+    if len(chosen) == 0 or not loads:
+        return {}
+    S = req.requirements.stroke
+    t = np.arange(0.0, duration + 0.5 / OUTPUT_RATE_HZ, 1.0 / OUTPUT_RATE_HZ)
+    ref = np.full_like(t, S)
+    ref[0] = 0.0
+    n_l = len(loads)
+    per_chunk = max(1, SIM_CHUNK // n_l)
+    period = 1.0 / req.duty.strokes_per_second
+    result = {}
+    for start in range(0, len(chosen), per_chunk):
+        idx = chosen[start:start + per_chunk]
+        model = models(pl, static, gains, p, idx, loads, static["hot_resistance_ohm"])
+        out = simulate(model, t, ref)
+        y, v, i_trace = out["position_m"], out["velocity_m_s"], out["current_A"]
+        fig = step_metrics(t, y, np.full(len(y), SETTLED * S))
+        rms = duty_rms(t, i_trace, period)
+        P = model.matrix()
+        for k, design in enumerate(idx):
+            rows = slice(k * n_l, (k + 1) * n_l)
+            cases = []
+            for j, row in enumerate(range(rows.start, rows.stop)):
+                case = {name: float(val[row]) for name, val in fig.items()}
+                case.update({"load_N": float(loads[j]), "peak_current_A": float(np.max(np.abs(i_trace[row]))),
+                             "peak_speed_m_s": float(np.max(np.abs(v[row]))), "rms_current_A": float(rms[row]),
+                             "max_speed_m_s": float(_case_ceiling(p, pl, static, design, loads[j]))})
+                cases.append(case)
+            result[int(design)] = {"cases": cases, "model": _row_params(P[k * n_l])}
+        if progress is not None:
+            progress("simulating DC", min(start + per_chunk, len(chosen)), len(chosen))
+    return result
+
+
+def _row_params(row) -> dict:
+    """The scalar parameters of one row of the model matrix (load_force
+    excluded: set per case)."""
+    return {name: float(row[j]) for j, name in enumerate(DCMotorModel.PARAMS) if name != "load_force"}
+
+
+def _case_ceiling(p, pl, static, i, load) -> float:
+    """Output speed the drive's voltage allows under ``load`` (m/s)."""
+    i_load = screw_phys.torque_for_force(load, pl["lead"][i], pl["efficiency"][i]) / pl["torque_constant"][i]
+    w = motor_phys.speed_ceiling(static["drive_voltage_V"][i], p.values["motor_back_emf_constant"][i],
+                                 static["hot_resistance_ohm"][i], i_load)
+    return float(screw_phys.output_speed(w, pl["lead"][i]))
+
+
+def _sim_figures(req, p, i, st, sim) -> tuple[dict, dict]:
+    r = req.requirements
+    cases = sim["cases"]
+    worst = max(cases, key=lambda c: c["load_N"])
+    S = r.stroke
+    reached = all(c["stroke_m"] >= SETTLED * S for c in cases)
+    i_rms = max(c["rms_current_A"] for c in cases)
+    v = p.values
+    Tw = r.max_temperature + float(motor_phys.winding_rise(v["motor_thermal_resistance"][i], v["motor_winding_resistance"][i],
+                                                          v["motor_resistance_temperature_coefficient"][i],
+                                                          r.max_temperature, i_rms))
+    peak = max(c["peak_speed_m_s"] for c in cases)
+    figures = {"stroke_m": worst["stroke_m"], "time_to_stroke_s": worst["time_to_stroke_s"],
+               "speed_m_s": min(c["speed_m_s"] for c in cases), "overshoot": max(c["overshoot"] for c in cases),
+               "load_N": worst["load_N"], "peak_speed_m_s": peak, "rms_current_A": i_rms,
+               "winding_temperature_degC": Tw, "cases": cases}
+    margins = {
+        # a servo settles on its reference: the stroke is the designed travel once the
+        # simulation shows the step reached (to 98 %) under every load (as for catalog actuators)
+        "stroke": st["stroke_m"] / S - 1.0 if reached else min(c["stroke_m"] for c in cases) / S - 1.0,
+        "speed": figures["speed_m_s"] / r.speed - 1.0,
+        "overshoot": 1.0 - figures["overshoot"] / req.options.max_overshoot,
+        "winding_temperature": float(temperature_margin(p.values["motor_max_winding_temperature"][i], Tw)),
+        "magnet_temperature": float(temperature_margin(p.values["motor_magnet_max_temperature"][i], Tw)),
+        "drive_current": float(p.values["drive_continuous_current"][i] / max(i_rms, 1e-12) - 1.0),
+        "mechanical_speed": st["mechanical_speed_limit_m_s"] / max(peak, 1e-12) - 1.0,
+    }
+    return figures, margins
+
+
+def evaluate_parts(design, catalog, parts: dict, cases: list[dict]) -> dict:
+    """``sizing evaluate`` of one design from parts: the same screen,
+    controller and simulation as ``sizing solve`` (a one-design catalog)."""
+    from dataclasses import replace
+    from ..io.requirements import design_requirements
+    one = replace(catalog, motors={parts["motor"].id: parts["motor"]}, screws={parts["screw"].id: parts["screw"]},
+                  gears={parts["gear"].id: parts["gear"]} if parts["gear"] is not None else {},
+                  drives={parts["drive"].id: parts["drive"]})
+    loads = [c["load_N"] for c in cases]
+    req = design_requirements(design, loads)
+    found = dc_parts_candidates(req, one, loads, duration=design.duration)["candidates"]
+    c = next(x for x in found if x["components"]["gear"] == (parts["gear"].id if parts["gear"] is not None else None))
+    sim = c["simulated"] or {"cases": []}
+    simulated = [dict(case, **s) for case, s in zip(cases, sim["cases"])]
+    worst = max(simulated, key=lambda x: x["load_N"]) if simulated else {}
+    margins = {k: v for k, v in c["margins"].items() if k != "blocked_force"}
+    warnings = [f"{k}: margin {v:+.1%}" for k, v in margins.items() if not v >= 0]
+    return {"technology": "dc_motor", "design": dict(c["components"], step_m=design.step),
+            "controller": c["controller"], "static": c["static"],
+            "simulated": {"cases": simulated, "worst": worst, **{k: v for k, v in sim.items() if k != "cases"}},
+            "margins": margins, "metrics": c["metrics"], "warnings": warnings}

@@ -1,0 +1,62 @@
+"""Screw (ball, roller, lead) and gear: force, buckling and life.
+
+Force from torque (any machine-design text, e.g. Shigley ch. 8): a screw of
+lead l and forward efficiency eta turning at torque T pushes
+
+    F = 2 pi eta T / l,          T = F l / (2 pi eta)
+
+and through a gear of ratio N and efficiency eta_g the motor torque is
+T_m = F l / (2 pi eta eta_g N). The output speed is v = omega_m l / (2 pi N).
+
+Euler buckling of the screw shaft in compression (Shigley sec. 4-13; Roark
+table 15.1): P_cr = pi^2 E I / (K L)^2 with I = pi d_r^4 / 64 of the root
+diameter d_r and the effective length factor K of the end fixity. The
+actuator's stated fixity is FIXED-PINNED: the screw is held by the angular
+contact bearings of the motor end (fixed), and the rod end carries the
+surface horn on a pin (pinned), K = 0.7 (theoretical 0.699).
+
+Life (ISO 3408-5 for ball screws, ISO 281 form): the basic rating life at a
+constant equivalent load F_m is L10 = (C / F_m)^3 10^6 revolutions.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+END_FIXITY = {"fixed-free": 2.0, "pinned-pinned": 1.0, "fixed-pinned": 0.7, "fixed-fixed": 0.5}
+ACTUATOR_END_FIXITY = "fixed-pinned"
+
+
+def force_from_torque(torque, lead, efficiency, ratio=1.0, gear_efficiency=1.0):
+    """Output force (N) from motor torque (N m) through gear and screw."""
+    return 2 * np.pi * np.asarray(efficiency) * np.asarray(gear_efficiency) * np.asarray(ratio) * np.asarray(torque) / np.asarray(lead)
+
+
+def torque_for_force(force, lead, efficiency, ratio=1.0, gear_efficiency=1.0):
+    """Motor torque (N m) that holds or drives an output force (N)."""
+    return np.asarray(force) * np.asarray(lead) / (2 * np.pi * np.asarray(efficiency) * np.asarray(gear_efficiency) * np.asarray(ratio))
+
+
+def output_speed(motor_speed, lead, ratio=1.0):
+    """Output speed (m/s) from motor speed (rad/s)."""
+    return np.asarray(motor_speed) * np.asarray(lead) / (2 * np.pi * np.asarray(ratio))
+
+
+def buckling_load(elastic_modulus, root_diameter, length, fixity: str = ACTUATOR_END_FIXITY):
+    """Euler critical load (N) of a solid round shaft of ``root_diameter``
+    and unsupported ``length`` with the named end fixity (END_FIXITY)."""
+    K = END_FIXITY[fixity]
+    inertia = np.pi * np.asarray(root_diameter) ** 4 / 64.0
+    return np.pi**2 * np.asarray(elastic_modulus) * inertia / (K * np.asarray(length)) ** 2
+
+
+def l10_revolutions(dynamic_load_rating, equivalent_load):
+    """Basic rating life (revolutions) at a constant equivalent load."""
+    F = np.maximum(np.asarray(equivalent_load, dtype=float), 1e-9)
+    return (np.asarray(dynamic_load_rating) / F) ** 3 * 1e6
+
+
+def cubic_mean_load(loads, fractions):
+    """Equivalent load (N) of a load spectrum: (sum q_i F_i^3)^(1/3) with
+    q_i the fraction of revolutions at load F_i (ISO 3408-5)."""
+    loads, q = np.asarray(loads, float), np.asarray(fractions, float)
+    return (np.sum(q * np.abs(loads) ** 3, axis=-1) / np.sum(q, axis=-1)) ** (1.0 / 3.0)

@@ -367,3 +367,23 @@ def _disagreements(designs) -> list[dict]:
                             "static_margin": sm[key], "simulated_margin": m_sim, "verdict_changes": flip})
     return out
 
+
+
+# --- hook for sizing robust (issue 13): re-verify fixed designs ------------
+def verify_sized(req, catalog: Catalog, sized: list, loads: list[float], chunk: int = SIM_CHUNK) -> list[list[dict]]:
+    """Re-verify designs whose geometry is fixed, through the very steps of
+    ``solve`` (static figures, margins, simulation under every load case,
+    verdict). ``sized``: (Combo, SizingResult) pairs, e.g. one design whose
+    parts were perturbed. Returns, per pair, its candidates (uncompensated,
+    and compensated when the options ask) with ``feasible`` and ``driver``."""
+    designs = _designs(req, catalog, sized)
+    built = [d for d in designs if d["index"] is not None]
+    for start in range(0, len(built), chunk):
+        _simulate_chunk(built[start:start + chunk], loads, req.requirements.stroke)
+    out = []
+    for d in designs:
+        cands = _design_candidates(req, d)
+        for c in cands:
+            c["feasible"], c["driver"] = verdict(c["margins"])
+        out.append(cands)
+    return out

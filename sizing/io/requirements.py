@@ -74,13 +74,61 @@ class DutyTable(Strict):
     strokes_per_second: float = Field(1.0, gt=0.0, allow_inf_nan=False)
 
 
+# [tolerances] (CONTRACTS.md, second round): relative 1-sigma normal spread of
+# a catalog field, keyed "kind.field". Used when the table is absent (sizing
+# robust); the values are the contract's example, assumed: typical datasheet
+# tolerances of PICA stacks (stroke, stiffness), oil bulk modulus data
+# scatter and seal friction scatter, not measured on these parts.
+DEFAULT_TOLERANCES = {"stack.stroke": 0.05, "stack.stiffness": 0.10, "fluid.bulk_modulus": 0.20,
+                      "seal.friction_per_length": 0.30, "fluid.air_fraction": 0.001}
+# Pseudo-fields that are not catalog fields: entrained air, an absolute
+# volume fraction (half-normal with this 1-sigma), not a relative spread.
+TOLERANCE_PSEUDO_FIELDS = {"fluid.air_fraction"}
+
+
+def tolerance_fields() -> dict[str, list[str]]:
+    """Catalog fields a tolerance may name, per part kind: the numeric
+    quantities, without temperatures (a relative spread of a degC value
+    means nothing)."""
+    from .catalog import Amplifier, Fluid, Seal, Stack
+    out = {}
+    for kind, model in {"stack": Stack, "fluid": Fluid, "seal": Seal, "amplifier": Amplifier}.items():
+        out[kind] = [f for f in model.quantity_fields()
+                     if not (f.endswith("_temperature") or f == "flash_point")]
+    return out
+
+
+def _check_tolerance_keys(value: dict[str, float]) -> dict[str, float]:
+    fields = tolerance_fields()
+    for key in value:
+        kind, _, name = key.partition(".")
+        if key in TOLERANCE_PSEUDO_FIELDS:
+            continue
+        if kind not in fields or name not in fields[kind]:
+            known = ", ".join(f"{k}.{f}" for k in fields for f in fields[k])
+            raise ValueError(f'unknown field "{key}": expected "kind.field", one of {known}, '
+                             f'or {", ".join(sorted(TOLERANCE_PSEUDO_FIELDS))}')
+    return value
+
+
 class RequirementsFile(Strict):
     requirements: RequirementsTable
     load: LoadTable
     objectives: ObjectivesTable = Field(default_factory=ObjectivesTable)
     options: OptionsTable = Field(default_factory=OptionsTable)
     duty: DutyTable = Field(default_factory=DutyTable)
+    tolerances: Optional[dict[str, Qty("dimensionless", nonnegative=True)]] = None   # None: DEFAULT_TOLERANCES
     notes: Optional[str] = None
+
+    @field_validator("tolerances")
+    @classmethod
+    def _tolerance_keys(cls, value):
+        return value if value is None else _check_tolerance_keys(value)
+
+    @property
+    def tolerance_spreads(self) -> dict[str, float]:
+        """[tolerances] as given, or DEFAULT_TOLERANCES when the table is absent."""
+        return dict(DEFAULT_TOLERANCES if self.tolerances is None else self.tolerances)
 
     @property
     def stroke_time(self) -> float:

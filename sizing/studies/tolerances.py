@@ -1,0 +1,95 @@
+"""Perturb a design's catalog parts by the [tolerances] of requirements.toml.
+
+A tolerance ``"kind.field" = s`` is a relative 1-sigma normal spread: each
+sample multiplies the field by ``1 + s z`` with z ~ N(0, 1), floored at
+``FACTOR_FLOOR`` so a positive quantity stays positive (at s = 10 % that
+floor is 9.5 sigma away). The perturbed parts then go through the solve's
+own checks (``engine.solve.verify_sized``); nothing here computes physics
+beyond picking the inputs.
+
+Two rules tie fields together:
+- ``stack.stroke`` and ``stack.stroke_per_volt`` both scale the stack's
+  displacement per volt: stroke, stroke_per_volt and the measured Bouc-Wen
+  loop (carried by ``physics.bouc_wen.transfer``) move together, so the
+  simulated stroke follows the catalog stroke.
+- ``fluid.air_fraction`` (a pseudo-field) is entrained free air, an absolute
+  volume fraction a = s |z| (half-normal: air is never negative), lowering
+  the oil's bulk modulus by Wood's rule at ``AIR_PRESSURE_PA``
+  (``physics.fluid.effective_bulk_modulus``).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from ..io.catalog import BoucWenTable
+from ..physics import fluid as fluid_props
+from ..physics.bouc_wen import BoucWen, transfer
+
+FACTOR_FLOOR = 0.05
+# assumed: oil pre-charged to ~1 MPa absolute (bootstrap reservoir); free air
+# at atmospheric pressure would be ten times softer (PHYSICS-NOTES, air).
+AIR_PRESSURE_PA = 1.0e6
+DISPLACEMENT_FIELDS = ("stroke", "stroke_per_volt")
+PART_OF = {"stack": "stack", "fluid": "fluid", "seal": "seal", "amplifier": "amplifier"}
+
+
+@dataclass(frozen=True)
+class Tolerance:
+    key: str          # "stack.stiffness"
+    spread: float     # relative 1-sigma (absolute for fluid.air_fraction)
+
+    @property
+    def part(self) -> str:
+        return self.key.partition(".")[0]
+
+    @property
+    def field(self) -> str:
+        return self.key.partition(".")[2]
+
+
+def tolerances_of(spreads: dict[str, float]) -> list[Tolerance]:
+    """Sorted, so the order of the sample columns does not depend on the file."""
+    return [Tolerance(k, float(v)) for k, v in sorted(spreads.items())]
+
+
+def factors(tols: list[Tolerance], z: np.ndarray) -> np.ndarray:
+    """Multiplying factor (or air fraction) per sample and tolerance;
+    z (n, p) standard normal."""
+    s = np.array([t.spread for t in tols])
+    air = np.array([t.key == "fluid.air_fraction" for t in tols])
+    return np.where(air, s * np.abs(z), np.maximum(1.0 + s * z, FACTOR_FLOOR))
+
+
+def perturbed_combo(combo, tols: list[Tolerance], row: np.ndarray):
+    """The combo with its parts' fields scaled by one sample's factors."""
+    updates = {"stack": {}, "fluid": {}, "seal": {}, "amplifier": {}}
+    displacement, air = 1.0, 0.0
+    for t, f in zip(tols, row):
+        if t.key == "fluid.air_fraction":
+            air = float(f)
+        elif t.part == "stack" and t.field in DISPLACEMENT_FIELDS:
+            displacement *= float(f)
+        else:
+            part = getattr(combo, t.part)
+            updates[t.part][t.field] = getattr(part, t.field) * float(f)
+    stack = combo.stack
+    if displacement != 1.0:
+        updates["stack"].update(_scaled_displacement(stack, displacement))
+    if air > 0.0:
+        k = updates["fluid"].get("bulk_modulus", combo.fluid.bulk_modulus)
+        updates["fluid"]["bulk_modulus"] = float(fluid_props.effective_bulk_modulus(k, air, AIR_PRESSURE_PA))
+    parts = {name: getattr(combo, name).model_copy(update=u) for name, u in updates.items() if u}
+    return replace(combo, **parts)
+
+
+def _scaled_displacement(stack, factor: float) -> dict:
+    out = {"stroke": stack.stroke * factor, "stroke_per_volt": stack.stroke_per_volt * factor}
+    if stack.bouc_wen is not None:
+        b = stack.bouc_wen
+        moved = transfer(BoucWen(b.d33, b.alpha, b.beta, b.gamma, b.delta, b.n),
+                         stack.stroke, stack.max_voltage, stack.stroke * factor, stack.max_voltage)
+        out["bouc_wen"] = BoucWenTable.model_construct(d33=moved.d33, alpha=moved.alpha, beta=moved.beta,
+                                                       gamma=moved.gamma, delta=moved.delta, n=moved.n)
+    return out

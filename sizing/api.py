@@ -155,3 +155,74 @@ def fit_dc_motor(paths, rig, holdout=None, out=None, **options) -> dict:
     from .fit.workflow import fit_dc_motor as run
 
     return run(paths, rig, holdout=holdout, out=out, **options)
+
+
+# --- studies (issue 13): sizing robust, sizing sweep ------------------------
+def _executor(scheduler: str | None, workers: int, cluster=None):
+    from .studies.executor import Executor
+    return Executor(workers=workers, scheduler=scheduler, cluster=cluster)
+
+
+def robust(requirements_path: str | Path, out_dir: str | Path | None = "robust-out", catalog_dir=None,
+           samples: int = 1000, seed: int = 0, designs: int = 10, scheduler: str | None = None,
+           workers: int = 0, cluster=None, progress=None) -> dict:
+    """Probability of compliance of the ``designs`` best designs of ``solve``
+    under the [tolerances] (CONTRACTS.md, second round). ``workers`` > 0: a
+    local Dask cluster of that many processes; ``scheduler``: a running one;
+    ``cluster``: a dask cluster object. Writes robust.json and robust.html
+    into ``out_dir`` when given. ``progress(stage, done, total)``."""
+    import json
+
+    from .errors import InputError
+    from .io.atomic import write_many
+    from .io.requirements import load_requirements
+
+    if samples < 1:
+        raise InputError(None, "--samples", f"expected at least 1 sample, got {samples}")
+    if designs < 1:
+        raise InputError(None, "--designs", f"expected at least 1 design, got {designs}")
+    req, sha = load_requirements(requirements_path)
+    cat = load_catalog(catalog_dir)
+    with _executor(scheduler, workers, cluster) as ex:        # an unreachable scheduler fails here, first
+        from .engine.solve import solve as run                # (the engine's imports take seconds)
+        from .studies.robust import pick_designs, robust as run_robust
+        results = run(req, sha, cat, progress=progress).results
+        picked = pick_designs(results, designs)
+        if not picked:
+            raise InputError(str(requirements_path), None, "no sized piezohydraulic design to study")
+        data = run_robust(req, cat, picked, samples, seed, ex,
+                          progress=(lambda d, t: progress("sampling", d, t)) if progress else None)
+    data["requirements_sha256"] = sha
+    data["catalog_sha256"] = cat.sha256
+    if out_dir is not None:
+        from .report.robust_html import render
+        out = Path(out_dir)
+        write_many({out / "robust.json": json.dumps(data, indent=1, allow_nan=False) + "\n",
+                    out / "robust.html": render(data)})
+    return data
+
+
+def sweep(requirements_path: str | Path, vary: list[str], out_dir: str | Path | None = "sweep-out",
+          catalog_dir=None, scheduler: str | None = None, workers: int = 0, cluster=None, progress=None) -> dict:
+    """A full solve per point of the grid ``vary`` (``FIELD=FROM..TO:N``
+    each); writes sweep.json and sweep.html into ``out_dir`` when given."""
+    import json
+
+    from .io.atomic import write_many
+    from .io.schema import load_toml
+    from .studies.sweep import sweep as run_sweep
+
+    data = load_toml(requirements_path)
+    cat = load_catalog(catalog_dir)
+    from .studies.sweep import parse_vary
+    for v in vary:                          # bad --vary before any cluster starts
+        parse_vary(v, data, requirements_path)
+    with _executor(scheduler, workers, cluster) as ex:
+        result = run_sweep(data, requirements_path, cat, vary, ex,
+                           progress=(lambda d, t: progress("solving", d, t)) if progress else None)
+    if out_dir is not None:
+        from .report.sweep_html import render
+        out = Path(out_dir)
+        write_many({out / "sweep.json": json.dumps(result, indent=1, allow_nan=False) + "\n",
+                    out / "sweep.html": render(result)})
+    return result

@@ -147,8 +147,14 @@ def load_requirements(path: str | Path) -> tuple[RequirementsFile, str]:
     file's sha256. Raises InputError naming the file and the field."""
     path = Path(path)
     data = load_toml(path)
+    return parse_requirements(data, path), hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def parse_requirements(data: dict, path: str | Path) -> RequirementsFile:
+    """Validate requirements already read as a dict (``sizing sweep`` edits
+    one field per grid point); errors name ``path``."""
     req = parse_model(RequirementsFile, data, path)
     if req.load.force is None and not req.load.dynamic_pressure:
         from ..errors import InputError
         raise InputError(str(path), "[load].dynamic_pressure", "expected at least one load case")
-    return req, hashlib.sha256(path.read_bytes()).hexdigest()
+    return req

@@ -15,7 +15,7 @@ import numpy as np
 
 from ..errors import InputError
 
-CONNECT_TIMEOUT_S = 4
+CONNECT_TIMEOUT_S = 3
 
 
 def task_seed(seed: int, *index: int) -> np.random.Generator:

@@ -288,9 +288,15 @@ class _StageBars:
             self.bar.stop()
 
 
-def _default_workers() -> int:
+def _run_study(fn, quiet: bool, workers: Optional[int], *args, **kwargs):
+    """Run api.robust or api.sweep with progress bars and the --workers default
+    (the number of cores, at most 4)."""
     import os
-    return max(1, min(4, os.cpu_count() or 1))
+    if workers is not None and workers < 0:
+        raise InputError(None, "--workers", f"expected 0 or more, got {workers}")
+    n = max(1, min(4, os.cpu_count() or 1)) if workers is None else workers
+    with _StageBars(quiet) as bars:
+        return fn(*args, workers=n, progress=bars, **kwargs)
 
 
 SchedulerOpt = typer.Option(None, "--scheduler", help="Address of a running Dask scheduler (tcp://HOST:8786). "
@@ -309,12 +315,8 @@ def robust(requirements: Path = typer.Argument(..., help="requirements.toml (CON
            catalog: Optional[Path] = CatalogOpt,
            quiet: bool = typer.Option(False, "--quiet", help="No progress bar and no summary.")):
     """Probability of compliance of the best designs under part tolerances (Monte Carlo, full simulations)."""
-    if workers is not None and workers < 0:
-        raise InputError(None, "--workers", f"expected 0 or more, got {workers}")
-    with _StageBars(quiet) as bars:
-        data = api.robust(requirements, out, catalog, samples=samples, seed=seed, designs=designs,
-                          scheduler=scheduler, workers=_default_workers() if workers is None else workers,
-                          progress=bars)
+    data = _run_study(api.robust, quiet, workers, requirements, out, catalog, samples=samples, seed=seed,
+                      designs=designs, scheduler=scheduler)
     if not quiet:
         for d in data["designs"]:
             lo, hi = d["p_ci95"]
@@ -332,11 +334,7 @@ def sweep(requirements: Path = typer.Argument(..., help="requirements.toml (CONT
           catalog: Optional[Path] = CatalogOpt,
           quiet: bool = typer.Option(False, "--quiet", help="No progress bar and no summary.")):
     """A full solve at every point of a grid over requirement fields."""
-    if workers is not None and workers < 0:
-        raise InputError(None, "--workers", f"expected 0 or more, got {workers}")
-    with _StageBars(quiet) as bars:
-        data = api.sweep(requirements, vary, out, catalog, scheduler=scheduler,
-                         workers=_default_workers() if workers is None else workers, progress=bars)
+    data = _run_study(api.sweep, quiet, workers, requirements, vary, out, catalog, scheduler=scheduler)
     if not quiet:
         for g in data["grid"]:
             b = g["best"]

@@ -13,14 +13,13 @@ from sizing.engine.convex import GPSizer
 from sizing.engine.evaluate import load_cases
 from sizing.engine.search import enumerate_combos
 from sizing.engine.solve import sizing_input, verify_sized
-from sizing.io.catalog import Catalog, load_catalog
 from sizing.io.requirements import load_requirements
 from sizing.studies.executor import Executor, task_seed
 from sizing.studies.robust import robust
 from sizing.studies.stats import wilson
 from sizing.studies.tolerances import Tolerance, factors, perturbed_combo
 
-from .conftest import CATALOGS, STUDIES, run_cli
+from .conftest import ONE_DESIGN, STUDIES, run_cli, subset_catalog
 
 SEED_REQ = (STUDIES / "seed-requirements.toml").read_text()
 KEY = "ph-pi-p-056.90-n10-mil-prf-87257-ptfe-spring-energised-pi-e-481"
@@ -34,11 +33,7 @@ def _requirements(tmp_path: Path, tolerances: str = "") -> Path:
 
 @pytest.fixture(scope="module")
 def small_catalog():
-    full = load_catalog(CATALOGS)
-    pick = lambda group, ids: {k: v for k, v in group.items() if k in ids}  # noqa: E731
-    return Catalog(folder=full.folder, stacks=pick(full.stacks, {"pi-p-056.90"}),
-                   fluids=pick(full.fluids, {"mil-prf-87257"}), seals=pick(full.seals, {"ptfe-spring-energised"}),
-                   amplifiers=pick(full.amplifiers, {"pi-e-481"}), dc_actuators={}, files=dict(full.files))
+    return subset_catalog(**ONE_DESIGN, dc_actuators=0)
 
 
 def _nominal(req, catalog, key=KEY):

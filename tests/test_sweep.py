@@ -4,25 +4,19 @@ from __future__ import annotations
 import pytest
 
 from sizing.engine.solve import solve
-from sizing.io.catalog import Catalog, load_catalog
 from sizing.io.requirements import parse_requirements
 from sizing.io.schema import load_toml
 from sizing.studies.executor import Executor
 from sizing.studies.sweep import limits, parse_vary, point_summary, sweep
 
-from .conftest import CATALOGS, STUDIES, run_cli
+from .conftest import ONE_DESIGN, STUDIES, run_cli, subset_catalog
 
 FAST = {"max_stacks": 11, "max_simulated": 6, "thermal_compensation": True}
 
 
 @pytest.fixture(scope="module")
 def small_catalog():
-    full = load_catalog(CATALOGS)
-    pick = lambda group, ids: {k: v for k, v in group.items() if k in ids}  # noqa: E731
-    return Catalog(folder=full.folder, stacks=pick(full.stacks, {"pi-p-056.90"}),
-                   fluids=pick(full.fluids, {"mil-prf-87257"}), seals=pick(full.seals, {"ptfe-spring-energised"}),
-                   amplifiers=pick(full.amplifiers, {"pi-e-481"}),
-                   dc_actuators=dict(list(full.dc_actuators.items())[:1]), files=dict(full.files))
+    return subset_catalog(**ONE_DESIGN, dc_actuators=1)
 
 
 @pytest.fixture

@@ -164,3 +164,29 @@ def test_unreachable_scheduler_fails_fast(tmp_path):
     assert code == 2 and "--scheduler" in err and len(err.strip().splitlines()) == 1
     assert time.monotonic() - start < 10
     assert not out.exists()
+
+
+def test_operating_temperature_moves_the_parts_not_the_ratings(tmp_path, small_catalog):
+    req, _ = load_requirements(_requirements(tmp_path))
+    (combo, res), nominal, loads = _nominal(req, small_catalog)
+    at_max, at_40 = verify_sized(req, small_catalog, [(combo, res)] * 2, loads, temperatures=[100.0, 40.0])
+    # at the required maximum: exactly the nominal verification
+    assert [c["margins"] for c in at_max] == [c["margins"] for c in nominal]
+    # at 40 degC the oil's bulk modulus follows the catalog's linear law by hand,
+    # K(T) = K_25 (1 + c (T - 25)) (physics/fluid.py, reference 25 degC)
+    f = combo.fluid
+    expected = f.bulk_modulus * (1 + f.bulk_modulus_temperature_coefficient * (40.0 - 25.0))
+    assert at_40[0]["fluid_at_temperature"]["bulk_modulus_Pa"] == pytest.approx(expected, rel=1e-9)
+    assert at_40[0]["margins"]["temperature"] == nominal[0]["margins"]["temperature"]
+    # the sampled temperatures stay in [20 degC, max], on the 2 K grid
+    from sizing.studies.tolerances import operating_temperatures
+    tols = [Tolerance("operating.temperature", 1.0)]
+    t = operating_temperatures(tols, factors(tols, task_seed(0, 0).standard_normal((500, 1))), 20.0, 100.0)
+    assert t.min() >= 20.0 and t.max() <= 100.0 and np.all(np.mod(t, 2.0) == 0)
+    assert 50.0 < t.mean() < 70.0                                  # uniform: mean 60 degC
+
+
+def test_temperature_fraction_above_one_is_refused(tmp_path):
+    code, _, err = run_cli("robust", _requirements(tmp_path, '\n[tolerances]\n"operating.temperature" = "150 %"\n'),
+                           "--out", tmp_path / "o", "--workers", "0", "--quiet")
+    assert code == 2 and "operating.temperature" in err and not (tmp_path / "o").exists()

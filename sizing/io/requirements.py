@@ -80,10 +80,14 @@ class DutyTable(Strict):
 # tolerances of PICA stacks (stroke, stiffness), oil bulk modulus data
 # scatter and seal friction scatter, not measured on these parts.
 DEFAULT_TOLERANCES = {"stack.stroke": 0.05, "stack.stiffness": 0.10, "fluid.bulk_modulus": 0.20,
-                      "seal.friction_per_length": 0.30, "fluid.air_fraction": 0.001}
-# Pseudo-fields that are not catalog fields: entrained air, an absolute
-# volume fraction (half-normal with this 1-sigma), not a relative spread.
-TOLERANCE_PSEUDO_FIELDS = {"fluid.air_fraction"}
+                      "seal.friction_per_length": 0.30, "fluid.air_fraction": 0.001,
+                      "operating.temperature": 1.0}
+# Pseudo-fields that are not catalog fields: "fluid.air_fraction", entrained
+# air, an absolute volume fraction (half-normal with this 1-sigma);
+# "operating.temperature", the fraction of the required range (from
+# options.drift_reference_temperature up to max_temperature), counted down
+# from the maximum, over which the operating temperature is uniform.
+TOLERANCE_PSEUDO_FIELDS = {"fluid.air_fraction", "operating.temperature"}
 
 
 def tolerance_fields() -> dict[str, list[str]]:
@@ -102,6 +106,8 @@ def _check_tolerance_keys(value: dict[str, float]) -> dict[str, float]:
     fields = tolerance_fields()
     for key in value:
         kind, _, name = key.partition(".")
+        if key == "operating.temperature" and value[key] > 1.0:
+            raise ValueError(f'"{key}": expected a fraction of the temperature range, 0 to 100 %, got {value[key]!r}')
         if key in TOLERANCE_PSEUDO_FIELDS:
             continue
         if kind not in fields or name not in fields[kind]:

@@ -13,6 +13,9 @@ seed gives the same numbers wherever they ran.
 Per design: P(compliance) with its 95 % Wilson interval, P per requirement,
 and first-order RBD-FAST indices of the worst margin over the tolerances
 (``stats.py``), the largest of which names the tolerance that drives failure.
+With ``operating.temperature`` the samples also spread over the required
+temperature range (``tolerances.py``), verified in groups of equal
+(rounded) temperature.
 """
 from __future__ import annotations
 
@@ -28,7 +31,7 @@ from ..engine.solve import verify_sized
 from ..engine.verify import SETTLE_TIME_S
 from .executor import Executor, task_seed
 from .stats import sensitivity, wilson
-from .tolerances import Tolerance, factors, perturbed_combo, tolerances_of
+from .tolerances import Tolerance, factors, operating_temperatures, perturbed_combo, tolerances_of
 
 BATCH = 250                 # samples per task: one vectorised simulation per load case
 WORST_FLOOR = -1.0          # worst margin of a failed simulation, for the sensitivity
@@ -55,7 +58,9 @@ def run_batch(task: BatchTask) -> dict:
     f = factors(task.tolerances, z)
     combo, res = task.design
     sized = [(perturbed_combo(combo, task.tolerances, row), res) for row in f]
-    verified = verify_sized(task.req, task.catalog, sized, task.loads, chunk=task.size)
+    r, o = task.req.requirements, task.req.options
+    temps = operating_temperatures(task.tolerances, f, o.drift_reference_temperature, r.max_temperature)
+    verified = verify_sized(task.req, task.catalog, sized, task.loads, chunk=task.size, temperatures=temps)
     picked = [next(c for c in cands if c["id"] == task.variant_id) for cands in verified]
     keys = sorted({k for c in picked for k in c["margins"]})
     margins = {k: np.array([_finite(c["margins"].get(k)) for c in picked]) for k in keys}

@@ -12,6 +12,10 @@ Two rules tie fields together:
   displacement per volt: stroke, stroke_per_volt and the measured Bouc-Wen
   loop (carried by ``physics.bouc_wen.transfer``) move together, so the
   simulated stroke follows the catalog stroke.
+- ``operating.temperature`` (a pseudo-field): the temperature the design
+  works at, uniform over the top fraction s of the required range; the
+  parts' properties follow it through the solve's own temperature laws
+  (ratings are still judged at the required maximum).
 - ``fluid.air_fraction`` (a pseudo-field) is entrained free air, an absolute
   volume fraction a = s |z| (half-normal: air is never negative), lowering
   the oil's bulk modulus by Wood's rule at ``AIR_PRESSURE_PA``
@@ -32,7 +36,11 @@ FACTOR_FLOOR = 0.05
 # at atmospheric pressure would be ten times softer (PHYSICS-NOTES, air).
 AIR_PRESSURE_PA = 1.0e6
 DISPLACEMENT_FIELDS = ("stroke", "stroke_per_volt")
-PART_OF = {"stack": "stack", "fluid": "fluid", "seal": "seal", "amplifier": "amplifier"}
+OPERATING_TEMPERATURE = "operating.temperature"
+# samples whose operating temperatures round to the same step are verified
+# together (one simulation call per step): 2 K moves the derated stack
+# stroke and the bulk modulus by ~0.1 %
+TEMPERATURE_STEP_K = 2.0
 
 
 @dataclass(frozen=True)
@@ -55,11 +63,26 @@ def tolerances_of(spreads: dict[str, float]) -> list[Tolerance]:
 
 
 def factors(tols: list[Tolerance], z: np.ndarray) -> np.ndarray:
-    """Multiplying factor (or air fraction) per sample and tolerance;
+    """Multiplying factor per sample and tolerance; for fluid.air_fraction
+    the air fraction, for operating.temperature the fraction of the range
+    below the maximum (uniform: the normal z mapped through its CDF).
     z (n, p) standard normal."""
+    from scipy.special import ndtr
     s = np.array([t.spread for t in tols])
     air = np.array([t.key == "fluid.air_fraction" for t in tols])
-    return np.where(air, s * np.abs(z), np.maximum(1.0 + s * z, FACTOR_FLOOR))
+    temp = np.array([t.key == OPERATING_TEMPERATURE for t in tols])
+    relative = np.maximum(1.0 + s * z, FACTOR_FLOOR)
+    return np.where(air, s * np.abs(z), np.where(temp, s * ndtr(z), relative))
+
+
+def operating_temperatures(tols: list[Tolerance], f: np.ndarray, low: float, high: float):
+    """Per sample, the operating temperature (degC) rounded to TEMPERATURE_STEP_K,
+    or None when the temperature does not vary."""
+    cols = [j for j, t in enumerate(tols) if t.key == OPERATING_TEMPERATURE]
+    if not cols:
+        return None
+    t = high - f[:, cols[0]] * max(high - low, 0.0)
+    return np.round(t / TEMPERATURE_STEP_K) * TEMPERATURE_STEP_K
 
 
 def perturbed_combo(combo, tols: list[Tolerance], row: np.ndarray):
@@ -67,6 +90,8 @@ def perturbed_combo(combo, tols: list[Tolerance], row: np.ndarray):
     updates = {"stack": {}, "fluid": {}, "seal": {}, "amplifier": {}}
     displacement, air = 1.0, 0.0
     for t, f in zip(tols, row):
+        if t.key == OPERATING_TEMPERATURE:
+            continue                       # not a part: the requirements' temperature (robust.run_batch)
         if t.key == "fluid.air_fraction":
             air = float(f)
         elif t.part == "stack" and t.field in DISPLACEMENT_FIELDS:

@@ -61,6 +61,9 @@ def test_sweep_over_stroke_reproduces_solve_at_each_point(seed_data, small_catal
         assert g["best_by_technology"] == ref["best_by_technology"]
         assert g["front"] == ref["front"]
         assert g["requirements"]["stroke_m"] == pytest.approx(g["varied"]["stroke"])
+    from sizing.report.sweep_html import render
+    page = render(out)                    # self-contained: plotly.js inline, no CDN
+    assert out["grid"][0]["best"]["id"] in page and "Plotly" in page and "<script src" not in page
     # feasible counts computed independently of point_summary, from the solve's own flags
     assert g["feasible"]["piezohydraulic"] == sum(1 for c in results["candidates"]
                                                   if c["technology"] == "piezohydraulic" and c["feasible"])
@@ -82,3 +85,11 @@ def test_cli_bad_vary_exits_2_and_writes_nothing(tmp_path):
                            "--out", out, "--workers", "0", "--quiet")
     assert code == 2 and len(err.strip().splitlines()) == 1 and "--vary stroke" in err
     assert not out.exists()
+
+
+@pytest.mark.parametrize("command", ["robust", "sweep"])
+def test_study_commands_have_help_and_docs(command):
+    code, out, _ = run_cli(command, "--help")
+    assert code == 0 and "--scheduler" in out and "--workers" in out
+    readme = (STUDIES.parent / "README.md").read_text()
+    assert f"sizing {command} " in readme

@@ -132,8 +132,11 @@ def _summarise(cand: dict, tols: list[Tolerance], parts: list[dict], seed: int) 
 
 
 def _quantiles(x: np.ndarray) -> dict:
-    q = np.quantile(x, [0.05, 0.5, 0.95])
-    return {"p05": float(q[0]), "p50": float(q[1]), "p95": float(q[2])}
+    """5, 50 and 95 % quantiles of a margin; None where it is not finite
+    (a failed simulation's margin is -inf)."""
+    with np.errstate(invalid="ignore"):
+        q = np.quantile(x, [0.05, 0.5, 0.95])
+    return {k: (float(v) if np.isfinite(v) else None) for k, v in zip(("p05", "p50", "p95"), q)}
 
 
 def _robust_front(designs: list[dict]) -> None:

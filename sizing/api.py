@@ -165,11 +165,12 @@ def _executor(scheduler: str | None, workers: int, cluster=None):
 
 def robust(requirements_path: str | Path, out_dir: str | Path | None = "robust-out", catalog_dir=None,
            samples: int = 1000, seed: int = 0, designs: int = 10, scheduler: str | None = None,
-           workers: int = 0, cluster=None, progress=None) -> dict:
+           workers: int = 0, cluster=None, progress=None, bouc_wen_fit: str | Path | None = None) -> dict:
     """Probability of compliance of the ``designs`` best designs of ``solve``
     under the [tolerances] (CONTRACTS.md, second round). ``workers`` > 0: a
     local Dask cluster of that many processes; ``scheduler``: a running one;
-    ``cluster``: a dask cluster object. Writes robust.json and robust.html
+    ``cluster``: a dask cluster object. ``bouc_wen_fit``: a ``sizing fit
+    hysteresis`` output whose standard errors become Bouc-Wen tolerances. Writes robust.json and robust.html
     into ``out_dir`` when given. ``progress(stage, done, total)``."""
     import json
 
@@ -183,6 +184,10 @@ def robust(requirements_path: str | Path, out_dir: str | Path | None = "robust-o
         raise InputError(None, "--designs", f"expected at least 1 design, got {designs}")
     req, sha = load_requirements(requirements_path)
     cat = load_catalog(catalog_dir)
+    extra = None
+    if bouc_wen_fit is not None:        # the stack was fitted: its Bouc-Wen spreads from the fit
+        from .io.fit_spreads import bouc_wen_spreads
+        extra = bouc_wen_spreads(bouc_wen_fit)
     with _executor(scheduler, workers, cluster) as ex:        # an unreachable scheduler fails here, first
         from .engine.solve import solve as run                # (the engine's imports take seconds)
         from .studies.robust import pick_designs, robust as run_robust
@@ -190,7 +195,7 @@ def robust(requirements_path: str | Path, out_dir: str | Path | None = "robust-o
         picked = pick_designs(results, designs)
         if not picked:
             raise InputError(str(requirements_path), None, "no sized piezohydraulic design to study")
-        data = run_robust(req, cat, picked, samples, seed, ex,
+        data = run_robust(req, cat, picked, samples, seed, ex, extra_spreads=extra,
                           progress=(lambda d, t: progress("sampling", d, t)) if progress else None)
     data["requirements_sha256"] = sha
     data["catalog_sha256"] = cat.sha256

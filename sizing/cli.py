@@ -313,10 +313,12 @@ def robust(requirements: Path = typer.Argument(..., help="requirements.toml (CON
            out: Path = typer.Option(Path("robust-out"), "--out", help="Folder for robust.json and robust.html."),
            scheduler: Optional[str] = SchedulerOpt, workers: Optional[int] = WorkersOpt,
            catalog: Optional[Path] = CatalogOpt,
+           bouc_wen_fit: Optional[Path] = typer.Option(None, "--bouc-wen-fit", help="Output of sizing fit hysteresis: "
+                                                       "its standard errors become tolerances of the stacks' Bouc-Wen parameters."),
            quiet: bool = typer.Option(False, "--quiet", help="No progress bar and no summary.")):
     """Probability of compliance of the best designs under part tolerances (Monte Carlo, full simulations)."""
     data = _run_study(api.robust, quiet, workers, requirements, out, catalog, samples=samples, seed=seed,
-                      designs=designs, scheduler=scheduler)
+                      designs=designs, scheduler=scheduler, bouc_wen_fit=bouc_wen_fit)
     if not quiet:
         for d in data["designs"]:
             lo, hi = d["p_ci95"]

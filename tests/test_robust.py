@@ -193,3 +193,54 @@ def test_temperature_fraction_above_one_is_refused(tmp_path):
     code, _, err = run_cli("robust", _requirements(tmp_path, '\n[tolerances]\n"operating.temperature" = "150 %"\n'),
                            "--out", tmp_path / "o", "--workers", "0", "--quiet")
     assert code == 2 and "operating.temperature" in err and not (tmp_path / "o").exists()
+
+
+FIT_TOML = """
+[stack]
+d33 = 8.15e-7
+[stack.bouc_wen]
+alpha = -2.23e-7
+beta = 0.134
+gamma = 0.0755
+delta = -5.46e-8
+n = 1.14
+[fit]
+model = "bouc-wen"
+nrmse_train = 0.004
+[fit.stderr]
+d33 = 1.63e-8
+alpha = 4.46e-9
+beta = 0.0134
+gamma = 0.00755
+delta = 1.092e-8
+n = 0.0114
+"""
+
+
+def test_bouc_wen_spreads_from_a_fit_and_their_effect(tmp_path, small_catalog):
+    from sizing.errors import InputError
+    from sizing.io.fit_spreads import bouc_wen_spreads
+    fit = tmp_path / "fit.toml"
+    fit.write_text(FIT_TOML)
+    spreads = bouc_wen_spreads(fit)
+    # stderr / |value| by hand: 1.63e-8 / 8.15e-7 = 2 %, 4.46e-9 / 2.23e-7 = 2 %, 0.0134 / 0.134 = 10 %,
+    # 1.092e-8 / 5.46e-8 = 20 %, 0.0114 / 1.14 = 1 %
+    assert spreads == pytest.approx({"stack.bouc_wen.d33": 0.02, "stack.bouc_wen.alpha": 0.02,
+                                     "stack.bouc_wen.beta": 0.10, "stack.bouc_wen.gamma": 0.10,
+                                     "stack.bouc_wen.delta": 0.20, "stack.bouc_wen.n": 0.01})
+    fit.write_text(FIT_TOML.replace('model = "bouc-wen"', 'model = "dc-motor"'))
+    with pytest.raises(InputError, match=r"\[fit\].model"):
+        bouc_wen_spreads(fit)
+    # a factor on one parameter moves that parameter of the loop the solve uses, and no other
+    from sizing.engine.piezo import reference_bouc_wen, stack_bouc_wen
+    from sizing.engine.search import Combo
+    stack = small_catalog.stacks["pi-p-056.90"]
+    bw = stack_bouc_wen(stack, reference_bouc_wen(small_catalog.stacks))[0]
+    combo = Combo(stack, 10, small_catalog.fluids["mil-prf-87257"], small_catalog.seals["ptfe-spring-energised"],
+                  small_catalog.amplifiers["pi-e-481"], 1.0, stack.stroke)
+    tols = [Tolerance("stack.bouc_wen.beta", 0.1)]
+    p = perturbed_combo(combo, tols, factors(tols, np.array([[2.0]]))[0], bw)
+    assert p.stack.bouc_wen.beta == pytest.approx(1.2 * bw.beta)
+    assert (p.stack.bouc_wen.d33, p.stack.bouc_wen.alpha, p.stack.bouc_wen.n) == (bw.d33, bw.alpha, bw.n)
+    with pytest.raises(ValueError):
+        perturbed_combo(combo, tols, np.array([1.2]))        # the loop must be given

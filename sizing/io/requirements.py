@@ -88,6 +88,9 @@ DEFAULT_TOLERANCES = {"stack.stroke": 0.05, "stack.stiffness": 0.10, "fluid.bulk
 # options.drift_reference_temperature up to max_temperature), counted down
 # from the maximum, over which the operating temperature is uniform.
 TOLERANCE_PSEUDO_FIELDS = {"fluid.air_fraction", "operating.temperature"}
+# relative spreads of the stack's Bouc-Wen parameters (seed eq. 1-2), e.g.
+# from a fit's standard errors (``sizing robust --bouc-wen-fit``)
+BOUC_WEN_TOLERANCES = tuple(f"stack.bouc_wen.{p}" for p in ("d33", "alpha", "beta", "gamma", "delta", "n"))
 
 
 def tolerance_fields() -> dict[str, list[str]]:
@@ -108,12 +111,12 @@ def _check_tolerance_keys(value: dict[str, float]) -> dict[str, float]:
         kind, _, name = key.partition(".")
         if key == "operating.temperature" and value[key] > 1.0:
             raise ValueError(f'"{key}": expected a fraction of the temperature range, 0 to 100 %, got {value[key]!r}')
-        if key in TOLERANCE_PSEUDO_FIELDS:
+        if key in TOLERANCE_PSEUDO_FIELDS or key in BOUC_WEN_TOLERANCES:
             continue
         if kind not in fields or name not in fields[kind]:
             known = ", ".join(f"{k}.{f}" for k in fields for f in fields[k])
             raise ValueError(f'unknown field "{key}": expected "kind.field", one of {known}, '
-                             f'or {", ".join(sorted(TOLERANCE_PSEUDO_FIELDS))}')
+                             f'{", ".join(sorted(TOLERANCE_PSEUDO_FIELDS))} or stack.bouc_wen.PARAM')
     return value
 
 

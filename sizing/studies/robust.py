@@ -25,13 +25,15 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..engine.evaluate import load_cases
+from ..engine.piezo import reference_bouc_wen, stack_bouc_wen
 from ..engine.rank import nondominated_levels
 from ..engine.sized import sized_designs
 from ..engine.solve import verify_sized
 from ..engine.verify import SETTLE_TIME_S
 from .executor import Executor, task_seed
 from .stats import sensitivity, wilson
-from .tolerances import Tolerance, factors, operating_temperatures, perturbed_combo, tolerances_of
+from .tolerances import (BOUC_WEN_PREFIX, Tolerance, factors, operating_temperatures, perturbed_combo,
+                         tolerances_of)
 
 BATCH = 250                 # samples per task: one vectorised simulation per load case
 WORST_FLOOR = -1.0          # worst margin of a failed simulation, for the sensitivity
@@ -57,7 +59,10 @@ def run_batch(task: BatchTask) -> dict:
     z = rng.standard_normal((task.size, len(task.tolerances)))
     f = factors(task.tolerances, z)
     combo, res = task.design
-    sized = [(perturbed_combo(combo, task.tolerances, row), res) for row in f]
+    bw = None
+    if any(t.key.startswith(BOUC_WEN_PREFIX) for t in task.tolerances):
+        bw = stack_bouc_wen(combo.stack, reference_bouc_wen(task.catalog.stacks))[0]
+    sized = [(perturbed_combo(combo, task.tolerances, row, bw), res) for row in f]
     r, o = task.req.requirements, task.req.options
     temps = operating_temperatures(task.tolerances, f, o.drift_reference_temperature, r.max_temperature)
     verified = verify_sized(task.req, task.catalog, sized, task.loads, chunk=task.size, temperatures=temps)
@@ -81,9 +86,11 @@ def pick_designs(results: dict, k: int) -> list[dict]:
 
 
 def robust(req, catalog, candidates: list[dict], samples: int, seed: int, executor: Executor,
-           progress=None, batch: int = BATCH) -> dict:
-    """robust.json for ``candidates`` (results.json entries)."""
-    tols = tolerances_of(req.tolerance_spreads)
+           progress=None, batch: int = BATCH, extra_spreads: dict | None = None) -> dict:
+    """robust.json for ``candidates`` (results.json entries). ``extra_spreads``:
+    tolerances added to (and overriding) the requirements' ones, e.g. the
+    Bouc-Wen spreads of a fit (``io.fit_spreads``)."""
+    tols = tolerances_of({**req.tolerance_spreads, **(extra_spreads or {})})
     loads = [c["load_N"] for c in load_cases(req.load)]
     designs = sized_designs(req, catalog, candidates)
     tasks = []

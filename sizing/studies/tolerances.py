@@ -16,6 +16,9 @@ Two rules tie fields together:
   works at, uniform over the top fraction s of the required range; the
   parts' properties follow it through the solve's own temperature laws
   (ratings are still judged at the required maximum).
+- ``stack.bouc_wen.PARAM``: a relative spread of one of the stack's Bouc-Wen
+  parameters as the solve uses them (measured, or transferred from the
+  reference stack), e.g. a fit's standard error over its value.
 - ``fluid.air_fraction`` (a pseudo-field) is entrained free air, an absolute
   volume fraction a = s |z| (half-normal: air is never negative), lowering
   the oil's bulk modulus by Wood's rule at ``AIR_PRESSURE_PA``
@@ -37,6 +40,7 @@ FACTOR_FLOOR = 0.05
 AIR_PRESSURE_PA = 1.0e6
 DISPLACEMENT_FIELDS = ("stroke", "stroke_per_volt")
 OPERATING_TEMPERATURE = "operating.temperature"
+BOUC_WEN_PREFIX = "stack.bouc_wen."
 # samples whose operating temperatures round to the same step are verified
 # together (one simulation call per step): 2 K moves the derated stack
 # stroke and the bulk modulus by ~0.1 %
@@ -85,14 +89,19 @@ def operating_temperatures(tols: list[Tolerance], f: np.ndarray, low: float, hig
     return np.round(t / TEMPERATURE_STEP_K) * TEMPERATURE_STEP_K
 
 
-def perturbed_combo(combo, tols: list[Tolerance], row: np.ndarray):
-    """The combo with its parts' fields scaled by one sample's factors."""
+def perturbed_combo(combo, tols: list[Tolerance], row: np.ndarray, bouc_wen: BoucWen | None = None):
+    """The combo with its parts' fields scaled by one sample's factors.
+    ``bouc_wen``: the stack's parameters as the solve uses them (measured or
+    transferred, ``engine.piezo.stack_bouc_wen``), needed when a
+    ``stack.bouc_wen.*`` tolerance scales them."""
     updates = {"stack": {}, "fluid": {}, "seal": {}, "amplifier": {}}
-    displacement, air = 1.0, 0.0
+    displacement, air, loop = 1.0, 0.0, {}
     for t, f in zip(tols, row):
         if t.key == OPERATING_TEMPERATURE:
             continue                       # not a part: the requirements' temperature (robust.run_batch)
-        if t.key == "fluid.air_fraction":
+        if t.key.startswith(BOUC_WEN_PREFIX):
+            loop[t.key.removeprefix(BOUC_WEN_PREFIX)] = float(f)
+        elif t.key == "fluid.air_fraction":
             air = float(f)
         elif t.part == "stack" and t.field in DISPLACEMENT_FIELDS:
             displacement *= float(f)
@@ -100,8 +109,15 @@ def perturbed_combo(combo, tols: list[Tolerance], row: np.ndarray):
             part = getattr(combo, t.part)
             updates[t.part][t.field] = getattr(part, t.field) * float(f)
     stack = combo.stack
+    if loop:
+        if bouc_wen is None:
+            raise ValueError("a stack.bouc_wen tolerance needs the stack's Bouc-Wen parameters")
+        b = replace(bouc_wen, **{k: getattr(bouc_wen, k) * f for k, f in loop.items()})
+        stack = stack.model_copy(update={"bouc_wen": _table(b)})
     if displacement != 1.0:
         updates["stack"].update(_scaled_displacement(stack, displacement))
+    if loop:
+        updates["stack"].setdefault("bouc_wen", stack.bouc_wen)
     if air > 0.0:
         k = updates["fluid"].get("bulk_modulus", combo.fluid.bulk_modulus)
         updates["fluid"]["bulk_modulus"] = float(fluid_props.effective_bulk_modulus(k, air, AIR_PRESSURE_PA))
@@ -115,6 +131,9 @@ def _scaled_displacement(stack, factor: float) -> dict:
         b = stack.bouc_wen
         moved = transfer(BoucWen(b.d33, b.alpha, b.beta, b.gamma, b.delta, b.n),
                          stack.stroke, stack.max_voltage, stack.stroke * factor, stack.max_voltage)
-        out["bouc_wen"] = BoucWenTable.model_construct(d33=moved.d33, alpha=moved.alpha, beta=moved.beta,
-                                                       gamma=moved.gamma, delta=moved.delta, n=moved.n)
+        out["bouc_wen"] = _table(moved)
     return out
+
+
+def _table(b: BoucWen) -> BoucWenTable:
+    return BoucWenTable.model_construct(d33=b.d33, alpha=b.alpha, beta=b.beta, gamma=b.gamma, delta=b.delta, n=b.n)

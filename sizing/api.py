@@ -158,9 +158,14 @@ def fit_dc_motor(paths, rig, holdout=None, out=None, **options) -> dict:
 
 
 # --- studies (issue 13): sizing robust, sizing sweep ------------------------
-def _executor(scheduler: str | None, workers: int, cluster=None):
+def _executor(scheduler: str | None, workers: int, cluster=None, progress=None):
+    """The study executor; tells ``progress.note`` (when it has one) where the
+    Dask dashboard shows the tasks."""
     from .studies.executor import Executor
-    return Executor(workers=workers, scheduler=scheduler, cluster=cluster)
+    ex = Executor(workers=workers, scheduler=scheduler, cluster=cluster)
+    if ex.dashboard and hasattr(progress, "note"):
+        progress.note(f"Dask dashboard: {ex.dashboard}")
+    return ex
 
 
 def robust(requirements_path: str | Path, out_dir: str | Path | None = "robust-out", catalog_dir=None,
@@ -188,7 +193,7 @@ def robust(requirements_path: str | Path, out_dir: str | Path | None = "robust-o
     if bouc_wen_fit is not None:        # the stack was fitted: its Bouc-Wen spreads from the fit
         from .io.fit_spreads import bouc_wen_spreads
         extra = bouc_wen_spreads(bouc_wen_fit)
-    with _executor(scheduler, workers, cluster) as ex:        # an unreachable scheduler fails here, first
+    with _executor(scheduler, workers, cluster, progress) as ex:        # an unreachable scheduler fails here, first
         from .engine.solve import solve as run                # (the engine's imports take seconds)
         from .studies.robust import pick_designs, robust as run_robust
         results = run(req, sha, cat, progress=progress).results
@@ -222,7 +227,7 @@ def sweep(requirements_path: str | Path, vary: list[str], out_dir: str | Path | 
     from .studies.sweep import parse_vary
     for v in vary:                          # bad --vary before any cluster starts
         parse_vary(v, data, requirements_path)
-    with _executor(scheduler, workers, cluster) as ex:
+    with _executor(scheduler, workers, cluster, progress) as ex:
         result = run_sweep(data, requirements_path, cat, vary, ex,
                            progress=(lambda d, t: progress("solving", d, t)) if progress else None)
     if out_dir is not None:

@@ -283,6 +283,11 @@ class _StageBars:
             self.tasks[stage] = self.bar.add_task(stage, total=total)
         self.bar.update(self.tasks[stage], completed=done, total=total)
 
+    def note(self, text: str) -> None:
+        """A line above the bars (e.g. the Dask dashboard's address)."""
+        if self.bar is not None:
+            self.bar.console.print(text)
+
     def __exit__(self, *exc):
         if self.bar is not None:
             self.bar.stop()

@@ -65,7 +65,7 @@ def _value_of(data: dict, path, table: str, key: str, raw: str, field: str) -> f
         req = parse_requirements(edited, path)
     except InputError as exc:
         raise InputError(None, f"--vary {field}", f"{raw!r}: {exc.message}") from None
-    value = getattr(getattr(req, table), key)
+    value = getattr(getattr(req, table, None), key, None)
     if not isinstance(value, (int, float)) or isinstance(value, bool):
         raise InputError(None, f"--vary {field}", "expected a field holding one quantity")
     return float(value)

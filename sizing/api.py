@@ -156,3 +156,84 @@ def fit_dc_motor(paths, rig, holdout=None, out=None, **options) -> dict:
     from .fit.workflow import fit_dc_motor as run
 
     return run(paths, rig, holdout=holdout, out=out, **options)
+
+
+# --- studies (issue 13): sizing robust, sizing sweep ------------------------
+def _executor(scheduler: str | None, workers: int, cluster=None, progress=None):
+    """The study executor; tells ``progress.note`` (when it has one) where the
+    Dask dashboard shows the tasks."""
+    from .studies.executor import Executor
+    ex = Executor(workers=workers, scheduler=scheduler, cluster=cluster)
+    if ex.dashboard and hasattr(progress, "note"):
+        progress.note(f"Dask dashboard: {ex.dashboard}")
+    return ex
+
+
+def robust(requirements_path: str | Path, out_dir: str | Path | None = "robust-out", catalog_dir=None,
+           samples: int = 1000, seed: int = 0, designs: int = 10, scheduler: str | None = None,
+           workers: int = 0, cluster=None, progress=None, bouc_wen_fit: str | Path | None = None) -> dict:
+    """Probability of compliance of the ``designs`` best designs of ``solve``
+    under the [tolerances] (CONTRACTS.md, second round). ``workers`` > 0: a
+    local Dask cluster of that many processes; ``scheduler``: a running one;
+    ``cluster``: a dask cluster object. ``bouc_wen_fit``: a ``sizing fit
+    hysteresis`` output whose standard errors become Bouc-Wen tolerances. Writes robust.json and robust.html
+    into ``out_dir`` when given. ``progress(stage, done, total)``."""
+    import json
+
+    from .errors import InputError
+    from .io.atomic import write_many
+    from .io.requirements import load_requirements
+
+    if samples < 1:
+        raise InputError(None, "--samples", f"expected at least 1 sample, got {samples}")
+    if designs < 1:
+        raise InputError(None, "--designs", f"expected at least 1 design, got {designs}")
+    req, sha = load_requirements(requirements_path)
+    cat = load_catalog(catalog_dir)
+    extra = None
+    if bouc_wen_fit is not None:        # the stack was fitted: its Bouc-Wen spreads from the fit
+        from .io.fit_spreads import bouc_wen_spreads
+        extra = bouc_wen_spreads(bouc_wen_fit)
+    with _executor(scheduler, workers, cluster, progress) as ex:        # an unreachable scheduler fails here, first
+        from .engine.solve import solve as run                # (the engine's imports take seconds)
+        from .studies.robust import pick_designs, robust as run_robust
+        results = run(req, sha, cat, progress=progress).results
+        picked = pick_designs(results, designs)
+        if not picked:
+            raise InputError(str(requirements_path), None, "no sized piezohydraulic design to study")
+        data = run_robust(req, cat, picked, samples, seed, ex, extra_spreads=extra,
+                          progress=(lambda d, t: progress("sampling", d, t)) if progress else None)
+    data["requirements_sha256"] = sha
+    data["catalog_sha256"] = cat.sha256
+    if out_dir is not None:
+        from .report.robust_html import render
+        out = Path(out_dir)
+        write_many({out / "robust.json": json.dumps(data, indent=1, allow_nan=False) + "\n",
+                    out / "robust.html": render(data)})
+    return data
+
+
+def sweep(requirements_path: str | Path, vary: list[str], out_dir: str | Path | None = "sweep-out",
+          catalog_dir=None, scheduler: str | None = None, workers: int = 0, cluster=None, progress=None) -> dict:
+    """A full solve per point of the grid ``vary`` (``FIELD=FROM..TO:N``
+    each); writes sweep.json and sweep.html into ``out_dir`` when given."""
+    import json
+
+    from .io.atomic import write_many
+    from .io.schema import load_toml
+    from .studies.sweep import sweep as run_sweep
+
+    data = load_toml(requirements_path)
+    cat = load_catalog(catalog_dir)
+    from .studies.sweep import parse_vary
+    for v in vary:                          # bad --vary before any cluster starts
+        parse_vary(v, data, requirements_path)
+    with _executor(scheduler, workers, cluster, progress) as ex:
+        result = run_sweep(data, requirements_path, cat, vary, ex,
+                           progress=(lambda d, t: progress("solving", d, t)) if progress else None)
+    if out_dir is not None:
+        from .report.sweep_html import render
+        out = Path(out_dir)
+        write_many({out / "sweep.json": json.dumps(result, indent=1, allow_nan=False) + "\n",
+                    out / "sweep.html": render(result)})
+    return result

@@ -269,6 +269,94 @@ def fit_dc_motor(data: List[Path] = typer.Argument(..., help="Run CSVs (time_s,r
     _fit_output(result, out)
 
 
+class _StageBars:
+    """Rich progress bars on stderr, one per stage of ``progress(stage, done, total)``."""
+
+    def __init__(self, quiet: bool = False):
+        self.quiet, self.bar, self.tasks = quiet, None, {}
+
+    def __enter__(self):
+        if not self.quiet:
+            from rich.console import Console
+            from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+            self.bar = Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(),
+                                TimeElapsedColumn(), console=Console(stderr=True), transient=True)
+            self.bar.start()
+        return self
+
+    def __call__(self, stage: str, done: int, total: int) -> None:
+        if self.bar is None:
+            return
+        if stage not in self.tasks:
+            self.tasks[stage] = self.bar.add_task(stage, total=total)
+        self.bar.update(self.tasks[stage], completed=done, total=total)
+
+    def note(self, text: str) -> None:
+        """A line above the bars (e.g. the Dask dashboard's address)."""
+        if self.bar is not None:
+            self.bar.console.print(text)
+
+    def __exit__(self, *exc):
+        if self.bar is not None:
+            self.bar.stop()
+
+
+def _run_study(fn, quiet: bool, workers: Optional[int], *args, **kwargs):
+    """Run api.robust or api.sweep with progress bars and the --workers default
+    (the number of cores, at most 4)."""
+    import os
+    if workers is not None and workers < 0:
+        raise InputError(None, "--workers", f"expected 0 or more, got {workers}")
+    n = max(1, min(4, os.cpu_count() or 1)) if workers is None else workers
+    with _StageBars(quiet) as bars:
+        return fn(*args, workers=n, progress=bars, **kwargs)
+
+
+SchedulerOpt = typer.Option(None, "--scheduler", help="Address of a running Dask scheduler (tcp://HOST:8786). "
+                                                      "Default: a local cluster of --workers processes.")
+WorkersOpt = typer.Option(None, "--workers", help="Worker processes of the local Dask cluster "
+                                                  "(default: the number of cores, at most 4; 0: run serially here).")
+
+
+@app.command()
+def robust(requirements: Path = typer.Argument(..., help="requirements.toml (CONTRACTS.md), with an optional [tolerances] table."),
+           samples: int = typer.Option(1000, "--samples", help="Monte Carlo samples per design (>= 1)."),
+           seed: int = typer.Option(0, "--seed", help="Random seed; the same seed gives the same numbers wherever the work runs."),
+           designs: int = typer.Option(10, "--designs", help="How many of the best designs of sizing solve to study."),
+           out: Path = typer.Option(Path("robust-out"), "--out", help="Folder for robust.json and robust.html."),
+           scheduler: Optional[str] = SchedulerOpt, workers: Optional[int] = WorkersOpt,
+           catalog: Optional[Path] = CatalogOpt,
+           bouc_wen_fit: Optional[Path] = typer.Option(None, "--bouc-wen-fit", help="Output of sizing fit hysteresis: "
+                                                       "its standard errors become tolerances of the stacks' Bouc-Wen parameters."),
+           quiet: bool = typer.Option(False, "--quiet", help="No progress bar and no summary.")):
+    """Probability of compliance of the best designs under part tolerances (Monte Carlo, full simulations)."""
+    data = _run_study(api.robust, quiet, workers, requirements, out, catalog, samples=samples, seed=seed,
+                      designs=designs, scheduler=scheduler, bouc_wen_fit=bouc_wen_fit)
+    if not quiet:
+        for d in data["designs"]:
+            lo, hi = d["p_ci95"]
+            typer.echo(f"{d['id']}: P(compliance) {d['p_compliance']:.3f} [{lo:.3f}, {hi:.3f}], "
+                       f"driven by {d['driving_tolerance'] or '-'}")
+        typer.echo(f"{out}/robust.json, robust.html written ({data['where']})")
+
+
+@app.command()
+def sweep(requirements: Path = typer.Argument(..., help="requirements.toml (CONTRACTS.md)."),
+          vary: List[str] = typer.Option(..., "--vary", help="FIELD=FROM..TO:N, units as in the file, e.g. "
+                                                              "stroke=35mm..50mm:4 or max_temperature=80degC..120degC:3. Repeat for a grid."),
+          out: Path = typer.Option(Path("sweep-out"), "--out", help="Folder for sweep.json and sweep.html."),
+          scheduler: Optional[str] = SchedulerOpt, workers: Optional[int] = WorkersOpt,
+          catalog: Optional[Path] = CatalogOpt,
+          quiet: bool = typer.Option(False, "--quiet", help="No progress bar and no summary.")):
+    """A full solve at every point of a grid over requirement fields."""
+    data = _run_study(api.sweep, quiet, workers, requirements, vary, out, catalog, scheduler=scheduler)
+    if not quiet:
+        for g in data["grid"]:
+            b = g["best"]
+            typer.echo(f"{g['varied']}: feasible {g['feasible']}, best {b['id'] if b else 'none'}")
+        typer.echo(f"{out}/sweep.json, sweep.html written ({data['where']})")
+
+
 def main() -> None:
     """Console entry point: maps errors to exit codes."""
     try:

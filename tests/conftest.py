@@ -26,6 +26,21 @@ def catalog_copy(tmp_path):
     return target
 
 
+def subset_catalog(stacks, fluids, seals, amplifiers, dc_actuators=0):
+    """The shipped catalog cut down to the named parts (and the first
+    ``dc_actuators`` DC actuators), for quick solves."""
+    from sizing.io.catalog import Catalog, load_catalog
+    full = load_catalog(CATALOGS)
+    pick = lambda group, ids: {k: v for k, v in group.items() if k in ids}  # noqa: E731
+    return Catalog(folder=full.folder, stacks=pick(full.stacks, stacks), fluids=pick(full.fluids, fluids),
+                   seals=pick(full.seals, seals), amplifiers=pick(full.amplifiers, amplifiers),
+                   dc_actuators=dict(list(full.dc_actuators.items())[:dc_actuators]), files=dict(full.files))
+
+
+ONE_DESIGN = dict(stacks={"pi-p-056.90"}, fluids={"mil-prf-87257"}, seals={"ptfe-spring-energised"},
+                  amplifiers={"pi-e-481"})
+
+
 def run_cli(*args: str):
     """Run the console entry point in-process; returns (exit code, stdout, stderr)."""
     import contextlib

@@ -332,3 +332,34 @@ def _disagreements(designs) -> list[dict]:
                             "static_margin": sm[key], "simulated_margin": m_sim, "verdict_changes": flip})
     return out
 
+
+
+# --- hook for sizing robust (issue 13): re-verify fixed designs ------------
+def verify_sized(req, catalog: Catalog, sized: list, loads: list[float], chunk: int = SIM_CHUNK,
+                 temperatures=None) -> list[list[dict]]:
+    """Re-verify designs whose geometry is fixed, through the very steps of
+    ``solve`` (static figures, margins, simulation under every load case,
+    verdict). ``sized``: (Combo, SizingResult) pairs, e.g. one design whose
+    parts were perturbed. ``temperatures``: optional, per pair, the
+    temperature its parts work at instead of the required maximum (ratings
+    are still judged at the maximum, by the combo's margins). Returns, per
+    pair, its candidates (uncompensated, and compensated when the options
+    ask) with ``feasible`` and ``driver``."""
+    temps = [None] * len(sized) if temperatures is None else [float(t) for t in temperatures]
+    designs, reqs = [None] * len(sized), {}
+    for t in dict.fromkeys(temps):
+        idx = [i for i, x in enumerate(temps) if x == t]
+        reqs[t] = req if t is None else req.model_copy(update={
+            "requirements": req.requirements.model_copy(update={"max_temperature": t})})
+        for i, d in zip(idx, _designs(reqs[t], catalog, [sized[i] for i in idx])):
+            designs[i] = d
+    built = [d for d in designs if d["index"] is not None]
+    for start in range(0, len(built), chunk):
+        _simulate_chunk(built[start:start + chunk], loads, req.requirements.stroke)
+    out = []
+    for d, t in zip(designs, temps):
+        cands = _design_candidates(reqs[t], d)
+        for c in cands:
+            c["feasible"], c["driver"] = verdict(c["margins"])
+        out.append(cands)
+    return out

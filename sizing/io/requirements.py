@@ -79,13 +79,70 @@ class DutyTable(Strict):
     strokes_per_second: float = Field(1.0, gt=0.0, allow_inf_nan=False)
 
 
+# [tolerances] (CONTRACTS.md, second round): relative 1-sigma normal spread of
+# a catalog field, keyed "kind.field". Used when the table is absent (sizing
+# robust); the values are the contract's example, assumed: typical datasheet
+# tolerances of PICA stacks (stroke, stiffness), oil bulk modulus data
+# scatter and seal friction scatter, not measured on these parts.
+DEFAULT_TOLERANCES = {"stack.stroke": 0.05, "stack.stiffness": 0.10, "fluid.bulk_modulus": 0.20,
+                      "seal.friction_per_length": 0.30, "fluid.air_fraction": 0.001,
+                      "operating.temperature": 1.0}
+# Pseudo-fields that are not catalog fields: "fluid.air_fraction", entrained
+# air, an absolute volume fraction (half-normal with this 1-sigma);
+# "operating.temperature", the fraction of the required range (from
+# options.drift_reference_temperature up to max_temperature), counted down
+# from the maximum, over which the operating temperature is uniform.
+TOLERANCE_PSEUDO_FIELDS = {"fluid.air_fraction", "operating.temperature"}
+# relative spreads of the stack's Bouc-Wen parameters (seed eq. 1-2), e.g.
+# from a fit's standard errors (``sizing robust --bouc-wen-fit``)
+BOUC_WEN_TOLERANCES = tuple(f"stack.bouc_wen.{p}" for p in ("d33", "alpha", "beta", "gamma", "delta", "n"))
+
+
+def tolerance_fields() -> dict[str, list[str]]:
+    """Catalog fields a tolerance may name, per part kind: the numeric
+    quantities, without temperatures (a relative spread of a degC value
+    means nothing)."""
+    from .catalog import Amplifier, Fluid, Seal, Stack
+    out = {}
+    for kind, model in {"stack": Stack, "fluid": Fluid, "seal": Seal, "amplifier": Amplifier}.items():
+        out[kind] = [f for f in model.quantity_fields()
+                     if not (f.endswith("_temperature") or f == "flash_point")]
+    return out
+
+
+def _check_tolerance_keys(value: dict[str, float]) -> dict[str, float]:
+    fields = tolerance_fields()
+    for key in value:
+        kind, _, name = key.partition(".")
+        if key == "operating.temperature" and value[key] > 1.0:
+            raise ValueError(f'"{key}": expected a fraction of the temperature range, 0 to 100 %, got {value[key]!r}')
+        if key in TOLERANCE_PSEUDO_FIELDS or key in BOUC_WEN_TOLERANCES:
+            continue
+        if kind not in fields or name not in fields[kind]:
+            known = ", ".join(f"{k}.{f}" for k in fields for f in fields[k])
+            raise ValueError(f'unknown field "{key}": expected "kind.field", one of {known}, '
+                             f'{", ".join(sorted(TOLERANCE_PSEUDO_FIELDS))} or stack.bouc_wen.PARAM')
+    return value
+
+
 class RequirementsFile(Strict):
     requirements: RequirementsTable
     load: LoadTable
     objectives: ObjectivesTable = Field(default_factory=ObjectivesTable)
     options: OptionsTable = Field(default_factory=OptionsTable)
     duty: DutyTable = Field(default_factory=DutyTable)
+    tolerances: Optional[dict[str, Qty("dimensionless", nonnegative=True)]] = None   # None: DEFAULT_TOLERANCES
     notes: Optional[str] = None
+
+    @field_validator("tolerances")
+    @classmethod
+    def _tolerance_keys(cls, value):
+        return value if value is None else _check_tolerance_keys(value)
+
+    @property
+    def tolerance_spreads(self) -> dict[str, float]:
+        """[tolerances] as given, or DEFAULT_TOLERANCES when the table is absent."""
+        return dict(DEFAULT_TOLERANCES if self.tolerances is None else self.tolerances)
 
     @property
     def stroke_time(self) -> float:
@@ -104,11 +161,17 @@ def load_requirements(path: str | Path) -> tuple[RequirementsFile, str]:
     file's sha256. Raises InputError naming the file and the field."""
     path = Path(path)
     data = load_toml(path)
+    return parse_requirements(data, path), hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def parse_requirements(data: dict, path: str | Path) -> RequirementsFile:
+    """Validate requirements already read as a dict (``sizing sweep`` edits
+    one field per grid point); errors name ``path``."""
     req = parse_model(RequirementsFile, data, path)
     if req.load.force is None and not req.load.dynamic_pressure:
         from ..errors import InputError
         raise InputError(str(path), "[load].dynamic_pressure", "expected at least one load case")
-    return req, hashlib.sha256(path.read_bytes()).hexdigest()
+    return req
 
 
 def design_requirements(design, loads: list[float]) -> RequirementsFile:

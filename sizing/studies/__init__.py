@@ -1,0 +1,1 @@
+"""Studies over many solves or simulations: sizing robust, sizing sweep."""

@@ -28,13 +28,15 @@ def catalog_copy(tmp_path):
 
 def subset_catalog(stacks, fluids, seals, amplifiers, dc_actuators=0):
     """The shipped catalog cut down to the named parts (and the first
-    ``dc_actuators`` DC actuators), for quick solves."""
+    ``dc_actuators`` DC actuators), for quick solves. Every structure
+    material and compensator is kept; no DC parts (motors, screws...)."""
     from sizing.io.catalog import Catalog, load_catalog
     full = load_catalog(CATALOGS)
     pick = lambda group, ids: {k: v for k, v in group.items() if k in ids}  # noqa: E731
     return Catalog(folder=full.folder, stacks=pick(full.stacks, stacks), fluids=pick(full.fluids, fluids),
                    seals=pick(full.seals, seals), amplifiers=pick(full.amplifiers, amplifiers),
-                   dc_actuators=dict(list(full.dc_actuators.items())[:dc_actuators]), files=dict(full.files))
+                   dc_actuators=dict(list(full.dc_actuators.items())[:dc_actuators]),
+                   materials=dict(full.materials), compensators=dict(full.compensators), files=dict(full.files))
 
 
 ONE_DESIGN = dict(stacks={"pi-p-056.90"}, fluids={"mil-prf-87257"}, seals={"ptfe-spring-energised"},

@@ -9,10 +9,10 @@ import numpy as np
 import pytest
 from scipy.stats import norm
 
-from sizing.engine.convex import GPSizer
+from sizing.engine import piezo_designs
 from sizing.engine.evaluate import load_cases
 from sizing.engine.search import enumerate_combos
-from sizing.engine.solve import sizing_input, verify_sized
+from sizing.engine.solve import verify_sized
 from sizing.io.requirements import load_requirements
 from sizing.studies.executor import Executor, task_seed
 from sizing.studies.robust import robust
@@ -21,7 +21,11 @@ from sizing.studies.tolerances import Tolerance, factors, perturbed_combo
 
 from .conftest import ONE_DESIGN, STUDIES, run_cli, subset_catalog
 
-SEED_REQ = (STUDIES / "seed-requirements.toml").read_text()
+# at the default duty (one stroke per second) the amplifier's continuous current
+# fails every piezohydraulic design (issue 9); at 0.1 strokes/s the other
+# requirements decide, which is what these tests look at
+SEED_REQ = (STUDIES / "seed-requirements.toml").read_text() + "\n[duty]\nstrokes_per_second = 0.1\n"
+DEFAULT_MATERIAL = "al-6061-t6"
 KEY = "ph-pi-p-056.90-n10-mil-prf-87257-ptfe-spring-energised-pi-e-481"
 
 
@@ -39,9 +43,11 @@ def small_catalog():
 def _nominal(req, catalog, key=KEY):
     """The design of ``key`` sized as ``solve`` sizes it, and its candidates."""
     combo = next(c for c in enumerate_combos(req, catalog) if c.key == key)
-    res = GPSizer(req.objectives.minimize).solve(sizing_input(req, combo))
+    # as built and with each compensator, in the default structure material (issue 9)
+    triples = [t for t in piezo_designs.size(req, catalog, [combo]) if t[1].material.id == DEFAULT_MATERIAL]
     loads = [c["load_N"] for c in load_cases(req.load)]
-    return (combo, res), verify_sized(req, catalog, [(combo, res)], loads)[0], loads
+    verified = verify_sized(req, catalog, triples, loads)
+    return triples[0], [c for cands in verified for c in cands], loads
 
 
 def test_wilson_interval_matches_published_value():
@@ -171,10 +177,11 @@ def test_unreachable_scheduler_fails_fast(tmp_path):
 
 def test_operating_temperature_moves_the_parts_not_the_ratings(tmp_path, small_catalog):
     req, _ = load_requirements(_requirements(tmp_path))
-    (combo, res), nominal, loads = _nominal(req, small_catalog)
-    at_max, at_40 = verify_sized(req, small_catalog, [(combo, res)] * 2, loads, temperatures=[100.0, 40.0])
-    # at the required maximum: exactly the nominal verification
-    assert [c["margins"] for c in at_max] == [c["margins"] for c in nominal]
+    sized, nominal, loads = _nominal(req, small_catalog)
+    combo = sized[0]
+    at_max, at_40 = verify_sized(req, small_catalog, [sized] * 2, loads, temperatures=[100.0, 40.0])
+    # at the required maximum: exactly the nominal verification (of the as-built triple)
+    assert [c["margins"] for c in at_max] == [c["margins"] for c in nominal[:len(at_max)]]
     # at 40 degC the oil's bulk modulus follows the catalog's linear law by hand,
     # K(T) = K_25 (1 + c (T - 25)) (physics/fluid.py, reference 25 degC)
     f = combo.fluid

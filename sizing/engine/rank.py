@@ -18,7 +18,11 @@ import numpy as np
 
 
 def floor_margin(achieved: float, required: float) -> float:
-    """achieved / required - 1 (negative: short of the requirement)."""
+    """achieved / required - 1 (negative: short of the requirement). Nothing
+    required (e.g. no compensator volume at the filling temperature) is met
+    by any non-negative amount: +inf."""
+    if float(required) <= 0.0:
+        return math.inf if float(achieved) >= 0.0 else -math.inf
     return float(achieved) / float(required) - 1.0
 
 

@@ -22,6 +22,7 @@
 """
 from __future__ import annotations
 
+import copy
 import math
 import time
 from dataclasses import dataclass, field
@@ -339,26 +340,34 @@ def verify_sized(req, catalog: Catalog, sized: list, loads: list[float], chunk: 
                  temperatures=None) -> list[list[dict]]:
     """Re-verify designs whose geometry is fixed, through the very steps of
     ``solve`` (static figures, margins, simulation under every load case,
-    verdict). ``sized``: (Combo, SizingResult) pairs, e.g. one design whose
+    verdict). ``sized``: (Combo, Variant, SizingResult) triples, e.g. one design whose
     parts were perturbed. ``temperatures``: optional, per pair, the
     temperature its parts work at instead of the required maximum (ratings
     are still judged at the maximum, by the combo's margins). Returns, per
-    pair, its candidates (uncompensated, and compensated when the options
-    ask) with ``feasible`` and ``driver``."""
+    triple, its candidates (uncompensated, and compensated when the options
+    ask) with ``feasible`` and ``driver``. A triple's as-built variant also
+    yields its passive variant when the sample drifts (``piezo_designs``)."""
     temps = [None] * len(sized) if temperatures is None else [float(t) for t in temperatures]
     designs, reqs = [None] * len(sized), {}
     for t in dict.fromkeys(temps):
         idx = [i for i, x in enumerate(temps) if x == t]
         reqs[t] = req if t is None else req.model_copy(update={
             "requirements": req.requirements.model_copy(update={"max_temperature": t})})
-        for i, d in zip(idx, _designs(reqs[t], catalog, [sized[i] for i in idx])):
-            designs[i] = d
-    built = [d for d in designs if d["index"] is not None]
+        # a shallow copy of each combo tells the designs apart (a passive
+        # variant carries its parent's combo object)
+        own = {i: (copy.copy(sized[i][0]),) + tuple(sized[i][1:]) for i in idx}
+        built_t = piezo_designs.designs(reqs[t], catalog, [own[i] for i in idx])
+        owner = {id(own[i][0]): i for i in idx}
+        for i in idx:
+            designs[i] = []
+        for d in built_t:                             # the as-built ones, then their passive variants
+            designs[owner[id(d["combo"])]].append(d)
+    built = [d for ds in designs for d in ds if d["index"] is not None]
     for start in range(0, len(built), chunk):
         _simulate_chunk(built[start:start + chunk], loads, req.requirements.stroke)
     out = []
-    for d, t in zip(designs, temps):
-        cands = _design_candidates(reqs[t], d)
+    for ds, t in zip(designs, temps):
+        cands = [c for d in ds for c in _design_candidates(reqs[t], d)]
         for c in cands:
             c["feasible"], c["driver"] = verdict(c["margins"])
         out.append(cands)

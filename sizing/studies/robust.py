@@ -43,8 +43,8 @@ WORST_FLOOR = -1.0          # worst margin of a failed simulation, for the sensi
 class BatchTask:
     req: object
     catalog: object
-    design: tuple           # (Combo, SizingResult)
-    variant_id: str         # the candidate id to read (plain or "-tc")
+    design: tuple           # (Combo, Variant, SizingResult)
+    variant_id: str         # the candidate id to read
     tolerances: list[Tolerance]
     seed: int
     design_index: int
@@ -58,21 +58,29 @@ def run_batch(task: BatchTask) -> dict:
     rng = task_seed(task.seed, task.design_index, task.batch_index)
     z = rng.standard_normal((task.size, len(task.tolerances)))
     f = factors(task.tolerances, z)
-    combo, res = task.design
+    combo, variant, res = task.design
     bw = None
     if any(t.key.startswith(BOUC_WEN_PREFIX) for t in task.tolerances):
         bw = stack_bouc_wen(combo.stack, reference_bouc_wen(task.catalog.stacks))[0]
-    sized = [(perturbed_combo(combo, task.tolerances, row, bw), res) for row in f]
+    sized = [(perturbed_combo(combo, task.tolerances, row, bw), variant, res) for row in f]
     r, o = task.req.requirements, task.req.options
     temps = operating_temperatures(task.tolerances, f, o.drift_reference_temperature, r.max_temperature)
     verified = verify_sized(task.req, task.catalog, sized, task.loads, chunk=task.size, temperatures=temps)
-    picked = [next(c for c in cands if c["id"] == task.variant_id) for cands in verified]
+    picked = [_pick(cands, task.variant_id) for cands in verified]
     keys = sorted({k for c in picked for k in c["margins"]})
     margins = {k: np.array([_finite(c["margins"].get(k)) for c in picked]) for k in keys}
     sim_s = sum(sum(case["ramp_time_s"] + SETTLE_TIME_S for case in c["simulated"].get("cases", []))
                 for c in picked)
     return {"z": z, "margins": margins, "feasible": np.array([c["feasible"] for c in picked]),
             "simulated_s": float(sim_s)}
+
+
+def _pick(cands: list[dict], variant_id: str) -> dict:
+    """The sample's candidate of the design under study. A passive design
+    ("-pc") whose sample does not drift beyond the allowance needs no spacer:
+    its as-built candidate stands for it."""
+    by_id = {c["id"]: c for c in cands}
+    return by_id.get(variant_id) or by_id[variant_id.removesuffix("-pc")]
 
 
 def _finite(v) -> float:

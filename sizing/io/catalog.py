@@ -17,7 +17,7 @@ from typing import Literal, Optional
 from pydantic import field_validator, model_validator
 
 from ..errors import InputError
-from .schema import Qty, Strict, load_toml, parse_model
+from .schema import Qty, Strict, load_toml, parse_model, read_input_bytes
 
 DEFAULT_CATALOG = Path(__file__).resolve().parents[2] / "catalogs"
 ID_PATTERN = re.compile(r"^[a-z0-9][a-z0-9.\-]*$")
@@ -224,13 +224,17 @@ def load_catalog(folder: str | Path | None = None) -> Catalog:
         if not path.exists():
             continue
         found = True
-        catalog.files[file_name] = hashlib.sha256(path.read_bytes()).hexdigest()
+        catalog.files[file_name] = hashlib.sha256(read_input_bytes(path, "a TOML file")).hexdigest()
         data = load_toml(path)
         unknown = [k for k in data if k != array_name]
         if unknown:
             raise InputError(str(path), unknown[0], f"unknown table; expected [[{array_name}]] entries")
         group = catalog.groups()[array_name]
-        for index, raw in enumerate(data.get(array_name, [])):
+        entries = data.get(array_name, [])
+        if not isinstance(entries, list):
+            raise InputError(str(path), array_name, f"expected [[{array_name}]] entries (an array of tables), "
+                                                    f"got {type(entries).__name__} {entries!r:.40}")
+        for index, raw in enumerate(entries):
             label = f"[[{array_name}]] {raw.get('id', '#' + str(index + 1))}" if isinstance(raw, dict) else f"[[{array_name}]] #{index + 1}"
             entry = _parse_entry(model, raw, path, label)
             if entry.id in seen:

@@ -15,7 +15,7 @@ from typing import Literal, Optional
 from pydantic import Field, field_validator
 
 from .design import LoadTable
-from .schema import Qty, Strict, load_toml, parse_model
+from .schema import Qty, Strict, load_toml, parse_model, read_input_bytes
 
 OBJECTIVES = ("mass", "cost", "volume", "power")
 ABSOLUTE_ZERO_DEGC = -273.15
@@ -103,4 +103,4 @@ def load_requirements(path: str | Path) -> tuple[RequirementsFile, str]:
     if req.load.force is None and not req.load.dynamic_pressure:
         from ..errors import InputError
         raise InputError(str(path), "[load].dynamic_pressure", "expected at least one load case")
-    return req, hashlib.sha256(path.read_bytes()).hexdigest()
+    return req, hashlib.sha256(read_input_bytes(path)).hexdigest()

@@ -54,20 +54,39 @@ def finite(value: float, name: str = "value") -> float:
     return value
 
 
-def load_toml(path: str | Path) -> dict:
-    """Read a TOML file; a missing or malformed file is an InputError."""
+MAX_TOML_BYTES = 10_000_000   # an input TOML is a few kB; refuse to parse a huge one
+
+
+def read_input_bytes(path: str | Path, expected: str = "a file", limit: int | None = None) -> bytes:
+    """The bytes of an input file, or an InputError naming it: missing, a
+    folder, a symlink loop, unreadable, or larger than ``limit`` bytes."""
     path = Path(path)
     try:
-        with path.open("rb") as handle:
-            return tomllib.load(handle)
+        if limit is not None and path.stat().st_size > limit:
+            raise InputError(str(path), None, f"expected {expected} of at most {limit:,} bytes, "
+                                              f"got {path.stat().st_size:,} bytes")
+        return path.read_bytes()
     except FileNotFoundError:
         raise InputError(str(path), None, "file not found") from None
     except IsADirectoryError:
-        raise InputError(str(path), None, "expected a file, got a folder") from None
+        raise InputError(str(path), None, f"expected {expected}, got a folder") from None
+    except OSError as exc:   # symlink loop, permission denied, a device, ...
+        raise InputError(str(path), None, f"cannot read {expected}: {exc.strerror or exc}") from None
+
+
+def load_toml(path: str | Path) -> dict:
+    """Read a TOML file; a missing or malformed file is an InputError. A
+    UTF-8 byte-order mark (what some editors write) is accepted."""
+    path = Path(path)
+    raw = read_input_bytes(path, "a TOML file", MAX_TOML_BYTES)
+    try:
+        return tomllib.loads(raw.decode("utf-8").removeprefix("\ufeff"))
     except tomllib.TOMLDecodeError as exc:
         raise InputError(str(path), None, f"malformed TOML: {exc}") from None
     except UnicodeDecodeError:
         raise InputError(str(path), None, "not a text file") from None
+    except RecursionError:
+        raise InputError(str(path), None, "malformed TOML: nested too deep") from None
 
 
 def field_path(loc: tuple) -> str:

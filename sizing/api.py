@@ -18,6 +18,7 @@ def evaluate(design_path: str | Path, catalog_dir: str | Path | None = None) -> 
 
     design = load_design(design_path)
     cat = load_catalog(catalog_dir)
+    check_evaluate_steps(design, cat, str(design_path))
     if isinstance(design, PiezoDesignFile):
         result = evaluate_piezo(design, cat, str(design_path))
     else:
@@ -44,13 +45,17 @@ def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-ou
     import json
 
     from .engine.solve import solve as run
-    from .io.atomic import write_many
+    from .io.atomic import check_folder, write_folder
     from .io.requirements import load_requirements
     from .report.csv_table import candidates_csv
     from .report.html import render
 
+    inputs = [requirements_path, catalog_dir, baseline]
+    if out_dir is not None:
+        check_folder(out_dir, SOLVE_OUTPUTS, inputs=inputs)
     req, sha = load_requirements(requirements_path)
     cat = load_catalog(catalog_dir)
+    check_solve_steps(req, cat, str(requirements_path))
     old = _load_baseline(baseline) if baseline is not None else None
     output = run(req, sha, cat, progress=progress)
     results = output.results
@@ -59,21 +64,59 @@ def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-ou
         results["changes"] = _rank_changes(old, results, baseline, cat.folder)
         results["baseline_sha256"] = old.get("requirements_sha256")
     if out_dir is not None:
-        out = Path(out_dir)
-        files = {out / "results.json": json.dumps(results, indent=1, allow_nan=False) + "\n",
-                 out / "candidates.csv": candidates_csv(results),
-                 out / "report.html": render(results, output.traces)}
+        files = {"results.json": json.dumps(results, indent=1, allow_nan=False) + "\n",
+                 "candidates.csv": candidates_csv(results),
+                 "report.html": render(results, output.traces)}
         # the catalog these results rest on, so a later --baseline can diff it
-        files.update(_catalog_snapshot(cat.folder, out))
-        write_many(files)
+        files.update(_catalog_snapshot(cat.folder))
+        write_folder(out_dir, files, inputs=inputs)
     return results
 
 
-def _catalog_snapshot(folder: Path, out: Path) -> dict[Path, str]:
+# What ``solve --out DIR`` holds (check_folder needs it before any work).
+SOLVE_OUTPUTS = ("results.json", "candidates.csv", "report.html", "catalog/")
+
+
+def _catalog_snapshot(folder: Path) -> dict[str, bytes]:
     from .io.catalog import KINDS
     from .io.catalog_diff import SNAPSHOT_DIR
-    return {out / SNAPSHOT_DIR / name: (folder / name).read_text(encoding="utf-8")
+    from .io.schema import read_input_bytes
+    return {f"{SNAPSHOT_DIR}/{name}": read_input_bytes(folder / name)
             for name in KINDS if (folder / name).exists()}
+
+
+def _n_loads(load) -> int:
+    return len(load.force) if load.force is not None else len(load.dynamic_pressure)
+
+
+def check_evaluate_steps(design, cat: Catalog, file: str) -> None:
+    """Refuse (exit 2) a design whose simulation would need more steps than
+    the limit (``sizing.limits``): duration x rate x load cases."""
+    from .engine.dc import OUTPUT_RATE_HZ
+    from .engine.verify import SETTLE_TIME_S
+    from .limits import check_steps, dc_steps, piezo_steps
+    if isinstance(design, PiezoDesignFile):
+        check_steps(piezo_steps(design.rise_time + SETTLE_TIME_S, _n_loads(design.load)), file, "rise_time",
+                    "simulation steps (rise time x 20 kHz x load cases)")
+    elif design.actuator in cat.dc_actuators:
+        rate = cat.dc_actuators[design.actuator].pid.rate
+        check_steps(dc_steps(design.duration, rate, _n_loads(design.load), OUTPUT_RATE_HZ), file, "duration",
+                    f"simulation steps (duration x {max(rate, OUTPUT_RATE_HZ):g} Hz x load cases)")
+
+
+def check_solve_steps(req, cat: Catalog, file: str) -> None:
+    """Refuse (exit 2) requirements whose verification would need more
+    steps than the limit: simulated candidates x load cases x stroke time."""
+    from .engine.dc import OUTPUT_RATE_HZ
+    from .engine.dc_candidates import dc_duration
+    from .engine.verify import SETTLE_TIME_S
+    from .limits import check_steps, dc_steps, piezo_steps
+    n = _n_loads(req.load)
+    steps = piezo_steps(req.stroke_time + SETTLE_TIME_S, n * req.options.max_simulated)
+    if req.options.dc_motors:
+        steps += sum(dc_steps(dc_duration(req), act.pid.rate, n, OUTPUT_RATE_HZ) for act in cat.dc_actuators.values())
+    check_steps(steps, file, "[requirements].stroke",
+                "simulation steps (candidates x load cases x stroke / speed)")
 
 
 def _load_baseline(path: str | Path) -> dict:
@@ -111,20 +154,24 @@ def diagnose(campaign_dir: str | Path, holdout: list[str], out_dir: str | Path |
     import json
 
     from .diagnose.diagnosis import diagnose_runs
-    from .io.atomic import write_many
+    from .io.atomic import check_folder, write_folder
     from .io.campaign import campaign_split, load_campaign
 
+    if out_dir is not None:
+        check_folder(out_dir, DIAGNOSE_OUTPUTS, inputs=[campaign_dir])
     campaign = load_campaign(campaign_dir)
     campaign_split(campaign, holdout)
     result = diagnose_runs(campaign.kind, campaign.rig, campaign.runs, list(holdout), recalibrate=recalibrate,
                            seed=seed)
     if out_dir is not None:
         from .report.diagnose_html import render
-        out = Path(out_dir)
-        files = {out / "diagnosis.json": json.dumps(result.to_json(), indent=2),
-                 out / "diagnosis.html": render(result, f"Sim-to-real gap: {Path(campaign_dir).name}")}
-        write_many(files)
+        files = {"diagnosis.json": json.dumps(result.to_json(), indent=2),
+                 "diagnosis.html": render(result, f"Sim-to-real gap: {Path(campaign_dir).name}")}
+        write_folder(out_dir, files, inputs=[campaign_dir])
     return result
+
+
+DIAGNOSE_OUTPUTS = ("diagnosis.json", "diagnosis.html")
 
 
 def diagnose_check(campaign_dir: str | Path, holdout: list[str] | None = None, seed: int = 0, progress=None):

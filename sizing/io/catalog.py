@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import datetime as dt
 import hashlib
+import os
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -221,7 +222,7 @@ def load_catalog(folder: str | Path | None = None) -> Catalog:
     found = False
     for file_name, (array_name, model) in KINDS.items():
         path = folder / file_name
-        if not path.exists():
+        if not os.path.lexists(path):     # a symlink loop or a dangling link is an error, not an absent file
             continue
         found = True
         catalog.files[file_name] = hashlib.sha256(read_input_bytes(path, "a TOML file")).hexdigest()

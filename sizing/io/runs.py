@@ -138,13 +138,14 @@ def _fast(path: Path, header: list[str], wanted: list[str], size: int) -> dict[s
     import pandas as pd
 
     try:
-        reader = pd.read_csv(path, encoding="utf-8-sig", skipinitialspace=True, usecols=wanted,
+        # no usecols: with it pandas silently drops the extra fields of a bad line
+        reader = pd.read_csv(path, encoding="utf-8-sig", skipinitialspace=True,
                              dtype={name: np.float64 for name in wanted}, skip_blank_lines=True,
                              engine="c", chunksize=CHUNK_ROWS)
         with _progress(path, size) as advance:
             chunks = []
             for chunk in reader:
-                chunks.append(chunk)
+                chunks.append(chunk[wanted])
                 advance(len(chunk))
         frame = pd.concat(chunks) if chunks else None
     except Exception:   # ParserError, ValueError on a bad cell, ...: let the slow path name the line

@@ -193,10 +193,24 @@ def _link_or_copy(src, dst) -> None:
         shutil.copy2(src, dst, follow_symlinks=False)
 
 
+@contextlib.contextmanager
+def _os_errors(dest, option: str):
+    """A failed write (read-only file system, disk full) is one line, exit 2."""
+    try:
+        yield
+    except OSError as exc:
+        raise InputError(str(dest), option, f"cannot write the outputs: {exc.strerror or exc}") from None
+
+
 def write_folder(dest: str | Path, files: Mapping[str, Content], inputs: Iterable = (), option: str = "--out") -> Path:
     """Write ``files`` ({relative name: text, bytes or a callable giving
     them}) as the folder ``dest``, swapped in at once (module docstring)."""
     dest = check_folder(dest, list(files), inputs, option)
+    with _os_errors(dest, option):
+        return _write_folder(dest, files, option)
+
+
+def _write_folder(dest: Path, files: Mapping[str, Content], option: str) -> Path:
     parent = dest.absolute().parent
     parent.mkdir(parents=True, exist_ok=True)
     tmp = Path(tempfile.mkdtemp(dir=parent, prefix=f".{dest.name}.new-"))
@@ -229,11 +243,17 @@ def write_files(files: Mapping, inputs: Iterable = (), option: str = "--out") ->
     """Write ``files`` ({path: content}) each over its path; all renames
     happen together with signals held back, undone if one fails."""
     paths = check_files(list(files), inputs, option)
+    with _os_errors(paths[0] if paths else "", option):
+        _write_files(paths, list(files.values()))
+    return paths
+
+
+def _write_files(paths: list[Path], contents: list) -> None:
     temps: dict[Path, Path] = {}
     backups: dict[Path, Path] = {}
     done: list[Path] = []
     try:
-        for path, content in zip(paths, files.values()):
+        for path, content in zip(paths, contents):
             path.parent.mkdir(parents=True, exist_ok=True)
             fd, name = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
             os.close(fd)
@@ -245,7 +265,8 @@ def write_files(files: Mapping, inputs: Iterable = (), option: str = "--out") ->
         with signals_deferred():
             try:
                 for path in paths:
-                    os.replace(temps.pop(path), path)
+                    os.replace(temps[path], path)
+                    del temps[path]
                     done.append(path)
             except BaseException:
                 for path in done:
@@ -257,7 +278,6 @@ def write_files(files: Mapping, inputs: Iterable = (), option: str = "--out") ->
     finally:
         for leftover in list(temps.values()) + list(backups.values()):
             leftover.unlink(missing_ok=True)
-    return paths
 
 
 def write_text(path: str | Path, text: str, inputs: Iterable = ()) -> None:

@@ -1,0 +1,200 @@
+"""Fuzz every command (issue 14): random mutations of valid example files.
+
+Each example copies small, valid inputs of one command into a fresh folder,
+mutates one file (a value replaced by a hostile one, a line deleted,
+duplicated or cut, a byte-order mark, CRLF, a separator swapped, the file
+emptied or turned into a symlink loop) and runs the command in-process.
+Every outcome must be exit 0, or exit 2 with one error line and no
+traceback, and on exit 2 nothing may be left behind (no output, no
+temporary file). Examples are few and derandomised (a fixed seed), so the
+whole file stays well under a minute.
+"""
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import tempfile
+from pathlib import Path
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings, strategies as st
+
+from sizing.physics.bouc_wen import BoucWen, free_displacement
+from sizing.sim.dc_motor import DCMotorModel, simulate
+
+from .conftest import CATALOGS, SEED_BOUC_WEN, STUDIES, run_cli
+
+HOSTILE_VALUES = [
+    '"1/0 mm"', '"40 (mm"', '"50 delta_degC"', '"50 %"', '"1e30 mm"', "1e300", "nan", "inf", "-1", "0",
+    "[]", "3", '"3"', '""', "true", '"1 ' + "(" * 200 + 'm"', '"1 m**2**2**2**2"', "{}", "[1, [2]]",
+    '"' + "x" * 1000 + '"', "-0.0", "1e-300", '"1e9 Hz"', '"1e9 s"', '"40 kg"', '"2026-13-45"',
+]
+HOSTILE_CELLS = ["1e300", "nan", "", '"1"', "abc", "1;2", "-1e9", "1e-300", ",,,", "0x10", "inf", '"', "1\t2"]
+
+FAST_REQ = """[requirements]
+stroke = "40 mm"
+blocked_force = "2.5 kN"
+speed = "100 mm/s"
+max_temperature = "100 degC"
+
+[load]
+force = ["1 kN"]
+
+[options]
+max_stacks = 2
+max_simulated = 2
+thermal_compensation = false
+dc_motors = false
+"""
+
+DC_RIG = """kind = "dc_motor"
+
+[motor]
+c1 = -25.5552
+c2 = 2987.02
+screw_lead = "2 mm"
+torque_constant = "0.05 N*m/A"
+
+[controller]
+rate = "1250 Hz"
+kp = 4000.0
+ki = 8000.0
+kd = 90.0
+derivative_on = "measurement"
+current_limit = "10 A"
+"""
+
+SHEET = (
+    "id,name,manufacturer,source,retrieved,stiffness [N/um],stroke_per_volt,max_voltage [V],stroke [um],"
+    "blocked_force [N],capacitance [uF],mass [g],length [mm],diameter [mm],section,max_temperature [degC],"
+    "cost_usd,status,status.cost_usd\n"
+    'pi-p-888.31,"PI P-888.31 PICMA Stack, 10 x 10 x 9 mm",Physik Instrumente (PI),'
+    '"PI datasheet P-882 - P-888, row P-888.31",2026-11-01,300,6.5e-8 m/V,100,6.5,1950,3.1,7,9,10,square,150,'
+    '250,datasheet,"assumed: list price not retrieved"\n'
+)
+
+
+def _csv(path: Path, header, columns) -> Path:
+    rows = [",".join(f"{v:.7g}" for v in row) for row in zip(*columns)]
+    path.write_text(",".join(header) + "\n" + "\n".join(rows) + "\n")
+    return path
+
+
+@pytest.fixture(scope="module")
+def base(tmp_path_factory) -> Path:
+    """Small valid inputs of every command, built once."""
+    root = tmp_path_factory.mktemp("fuzz-base")
+    (root / "req.toml").write_text(FAST_REQ)
+    (root / "dc.toml").write_text((STUDIES / "seed-dc-step.toml").read_text())
+    t = np.arange(0.0, 0.4, 1e-3)
+    v = 75.0 * (1 - np.cos(2 * np.pi * 5 * t))
+    _csv(root / "p.csv", ["time_s", "voltage_V", "position_m"], [t, v, free_displacement(t, v, BoucWen(**SEED_BOUC_WEN))])
+    camp = root / "camp"
+    (camp / "runs").mkdir(parents=True)
+    (camp / "rig.toml").write_text(DC_RIG)
+    model = DCMotorModel(c1=-25.5552, c2=2987.02, lead=0.002, kp=4000.0, ki=8000.0, kd=90.0,
+                         derivative_on_measurement=1.0, current_limit=10.0, torque_constant=0.05)
+    t = np.arange(0.0, 0.3, 1e-3)
+    for name, step in (("a", 0.004), ("b", 0.002)):
+        ref = np.where(t >= 0.02, step, 0.0)
+        _csv(camp / "runs" / f"{name}.csv", ["time_s", "reference_m", "position_m"],
+             [t, ref, simulate(model, t, ref)["position_m"][0]])
+    shutil.copytree(CATALOGS, root / "cat")
+    (root / "sheet.csv").write_text(SHEET)
+    return root
+
+
+# command: (arguments with {d} for the example's folder, files that may be mutated, output that must not linger)
+COMMANDS = {
+    "solve": (["solve", "{d}/req.toml", "--out", "{d}/out", "--quiet"], ["req.toml"], "out"),
+    "evaluate": (["evaluate", "{d}/dc.toml", "--json"], ["dc.toml"], None),
+    "fit-hysteresis": (["fit", "hysteresis", "{d}/p.csv", "--starts", "1", "--operators", "4", "--out", "{d}/fit.toml"],
+                       ["p.csv"], "fit.toml"),
+    "fit-dc-motor": (["fit", "dc-motor", "{d}/camp/runs/a.csv", "--rig", "{d}/camp/rig.toml", "--starts", "1",
+                      "--out", "{d}/motor.toml"], ["camp/runs/a.csv", "camp/rig.toml"], "motor.toml"),
+    "diagnose": (["diagnose", "{d}/camp", "--holdout", "b", "--out", "{d}/out"],
+                 ["camp/rig.toml", "camp/runs/a.csv", "camp/runs/b.csv"], "out"),
+    "catalog-validate": (["catalog", "validate", "{d}/cat"],
+                         ["cat/stacks.toml", "cat/seals.toml", "cat/dc_actuators.toml"], None),
+    "catalog-add": (["catalog", "add", "stack", "{d}/sheet.csv", "--catalog", "{d}/cat"], ["sheet.csv"], None),
+}
+EXAMPLES = {"diagnose": 4, "solve": 8}        # the slow ones get fewer
+
+
+def _lines(text: str) -> list[str]:
+    return text.splitlines(keepends=True)
+
+
+def mutate(path: Path, draw) -> None:
+    """Apply one drawn mutation to ``path`` in place."""
+    text = path.read_text(encoding="utf-8")
+    lines = _lines(text)
+    kind = draw(st.sampled_from(["value", "value", "value", "delete", "duplicate", "cut", "bom", "crlf",
+                                 "separator", "empty", "loop", "bytes"]))
+    i = draw(st.integers(0, max(len(lines) - 1, 0)))
+    if kind == "value" and path.suffix == ".toml":
+        keyed = [k for k, line in enumerate(lines) if re.match(r"\s*[\w.\"-]+\s*=", line)]
+        if keyed:
+            k = keyed[i % len(keyed)]
+            lines[k] = lines[k].split("=", 1)[0] + "= " + draw(st.sampled_from(HOSTILE_VALUES)) + "\n"
+    elif kind == "value":
+        cells = lines[i].rstrip("\r\n").split(",")
+        cells[draw(st.integers(0, len(cells) - 1))] = draw(st.sampled_from(HOSTILE_CELLS))
+        lines[i] = ",".join(cells) + "\n"
+    elif kind == "delete" and lines:
+        del lines[i]
+    elif kind == "duplicate" and lines:
+        lines.insert(i, lines[i])
+    elif kind == "cut":
+        text = text[:draw(st.integers(0, len(text)))]
+        lines = _lines(text)
+    elif kind == "bom":
+        lines = ["\ufeff"] + lines
+    elif kind == "crlf":
+        lines = [line.replace("\n", "\r\n") for line in lines]
+    elif kind == "separator" and lines:
+        lines[i] = lines[i].replace(",", draw(st.sampled_from([";", "\t", ", "])))
+    elif kind == "empty":
+        lines = []
+    elif kind == "loop":
+        path.unlink()
+        os.symlink(path, path)
+        return
+    elif kind == "bytes":
+        pos = draw(st.integers(0, len(text)))
+        path.write_bytes(text[:pos].encode() + draw(st.binary(min_size=1, max_size=8)) + text[pos:].encode())
+        return
+    path.write_text("".join(lines), encoding="utf-8", newline="")
+
+
+def check_outcome(code: int, err: str, folder: Path, output: str | None) -> None:
+    assert code in (0, 2), f"exit {code}: {err[-2000:]}"
+    assert "Traceback" not in err, err[-2000:]
+    if code == 2:
+        errors = [line for line in err.splitlines() if line.strip() and not line.startswith("warning:")]
+        assert len(errors) == 1 and errors[0].startswith("error: "), err[-2000:]
+        if output is not None:
+            assert not (folder / output).exists(), f"{output} left behind on exit 2: {errors[0]}"
+        assert not [p for p in folder.iterdir() if p.name.startswith(".")], "temporary files left behind"
+
+
+@pytest.mark.parametrize("command", sorted(COMMANDS))
+def test_fuzz_command(command, base):
+    args, targets, output = COMMANDS[command]
+
+    @settings(max_examples=EXAMPLES.get(command, 10), deadline=None, derandomize=True, database=None,
+              suppress_health_check=list(HealthCheck))
+    @given(data=st.data())
+    def run(data):
+        with tempfile.TemporaryDirectory() as tmp:
+            folder = Path(tmp)
+            for entry in base.iterdir():
+                (shutil.copytree if entry.is_dir() else shutil.copy)(entry, folder / entry.name)
+            target = folder / data.draw(st.sampled_from(targets))
+            mutate(target, data.draw)
+            code, _, err = run_cli(*[a.format(d=folder) for a in args])
+            check_outcome(code, err, folder, output)
+
+    run()

@@ -45,7 +45,8 @@ def piezo_rows(n=50):
 # --- the quantity parser ----------------------------------------------------
 
 @pytest.mark.parametrize("field, value, words", [
-    ("stroke", '"1/0 mm"', ["[requirements].stroke", "unknown unit"]),            # ZeroDivisionError in pint
+    ("stroke", '"1/0 mm"', ["[requirements].stroke", "unknown unit"]),
+    ("stroke", '"1 mm/0"', ["[requirements].stroke", "unknown unit"]),            # ZeroDivisionError in pint
     ("stroke", '"40 (mm"', ["[requirements].stroke", "unbalanced"]),               # TokenError in pint
     ("stroke", '"(40 mm"', ["[requirements].stroke", "number with a unit"]),
     ("max_temperature", '"50 delta_degC"', ["max_temperature", "relative"]),        # DimensionalityError

@@ -259,3 +259,11 @@ def test_evaluate_with_a_1e9_s_duration_is_refused(tmp_path):
 ])
 def test_numeric_options_are_checked(args, option):
     one_line_exit_2(*run_cli(*args)[::2], option)
+
+
+@pytest.mark.parametrize("value", ["[]", "{}", "3"])
+def test_technology_of_the_wrong_type(tmp_path, value):
+    # found by the fuzz test: technology = [] raised TypeError (unhashable)
+    design = tmp_path / "d.toml"
+    design.write_text(DC_DESIGN.replace('technology = "dc_motor"', f"technology = {value}"))
+    one_line_exit_2(*run_cli("evaluate", design)[::2], "d.toml", "technology")

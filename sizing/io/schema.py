@@ -130,7 +130,7 @@ def parse_tagged(path: str | Path, key: str, models: dict[str, type[M]]) -> M:
     (``technology`` of a design, ``kind`` of a rig)."""
     data = load_toml(path)
     tag = data.get(key)
-    if tag not in models:
+    if not isinstance(tag, str) or tag not in models:   # a list or table here is unhashable
         choices = " or ".join(f'"{name}"' for name in models)
         raise InputError(str(path), key, f"expected {choices}, got {tag!r}")
     return parse_model(models[tag], data, path)

@@ -24,7 +24,8 @@ from hypothesis import HealthCheck, given, settings, strategies as st
 from sizing.physics.bouc_wen import BoucWen, free_displacement
 from sizing.sim.dc_motor import DCMotorModel, simulate
 
-from .conftest import CATALOGS, SEED_BOUC_WEN, STUDIES, run_cli
+from .conftest import CATALOGS, FAST_REQUIREMENTS, SEED_BOUC_WEN, STUDIES, run_cli
+from .test_catalog_tracking import _SHEET as SHEET
 
 HOSTILE_VALUES = [
     '"1/0 mm"', '"1 mm/0"', '"40 (mm"', '"50 delta_degC"', '"50 %"', '"1e30 mm"', "1e300", "nan", "inf", "-1", "0",
@@ -32,48 +33,6 @@ HOSTILE_VALUES = [
     '"' + "x" * 1000 + '"', "-0.0", "1e-300", '"1e9 Hz"', '"1e9 s"', '"40 kg"', '"2026-13-45"',
 ]
 HOSTILE_CELLS = ["1e300", "nan", "", '"1"', "abc", "1;2", "-1e9", "1e-300", ",,,", "0x10", "inf", '"', "1\t2"]
-
-FAST_REQ = """[requirements]
-stroke = "40 mm"
-blocked_force = "2.5 kN"
-speed = "100 mm/s"
-max_temperature = "100 degC"
-
-[load]
-force = ["1 kN"]
-
-[options]
-max_stacks = 2
-max_simulated = 2
-thermal_compensation = false
-dc_motors = false
-"""
-
-DC_RIG = """kind = "dc_motor"
-
-[motor]
-c1 = -25.5552
-c2 = 2987.02
-screw_lead = "2 mm"
-torque_constant = "0.05 N*m/A"
-
-[controller]
-rate = "1250 Hz"
-kp = 4000.0
-ki = 8000.0
-kd = 90.0
-derivative_on = "measurement"
-current_limit = "10 A"
-"""
-
-SHEET = (
-    "id,name,manufacturer,source,retrieved,stiffness [N/um],stroke_per_volt,max_voltage [V],stroke [um],"
-    "blocked_force [N],capacitance [uF],mass [g],length [mm],diameter [mm],section,max_temperature [degC],"
-    "cost_usd,status,status.cost_usd\n"
-    'pi-p-888.31,"PI P-888.31 PICMA Stack, 10 x 10 x 9 mm",Physik Instrumente (PI),'
-    '"PI datasheet P-882 - P-888, row P-888.31",2026-11-01,300,6.5e-8 m/V,100,6.5,1950,3.1,7,9,10,square,150,'
-    '250,datasheet,"assumed: list price not retrieved"\n'
-)
 
 
 def _csv(path: Path, header, columns) -> Path:
@@ -86,14 +45,14 @@ def _csv(path: Path, header, columns) -> Path:
 def base(tmp_path_factory) -> Path:
     """Small valid inputs of every command, built once."""
     root = tmp_path_factory.mktemp("fuzz-base")
-    (root / "req.toml").write_text(FAST_REQ)
+    (root / "req.toml").write_text(FAST_REQUIREMENTS)
     (root / "dc.toml").write_text((STUDIES / "seed-dc-step.toml").read_text())
     t = np.arange(0.0, 0.4, 1e-3)
     v = 75.0 * (1 - np.cos(2 * np.pi * 5 * t))
     _csv(root / "p.csv", ["time_s", "voltage_V", "position_m"], [t, v, free_displacement(t, v, BoucWen(**SEED_BOUC_WEN))])
     camp = root / "camp"
     (camp / "runs").mkdir(parents=True)
-    (camp / "rig.toml").write_text(DC_RIG)
+    shutil.copy(STUDIES / "campaigns" / "dc-motor" / "rig.toml", camp / "rig.toml")
     model = DCMotorModel(c1=-25.5552, c2=2987.02, lead=0.002, kp=4000.0, ki=8000.0, kd=90.0,
                          derivative_on_measurement=1.0, current_limit=10.0, torque_constant=0.05)
     t = np.arange(0.0, 0.3, 1e-3)

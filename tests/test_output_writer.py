@@ -16,24 +16,7 @@ from sizing.errors import InputError
 from sizing.io import atomic
 from sizing.io.atomic import check_folder, write_files, write_folder
 
-from .conftest import STUDIES, run_cli
-
-FAST_REQ = """[requirements]
-stroke = "40 mm"
-blocked_force = "2.5 kN"
-speed = "100 mm/s"
-max_temperature = "100 degC"
-
-[load]
-force = ["1 kN"]
-
-[options]
-max_stacks = 2
-max_simulated = 2
-thermal_compensation = false
-dc_motors = false
-"""
-
+from .conftest import FAST_REQUIREMENTS as FAST_REQ, STUDIES, run_cli
 
 def leftovers(folder):
     """Temporary files or folders the writer would leave (names start with '.')."""

@@ -234,6 +234,18 @@ def test_dc_rig_at_1e9_hz_is_refused(tmp_path):
     assert not (tmp_path / "o").exists()
 
 
+def test_piezo_campaign_spanning_1e6_s_is_refused(tmp_path):
+    camp = tmp_path / "camp"
+    shutil.copytree(STUDIES / "campaigns" / "piezo-prototype", camp)
+    run = camp / "runs" / "ramp.csv"
+    lines = run.read_text().splitlines()
+    lines[-1] = "1e6," + lines[-1].split(",", 1)[1]      # the last sample a million seconds later
+    run.write_text("\n".join(lines) + "\n")
+    line = one_line_exit_2(*run_cli("diagnose", camp, "--holdout", "steps", "--out", tmp_path / "o")[::2],
+                           "runs", "time_s", "--max-steps")
+    assert "2e+10" in line       # 1e6 s x 20 kHz (by hand), plus the other run's seconds
+
+
 def test_evaluate_with_a_1e9_s_duration_is_refused(tmp_path):
     design = tmp_path / "d.toml"
     design.write_text(DC_DESIGN.replace('duration = "1 s"', 'duration = "1e9 s"'))

@@ -70,7 +70,7 @@ PLAUSIBLE: dict[str, tuple[float, float]] = {
 MAX_QUANTITY_CHARS = 100
 MAX_NESTING = 4
 MAX_EXPONENT = 12
-_UNIT_CHARS = re.compile(r"^[A-Za-z_%\u00b0\u00b5\u03bc\u2126\u03a90-9.*/^()\s-]*$")
+_UNIT_CHARS = re.compile(r"^[A-Za-z_%\u00b0\u00b2\u00b3\u00b5\u03bc\u2126\u03a90-9.*/^()\s-]*$")
 _EXPONENT = re.compile(r"(\*\*|\^)\s*")
 # Units that measure a difference or a fraction, never an absolute
 # temperature (pint gives "delta_degC" the dimension [temperature]).

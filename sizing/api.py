@@ -123,12 +123,11 @@ def _load_baseline(path: str | Path) -> dict:
     import json
 
     from .errors import InputError
+    from .io.schema import read_input_bytes
     path = Path(path)
     try:
-        data = json.loads(path.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise InputError(str(path), None, "file not found") from None
-    except (json.JSONDecodeError, UnicodeDecodeError, IsADirectoryError) as exc:
+        data = json.loads(read_input_bytes(path, "a results.json").decode("utf-8"))
+    except (json.JSONDecodeError, UnicodeDecodeError, RecursionError) as exc:
         raise InputError(str(path), None, f"expected a results.json written by sizing solve ({exc})") from None
     if not isinstance(data, dict) or not isinstance(data.get("candidates"), list):
         raise InputError(str(path), "candidates", "expected a results.json with a list of candidates")

@@ -375,6 +375,13 @@ def main(argv: Optional[List[str]] = None) -> None:
     except RecursionError:
         typer.echo("error: input nested too deeply", err=True)
         sys.exit(2)
+    except OSError as exc:
+        # a path the user gave that the system refuses (a loop, no permission)
+        # and that no reader turned into an InputError yet: still one line
+        if exc.filename is None:
+            raise
+        typer.echo(f"error: {exc.filename}: {exc.strerror or exc}", err=True)
+        sys.exit(2)
     finally:
         for sig, handler in previous.items():
             signal.signal(sig, handler)

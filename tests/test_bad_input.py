@@ -279,3 +279,17 @@ def test_technology_of_the_wrong_type(tmp_path, value):
     design = tmp_path / "d.toml"
     design.write_text(DC_DESIGN.replace('technology = "dc_motor"', f"technology = {value}"))
     one_line_exit_2(*run_cli("evaluate", design)[::2], "d.toml", "technology")
+
+
+@pytest.mark.parametrize("old, new, field", [
+    ("alpha = -2.23e-7", "alpha = 1e300", "alpha"),       # crashed diagnose (infs in least squares)
+    ("beta = 0.134", "beta = 1e12", "beta"),               # ran for minutes
+])
+def test_rig_coefficients_outside_their_bounds(tmp_path, old, new, field):
+    camp = tmp_path / "camp"
+    shutil.copytree(STUDIES / "campaigns" / "piezo-prototype", camp)
+    rig = camp / "rig.toml"
+    assert old in rig.read_text()
+    rig.write_text(rig.read_text().replace(old, new))
+    one_line_exit_2(*run_cli("diagnose", camp, "--holdout", "steps", "--out", tmp_path / "o")[::2],
+                    "rig.toml", field)

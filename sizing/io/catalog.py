@@ -15,10 +15,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Literal, Optional
 
-from pydantic import field_validator, model_validator
+from pydantic import Field, field_validator, model_validator
 
 from ..errors import InputError
-from .schema import Qty, Strict, load_toml, parse_model, read_input_bytes
+from .schema import BW_LINEAR, BW_SHAPE, GAIN, Qty, Strict, load_toml, parse_model, read_input_bytes
 
 DEFAULT_CATALOG = Path(__file__).resolve().parents[2] / "catalogs"
 ID_PATTERN = re.compile(r"^[a-z0-9][a-z0-9.\-]*$")
@@ -71,11 +71,11 @@ class Entry(Strict):
 
 class BoucWenTable(Strict):
     d33: Qty("strain_per_volt", positive=True)
-    alpha: float
-    beta: float
-    gamma: float
-    delta: float
-    n: float
+    alpha: BW_LINEAR
+    beta: BW_SHAPE
+    gamma: BW_SHAPE
+    delta: BW_LINEAR
+    n: float = Field(le=10.0, allow_inf_nan=False)   # assumed bound, as schema.BW_EXPONENT
 
     @field_validator("n")
     @classmethod
@@ -143,9 +143,9 @@ class Amplifier(Entry):
 
 class PIDTable(Strict):
     rate: Qty("frequency", positive=True)
-    kp: float
-    ki: float
-    kd: float
+    kp: GAIN
+    ki: GAIN
+    kd: GAIN
     derivative_on: Literal["error", "measurement"] = "error"
 
 

@@ -12,7 +12,7 @@ import tomllib
 from pathlib import Path
 from typing import Annotated, Any, TypeVar
 
-from pydantic import BaseModel, BeforeValidator, ConfigDict, ValidationError
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, ValidationError
 
 from ..errors import InputError
 from ..units import KINDS, UnitError, to_si
@@ -46,6 +46,22 @@ def _quantity_validator(kind: str, positive: bool, nonnegative: bool):
 def Qty(kind: str, *, positive: bool = False, nonnegative: bool = False):
     """Annotated float type for a quantity of ``kind`` (see ``units.KINDS``)."""
     return Annotated[float, BeforeValidator(_quantity_validator(kind, positive, nonnegative))]
+
+
+def Bounded(low: float, high: float):
+    """A plain model coefficient (no unit) that must lie in [low, high]:
+    outside it the simulations overflow or never finish (issue 14: a rig's
+    alpha = 1e300 crashed diagnose, beta = 1e12 ran for minutes)."""
+    return Annotated[float, Field(ge=low, le=high, allow_inf_nan=False)]
+
+
+# assumed: bounds wide around every published and fitted value (seed Table 1:
+# alpha -2.23e-7 m/V, beta 0.134, gamma 0.0755, delta -5.46e-8 m/V, n 1.14;
+# the shipped catalog's fits lie inside), narrow enough to integrate.
+BW_LINEAR = Bounded(-1e-3, 1e-3)      # alpha, delta: m/V
+BW_SHAPE = Bounded(-1e3, 1e3)         # beta, gamma
+BW_EXPONENT = Bounded(1e-6, 10.0)     # n (a shipped catalog fit has 0.0072)
+GAIN = Bounded(-1e9, 1e9)             # PID gains, SI
 
 
 def finite(value: float, name: str = "value") -> float:

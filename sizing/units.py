@@ -63,6 +63,10 @@ PLAUSIBLE: dict[str, tuple[float, float]] = {
     "dimensionless": (-1e12, 1e12), "temperature": (-273.15, 1e5),
 }
 
+# Smallest non-zero magnitude accepted, SI: "1e-300" as a stroke overflowed
+# the convex sizing (found by the fuzz test); 1e-24 m still solves.
+TINY = 1e-24
+
 # Input limits checked before pint sees a string: pint's parser is
 # quadratic in the length (100,000 characters took 99 s), recursive in the
 # nesting (RecursionError thousands deep) and evaluates exponent towers
@@ -182,6 +186,8 @@ def check_range(number: float, kind: str, given: object = None) -> float:
     if not math.isfinite(number):
         raise UnitError(f"expected a finite number, got {shown}")
     low, high = PLAUSIBLE.get(kind, DEFAULT_RANGE)
+    if number != 0.0 and abs(number) < TINY:
+        raise UnitError(f"expected 0 or a magnitude of at least {TINY:g} (SI), got {shown}")
     if kind == "temperature" and number < low:
         raise UnitError(f"expected a temperature above absolute zero ({low:g} degC), got {shown}")
     if not low <= number <= high:

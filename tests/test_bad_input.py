@@ -56,6 +56,7 @@ def piezo_rows(n=50):
     ("stroke", '"1 ' + "mm*" * 33_333 + 'mm"', ["at most 100 characters"]),        # 100,000 characters: 99 s
     ("stroke", '"1 m**2**2**2**2**2**2"', ["exponent"]),                            # never returned
     ("speed", "1e300", ["[requirements].speed", "between"]),
+    ("stroke", "1e-300", ["[requirements].stroke", "at least"]),                   # overflowed the convex sizing
 ])
 def test_hostile_quantities_exit_2_before_any_work(tmp_path, field, value, words):
     lines = [f"{field} = {value}" if line.startswith(f"{field} =") else line for line in REQ.splitlines()]

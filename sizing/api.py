@@ -18,6 +18,7 @@ def evaluate(design_path: str | Path, catalog_dir: str | Path | None = None) -> 
 
     design = load_design(design_path)
     cat = load_catalog(catalog_dir)
+    check_evaluate_steps(design, cat, str(design_path))
     if isinstance(design, PiezoDesignFile):
         result = evaluate_piezo(design, cat, str(design_path))
     else:
@@ -45,13 +46,17 @@ def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-ou
     import json
 
     from .engine.solve import solve as run
-    from .io.atomic import write_many
+    from .io.atomic import check_folder, write_folder
     from .io.requirements import load_requirements
     from .report.csv_table import candidates_csv
     from .report.html import render
 
+    inputs = [requirements_path, catalog_dir, baseline]
+    if out_dir is not None:
+        check_folder(out_dir, SOLVE_OUTPUTS, inputs=inputs)
     req, sha = load_requirements(requirements_path)
     cat = load_catalog(catalog_dir)
+    check_solve_steps(req, cat, str(requirements_path))
     old = _load_baseline(baseline) if baseline is not None else None
     output = run(req, sha, cat, progress=progress)
     results = output.results
@@ -60,33 +65,72 @@ def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-ou
         results["changes"] = _rank_changes(old, results, baseline, cat.folder)
         results["baseline_sha256"] = old.get("requirements_sha256")
     if out_dir is not None:
-        out = Path(out_dir)
-        files = {out / "results.json": json.dumps(results, indent=1, allow_nan=False) + "\n",
-                 out / "candidates.csv": candidates_csv(results),
-                 out / "report.html": render(results, output.traces)}
+        files = {"results.json": json.dumps(results, indent=1, allow_nan=False) + "\n",
+                 "candidates.csv": candidates_csv(results),
+                 "report.html": render(results, output.traces)}
         # the catalog these results rest on, so a later --baseline can diff it
-        files.update(_catalog_snapshot(cat.folder, out))
-        write_many(files)
+        files.update(_catalog_snapshot(cat.folder))
+        write_folder(out_dir, files, inputs=inputs)
     return results
 
 
-def _catalog_snapshot(folder: Path, out: Path) -> dict[Path, str]:
+# What ``solve --out DIR`` holds (check_folder needs it before any work).
+SOLVE_OUTPUTS = ("results.json", "candidates.csv", "report.html", "catalog/")
+ROBUST_OUTPUTS = ("robust.json", "robust.html")
+SWEEP_OUTPUTS = ("sweep.json", "sweep.html")
+
+
+def _catalog_snapshot(folder: Path) -> dict[str, bytes]:
     from .io.catalog import KINDS
     from .io.catalog_diff import SNAPSHOT_DIR
-    return {out / SNAPSHOT_DIR / name: (folder / name).read_text(encoding="utf-8")
+    from .io.schema import read_input_bytes
+    return {f"{SNAPSHOT_DIR}/{name}": read_input_bytes(folder / name)
             for name in KINDS if (folder / name).exists()}
+
+
+def _n_loads(load) -> int:
+    return len(load.force) if load.force is not None else len(load.dynamic_pressure)
+
+
+def check_evaluate_steps(design, cat: Catalog, file: str) -> None:
+    """Refuse (exit 2) a design whose simulation would need more steps than
+    the limit (``sizing.limits``): duration x rate x load cases."""
+    from .engine.dc import OUTPUT_RATE_HZ
+    from .engine.verify import SETTLE_TIME_S
+    from .limits import check_steps, dc_steps, piezo_steps
+    if isinstance(design, PiezoDesignFile):
+        check_steps(piezo_steps(design.rise_time + SETTLE_TIME_S, _n_loads(design.load)), file, "rise_time",
+                    "simulation steps (rise time x 20 kHz x load cases)")
+    elif design.actuator in cat.dc_actuators:
+        rate = cat.dc_actuators[design.actuator].pid.rate
+        check_steps(dc_steps(design.duration, rate, _n_loads(design.load), OUTPUT_RATE_HZ), file, "duration",
+                    f"simulation steps (duration x {max(rate, OUTPUT_RATE_HZ):g} Hz x load cases)")
+
+
+def check_solve_steps(req, cat: Catalog, file: str) -> None:
+    """Refuse (exit 2) requirements whose verification would need more
+    steps than the limit: simulated candidates x load cases x stroke time."""
+    from .engine.dc import OUTPUT_RATE_HZ
+    from .engine.dc_candidates import dc_duration
+    from .engine.verify import SETTLE_TIME_S
+    from .limits import check_steps, dc_steps, piezo_steps
+    n = _n_loads(req.load)
+    steps = piezo_steps(req.stroke_time + SETTLE_TIME_S, n * req.options.max_simulated)
+    if req.options.dc_motors:
+        steps += sum(dc_steps(dc_duration(req), act.pid.rate, n, OUTPUT_RATE_HZ) for act in cat.dc_actuators.values())
+    check_steps(steps, file, "[requirements].stroke",
+                "simulation steps (candidates x load cases x stroke / speed)")
 
 
 def _load_baseline(path: str | Path) -> dict:
     import json
 
     from .errors import InputError
+    from .io.schema import read_input_bytes
     path = Path(path)
     try:
-        data = json.loads(path.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise InputError(str(path), None, "file not found") from None
-    except (json.JSONDecodeError, UnicodeDecodeError, IsADirectoryError) as exc:
+        data = json.loads(read_input_bytes(path, "a results.json").decode("utf-8"))
+    except (json.JSONDecodeError, UnicodeDecodeError, RecursionError) as exc:
         raise InputError(str(path), None, f"expected a results.json written by sizing solve ({exc})") from None
     if not isinstance(data, dict) or not isinstance(data.get("candidates"), list):
         raise InputError(str(path), "candidates", "expected a results.json with a list of candidates")
@@ -112,20 +156,24 @@ def diagnose(campaign_dir: str | Path, holdout: list[str], out_dir: str | Path |
     import json
 
     from .diagnose.diagnosis import diagnose_runs
-    from .io.atomic import write_many
+    from .io.atomic import check_folder, write_folder
     from .io.campaign import campaign_split, load_campaign
 
+    if out_dir is not None:
+        check_folder(out_dir, DIAGNOSE_OUTPUTS, inputs=[campaign_dir])
     campaign = load_campaign(campaign_dir)
     campaign_split(campaign, holdout)
     result = diagnose_runs(campaign.kind, campaign.rig, campaign.runs, list(holdout), recalibrate=recalibrate,
                            seed=seed)
     if out_dir is not None:
         from .report.diagnose_html import render
-        out = Path(out_dir)
-        files = {out / "diagnosis.json": json.dumps(result.to_json(), indent=2),
-                 out / "diagnosis.html": render(result, f"Sim-to-real gap: {Path(campaign_dir).name}")}
-        write_many(files)
+        files = {"diagnosis.json": json.dumps(result.to_json(), indent=2),
+                 "diagnosis.html": render(result, f"Sim-to-real gap: {Path(campaign_dir).name}")}
+        write_folder(out_dir, files, inputs=[campaign_dir])
     return result
+
+
+DIAGNOSE_OUTPUTS = ("diagnosis.json", "diagnosis.html")
 
 
 def diagnose_check(campaign_dir: str | Path, holdout: list[str] | None = None, seed: int = 0, progress=None):
@@ -181,9 +229,12 @@ def robust(requirements_path: str | Path, out_dir: str | Path | None = "robust-o
     import json
 
     from .errors import InputError
-    from .io.atomic import write_many
+    from .io.atomic import check_folder, write_folder
     from .io.requirements import load_requirements
 
+    inputs = [requirements_path, catalog_dir, bouc_wen_fit]
+    if out_dir is not None:
+        check_folder(out_dir, ROBUST_OUTPUTS, inputs=inputs)
     if samples < 1:
         raise InputError(None, "--samples", f"expected at least 1 sample, got {samples}")
     if designs < 1:
@@ -207,9 +258,8 @@ def robust(requirements_path: str | Path, out_dir: str | Path | None = "robust-o
     data["catalog_sha256"] = cat.sha256
     if out_dir is not None:
         from .report.robust_html import render
-        out = Path(out_dir)
-        write_many({out / "robust.json": json.dumps(data, indent=1, allow_nan=False) + "\n",
-                    out / "robust.html": render(data)})
+        write_folder(out_dir, {"robust.json": json.dumps(data, indent=1, allow_nan=False) + "\n",
+                               "robust.html": render(data)}, inputs=inputs)
     return data
 
 
@@ -219,10 +269,13 @@ def sweep(requirements_path: str | Path, vary: list[str], out_dir: str | Path | 
     each); writes sweep.json and sweep.html into ``out_dir`` when given."""
     import json
 
-    from .io.atomic import write_many
+    from .io.atomic import check_folder, write_folder
     from .io.schema import load_toml
     from .studies.sweep import sweep as run_sweep
 
+    inputs = [requirements_path, catalog_dir]
+    if out_dir is not None:
+        check_folder(out_dir, SWEEP_OUTPUTS, inputs=inputs)
     data = load_toml(requirements_path)
     cat = load_catalog(catalog_dir)
     from .studies.sweep import parse_vary
@@ -233,7 +286,6 @@ def sweep(requirements_path: str | Path, vary: list[str], out_dir: str | Path | 
                            progress=(lambda d, t: progress("solving", d, t)) if progress else None)
     if out_dir is not None:
         from .report.sweep_html import render
-        out = Path(out_dir)
-        write_many({out / "sweep.json": json.dumps(result, indent=1, allow_nan=False) + "\n",
-                    out / "sweep.html": render(result)})
+        write_folder(out_dir, {"sweep.json": json.dumps(result, indent=1, allow_nan=False) + "\n",
+                               "sweep.html": render(result)}, inputs=inputs)
     return result

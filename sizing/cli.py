@@ -1,8 +1,14 @@
 """Command line: parse, call ``sizing.api``, print. InputError -> exit 2 with
-one line on stderr; any other exception is a bug -> traceback, exit 1."""
+one line on stderr; any other exception is a bug -> traceback, exit 1.
+SIGINT exits 130 and SIGTERM 143, with one line (outputs are written by
+``io.atomic``, so they are either complete or untouched). Every numeric
+option is checked here (``number_option``): finite, in range, an integer
+where it counts something."""
 from __future__ import annotations
 
 import json
+import math
+import signal
 import sys
 from pathlib import Path
 from typing import List, Optional
@@ -11,6 +17,7 @@ import typer
 
 from . import __version__, api
 from .errors import FitError, InputError
+from .limits import use_limits
 
 app = typer.Typer(help="Size smart-material actuators for glide-body control surfaces, "
                        "fit their models to test data and diagnose the sim-to-real gap.",
@@ -21,6 +28,36 @@ app.add_typer(catalog_app, name="catalog")
 app.add_typer(fit_app, name="fit")
 
 CatalogOpt = typer.Option(None, "--catalog", help="Catalog folder (default: the catalogs/ that ships with sizing).")
+
+
+def _in_range(name: str, low: float | None, high: float | None, integer: bool):
+    """A typer callback: the option's value must be finite and within
+    [low, high] (None: unbounded); exit 2 with one line otherwise."""
+    def check(value):
+        if value is None:
+            return value
+        bounds = (f" between {low:g} and {high:g}" if low is not None and high is not None
+                  else f" >= {low:g}" if low is not None else f" <= {high:g}" if high is not None else "")
+        word = "an integer" if integer else "a finite number"
+        if isinstance(value, float) and not math.isfinite(value) or \
+                (low is not None and value < low) or (high is not None and value > high):
+            raise typer.BadParameter(f"expected {word}{bounds}, got {value!r}", param_hint=name)
+        return value
+    return check
+
+
+def number_option(default, name: str, help: str, low: float | None = None, high: float | None = None):
+    """A numeric option checked by ``_in_range`` (int default: a count or a
+    seed, float default: a finite value). For other commands to reuse."""
+    integer = isinstance(default, int) and not isinstance(default, bool)
+    return typer.Option(default, name, help=help, callback=_in_range(name, low, high, integer))
+
+
+SEED_MAX = 2**32 - 1
+MaxSamplesOpt = number_option(None, "--max-samples", "Raise the limit on measured samples read from run CSVs "
+                              "(default 1,000,000, about 3 GB while fitting).", low=1)
+MaxStepsOpt = number_option(None, "--max-steps", "Raise the limit on simulation steps of one pass "
+                            "(default 1e8, about a minute).", low=1)
 
 
 def _version(value: bool):
@@ -51,9 +88,11 @@ def _jsonable(value):
 @app.command()
 def evaluate(design: Path = typer.Argument(..., help="design.toml (CONTRACTS.md)."),
              json_out: bool = typer.Option(False, "--json", help="Print one JSON object instead of a summary."),
-             catalog: Optional[Path] = CatalogOpt):
+             catalog: Optional[Path] = CatalogOpt,
+             max_steps: Optional[float] = MaxStepsOpt):
     """Static and simulated figures of one design."""
-    result = api.evaluate(design, catalog)
+    with use_limits(steps=max_steps):
+        result = api.evaluate(design, catalog)
     for warning in result["warnings"]:
         typer.echo(f"warning: {design}: {warning}", err=True)
     if json_out:
@@ -68,10 +107,24 @@ def solve(requirements: Path = typer.Argument(..., help="requirements.toml (CONT
           out: Path = typer.Option(Path("sizing-out"), "--out", help="Folder for results.json, candidates.csv and report.html."),
           catalog: Optional[Path] = CatalogOpt,
           baseline: Optional[Path] = typer.Option(None, "--baseline", help="An earlier results.json: report what changed."),
-          quiet: bool = typer.Option(False, "--quiet", help="No progress bar and no summary.")):
+          quiet: bool = typer.Option(False, "--quiet", help="No progress bar and no summary."),
+          max_steps: Optional[float] = MaxStepsOpt):
     """Size, verify by simulation and rank every design for the requirements."""
+    with use_limits(steps=max_steps):
+        results = _solve(requirements, out, catalog, baseline, quiet)
+    if not quiet:
+        for group in results["summary"]["groups"]:
+            typer.echo(f"{group['label']}: {group['text']}")
+        typer.echo(results["summary"]["thermal"])
+        if results["summary"].get("comparison", {}).get("text"):
+            typer.echo(results["summary"]["comparison"]["text"])
+        typer.echo(f"{out}/report.html, results.json, candidates.csv written "
+                   f"({results['runtime_s']:.1f} s)")
+
+
+def _solve(requirements, out, catalog, baseline, quiet) -> dict:
     if quiet:
-        results = api.solve(requirements, out, catalog, baseline)
+        return api.solve(requirements, out, catalog, baseline)
     else:
         from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
         with Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
@@ -83,15 +136,7 @@ def solve(requirements: Path = typer.Argument(..., help="requirements.toml (CONT
                     tasks[stage] = bar.add_task(f"{stage} candidates", total=total)
                 bar.update(tasks[stage], completed=done, total=total)
 
-            results = api.solve(requirements, out, catalog, baseline, progress=progress)
-    if not quiet:
-        for group in results["summary"]["groups"]:
-            typer.echo(f"{group['label']}: {group['text']}")
-        typer.echo(results["summary"]["thermal"])
-        if results["summary"].get("comparison", {}).get("text"):
-            typer.echo(results["summary"]["comparison"]["text"])
-        typer.echo(f"{out}/report.html, results.json, candidates.csv written "
-                   f"({results['runtime_s']:.1f} s)")
+            return api.solve(requirements, out, catalog, baseline, progress=progress)
 
 
 @catalog_app.command("list")
@@ -121,7 +166,7 @@ def catalog_show(entry_id: str = typer.Argument(..., help="Catalog id, e.g. pi-p
 
 @catalog_app.command("validate")
 def catalog_validate(folder: Optional[Path] = typer.Argument(None, help="Catalog folder to check (default: the shipped one)."),
-                     max_age_days: int = typer.Option(730, "--max-age-days", help="Flag entries retrieved longer ago than this."),
+                     max_age_days: int = number_option(730, "--max-age-days", "Flag entries retrieved longer ago than this.", low=0, high=100_000),
                      catalog: Optional[Path] = CatalogOpt):
     """Check schema, units, ids and physical plausibility; exit 2 on errors."""
     from .io.validate import validate_catalog
@@ -163,8 +208,15 @@ def diagnose(campaign: Path = typer.Argument(..., help="Campaign folder: rig.tom
              recalibrate: Optional[List[str]] = typer.Option(None, "--recalibrate", help="Re-fit this nominal parameter on the training runs first, and jointly with every effect (piezo: d33, wide_friction, narrow_friction; DC: c1, c2); repeatable. Default: d33 (piezo), c1 and c2 (DC)."),
              no_recalibrate: bool = typer.Option(False, "--no-recalibrate", help="Judge the effects against the stated nominal, without re-calibration."),
              check: bool = typer.Option(False, "--check", help="Inject each library effect into the campaign's own excitations, diagnose blind and print the confusion matrix."),
-             seed: int = typer.Option(0, "--seed", help="Seed of the screening and of --check's noise.")):
+             seed: int = number_option(0, "--seed", "Seed of the screening and of --check's noise.", low=0, high=SEED_MAX),
+             max_samples: Optional[int] = MaxSamplesOpt,
+             max_steps: Optional[float] = MaxStepsOpt):
     """Say where the model and the hardware disagree, which unmodelled effect explains it, and how far the gap shrinks."""
+    with use_limits(samples=max_samples, steps=max_steps):
+        _diagnose(campaign, holdout, out, recalibrate, no_recalibrate, check, seed)
+
+
+def _diagnose(campaign, holdout, out, recalibrate, no_recalibrate, check, seed) -> None:
     if check:
         def progress(case):
             typer.echo(f"  {case.truth:>22} size {case.size} -> {case.predicted} ({case.seconds:.1f} s)", err=True)
@@ -229,22 +281,24 @@ def fit_hysteresis(data: List[Path] = typer.Argument(..., help="Run CSVs (time_s
                    out: Optional[Path] = typer.Option(None, "--out", help="TOML file to write (tables stack, stack.bouc_wen and fit); the HTML report goes beside it (OUT.html). Default: print the TOML."),
                    model: str = typer.Option("auto", "--model", help="Model the TOML carries: auto (the one with the lower holdout NRMSE), bouc-wen or prandtl-ishlinskii (both are always fitted and compared)."),
                    report: Optional[Path] = typer.Option(None, "--report", help="HTML report path (default: OUT with .html; none without --out)."),
-                   cutoff_hz: Optional[float] = typer.Option(None, "--cutoff-hz", help="Low-pass cut-off of the measured voltage, Hz (default: per run from its sample rate and excitation, at most a quarter of Nyquist; 0: no filter)."),
+                   cutoff_hz: Optional[float] = number_option(None, "--cutoff-hz", "Low-pass cut-off of the measured voltage, Hz (default: per run from its sample rate and excitation, at most a quarter of Nyquist; 0: no filter).", low=0, high=1e6),
                    offset: bool = typer.Option(True, "--offset/--no-offset", help="Fit a constant sensor offset per run (default) beside each run's initial hysteresis state."),
-                   starts: int = typer.Option(4, "--starts", help="Starting points refined by least squares (best of a seeded random screen)."),
-                   operators: int = typer.Option(16, "--operators", help="Play operators of the Prandtl-Ishlinskii model."),
-                   seed: int = typer.Option(0, "--seed", help="Seed of the random starting points."),
+                   starts: int = number_option(4, "--starts", "Starting points refined by least squares (best of a seeded random screen).", low=1, high=1000),
+                   operators: int = number_option(16, "--operators", "Play operators of the Prandtl-Ishlinskii model.", low=1, high=1000),
+                   seed: int = number_option(0, "--seed", "Seed of the random starting points.", low=0, high=SEED_MAX),
                    prior_stack: Optional[str] = typer.Option(None, "--prior-stack", help="Catalog stack id whose datasheet (and Bouc-Wen values, if any) regularise the parameters the data leave free. Default: the seed's Table 1 loop rescaled to the record."),
-                   prior_sigma: float = typer.Option(0.5, "--prior-sigma", help="Relative 1-sigma of the prior on each dimensionless Bouc-Wen group."),
+                   prior_sigma: float = number_option(0.5, "--prior-sigma", "Relative 1-sigma of the prior on each dimensionless Bouc-Wen group.", low=1e-6, high=1e6),
                    catalog_entry: Optional[str] = typer.Option(None, "--catalog-entry", help="Also write ID.toml and ID.csv beside --out: a stack catalog entry (for a stacks.toml, or for sizing catalog add stack ID.csv) with the fitted Bouc-Wen values under status measured."),
-                   catalog: Optional[Path] = CatalogOpt):
+                   catalog: Optional[Path] = CatalogOpt,
+                   max_samples: Optional[int] = MaxSamplesOpt):
     """Fit the seed's Bouc-Wen model (d33, alpha, beta, gamma, delta, n) and a Prandtl-Ishlinskii model to voltage/displacement runs."""
     progress = _LazyProgress("fit hysteresis")
     try:
-        result = api.fit_hysteresis(data, holdout, model=model, out=out, report=report, cutoff_hz=cutoff_hz,
-                                    fit_offset=offset, n_starts=starts, n_operators=operators, seed=seed,
-                                    prior_stack=prior_stack, prior_sigma=prior_sigma, catalog_entry=catalog_entry,
-                                    catalog=catalog, progress=progress)
+        with use_limits(samples=max_samples):
+            result = api.fit_hysteresis(data, holdout, model=model, out=out, report=report, cutoff_hz=cutoff_hz,
+                                        fit_offset=offset, n_starts=starts, n_operators=operators, seed=seed,
+                                        prior_stack=prior_stack, prior_sigma=prior_sigma,
+                                        catalog_entry=catalog_entry, catalog=catalog, progress=progress)
     finally:
         progress.close()
     _fit_output(result, out)
@@ -257,13 +311,16 @@ def fit_dc_motor(data: List[Path] = typer.Argument(..., help="Run CSVs (time_s,r
                  out: Optional[Path] = typer.Option(None, "--out", help="TOML file to write ([motor], [fit]); the HTML report goes beside it. Default: print the TOML."),
                  report: Optional[Path] = typer.Option(None, "--report", help="HTML report path (default: OUT with .html; none without --out)."),
                  gains: bool = typer.Option(False, "--gains", help="Also fit the rig's nonzero PID gains (kp, ki, kd)."),
-                 starts: int = typer.Option(3, "--starts", help="Starting points refined by least squares."),
-                 seed: int = typer.Option(0, "--seed", help="Seed of the random starting points.")):
+                 starts: int = number_option(3, "--starts", "Starting points refined by least squares.", low=1, high=1000),
+                 seed: int = number_option(0, "--seed", "Seed of the random starting points.", low=0, high=SEED_MAX),
+                 max_samples: Optional[int] = MaxSamplesOpt,
+                 max_steps: Optional[float] = MaxStepsOpt):
     """Identify c1, c2 of the seed's eq. 13-14 (optionally the PID gains) through the rig's closed loop."""
     progress = _LazyProgress("fit dc-motor")
     try:
-        result = api.fit_dc_motor(data, rig, holdout, out=out, report=report, fit_gains=gains,
-                                  n_starts=starts, seed=seed, progress=progress)
+        with use_limits(samples=max_samples, steps=max_steps):
+            result = api.fit_dc_motor(data, rig, holdout, out=out, report=report, fit_gains=gains,
+                                      n_starts=starts, seed=seed, progress=progress)
     finally:
         progress.close()
     _fit_output(result, out)
@@ -314,15 +371,15 @@ def _run_study(fn, quiet: bool, workers: Optional[int], *args, **kwargs):
 
 SchedulerOpt = typer.Option(None, "--scheduler", help="Address of a running Dask scheduler (tcp://HOST:8786). "
                                                       "Default: a local cluster of --workers processes.")
-WorkersOpt = typer.Option(None, "--workers", help="Worker processes of the local Dask cluster "
-                                                  "(default: the number of cores, at most 4; 0: run serially here).")
+WorkersOpt = number_option(None, "--workers", "Worker processes of the local Dask cluster "
+                                               "(default: the number of cores, at most 4; 0: run serially here).", low=0, high=256)
 
 
 @app.command()
 def robust(requirements: Path = typer.Argument(..., help="requirements.toml (CONTRACTS.md), with an optional [tolerances] table."),
-           samples: int = typer.Option(1000, "--samples", help="Monte Carlo samples per design (>= 1)."),
-           seed: int = typer.Option(0, "--seed", help="Random seed; the same seed gives the same numbers wherever the work runs."),
-           designs: int = typer.Option(10, "--designs", help="How many of the best designs of sizing solve to study."),
+           samples: int = number_option(1000, "--samples", "Monte Carlo samples per design (>= 1).", low=1, high=10**7),
+           seed: int = number_option(0, "--seed", "Random seed; the same seed gives the same numbers wherever the work runs.", low=0, high=SEED_MAX),
+           designs: int = number_option(10, "--designs", "How many of the best designs of sizing solve to study.", low=1, high=10**4),
            out: Path = typer.Option(Path("robust-out"), "--out", help="Folder for robust.json and robust.html."),
            scheduler: Optional[str] = SchedulerOpt, workers: Optional[int] = WorkersOpt,
            catalog: Optional[Path] = CatalogOpt,
@@ -357,27 +414,75 @@ def sweep(requirements: Path = typer.Argument(..., help="requirements.toml (CONT
         typer.echo(f"{out}/sweep.json, sweep.html written ({data['where']})")
 
 
-def main() -> None:
-    """Console entry point: maps errors to exit codes."""
+class Interrupted(BaseException):
+    """SIGINT or SIGTERM arrived. A BaseException, so no ``except Exception``
+    swallows it, while every ``finally`` (temporary outputs) still runs."""
+
+    def __init__(self, signum: int):
+        super().__init__(signum)
+        self.signum = signum
+
+
+def _interrupt(signum, frame):
+    raise Interrupted(signum)
+
+
+def _handle_signals() -> dict:
+    """SIGINT and SIGTERM raise Interrupted (main thread only); returns the
+    previous handlers."""
+    import threading
+    if threading.current_thread() is not threading.main_thread():
+        return {}
+    return {sig: signal.signal(sig, _interrupt) for sig in (signal.SIGINT, signal.SIGTERM)}
+
+
+def _one_line(text: str) -> str:
+    return " ".join(str(text).split())
+
+
+def main(argv: Optional[List[str]] = None) -> None:
+    """Console entry point: maps errors to exit codes (CONTRACTS.md): 0 done,
+    2 bad input (one line), 130 SIGINT, 143 SIGTERM, 1 a bug (traceback)."""
+    from typer._click.exceptions import ClickException   # typer bundles its own click
+
+    previous = _handle_signals()
     try:
-        app(standalone_mode=False)
+        code = app(args=argv, standalone_mode=False, prog_name="sizing")
+    except Interrupted as exc:
+        typer.echo(f"error: interrupted by {signal.Signals(exc.signum).name}; outputs are complete or untouched", err=True)
+        sys.exit(128 + exc.signum)
     except (InputError, FitError) as exc:
-        typer.echo(f"error: {exc}", err=True)
+        typer.echo(f"error: {_one_line(exc)}", err=True)
         sys.exit(2)
     except typer.Exit as exc:
         sys.exit(exc.exit_code)
     except typer.Abort:
-        typer.echo("aborted", err=True)
-        sys.exit(1)
+        # click turns a KeyboardInterrupt it sees into Abort
+        typer.echo("error: interrupted by SIGINT", err=True)
+        sys.exit(130)
+    except ClickException as exc:
+        # usage errors of typer's bundled click (bad option, missing argument,
+        # an option value out of range): one line, exit 2
+        where = f"{exc.ctx.command_path}: " if getattr(exc, "ctx", None) is not None else ""
+        typer.echo(f"error: {where}{_one_line(exc.format_message())}", err=True)
+        sys.exit(exc.exit_code)
     except SystemExit:
         raise
-    except Exception as exc:
-        # usage errors of typer's bundled click (bad option, missing
-        # argument) carry their own message and exit code 2
-        if hasattr(exc, "show") and hasattr(exc, "exit_code"):
-            exc.show()
-            sys.exit(exc.exit_code)
-        raise
+    except RecursionError:
+        typer.echo("error: input nested too deeply", err=True)
+        sys.exit(2)
+    except OSError as exc:
+        # a path the user gave that the system refuses (a loop, no permission)
+        # and that no reader turned into an InputError yet: still one line
+        if exc.filename is None:
+            raise
+        typer.echo(f"error: {exc.filename}: {exc.strerror or exc}", err=True)
+        sys.exit(2)
+    finally:
+        for sig, handler in previous.items():
+            signal.signal(sig, handler)
+    if isinstance(code, int) and code:
+        sys.exit(code)
 
 
 if __name__ == "__main__":

@@ -56,6 +56,41 @@ KINDS: dict[str, tuple[str, str]] = {
     "temperature": ("degC", "a temperature"),
 }
 
+# Broad plausibility range of each kind, SI (temperatures in degC):
+# (low, high) inclusive, on the value itself. Far wider than any real part
+# (catalog validate's per-field RANGES lie inside them, tests/test_bad_input.py
+# checks it); they stop "1e30 mm" or 1e300 before a model allocates or
+# overflows on it. A kind missing here gets DEFAULT_RANGE.
+DEFAULT_RANGE = (-1e15, 1e15)
+PLAUSIBLE: dict[str, tuple[float, float]] = {
+    "length": (-1e6, 1e6), "area": (-1e6, 1e6), "volume": (-1e6, 1e6),
+    "force": (-1e12, 1e12), "stiffness": (-1e15, 1e15), "pressure": (-1e12, 1e12),
+    "voltage": (-1e7, 1e7), "current": (-1e6, 1e6), "capacitance": (-1e3, 1e3),
+    "mass": (-1e9, 1e9), "time": (-1e9, 1e9), "frequency": (-1e12, 1e12), "speed": (-1e5, 1e5),
+    "slew": (-1e15, 1e15), "density": (-1e6, 1e6), "kinematic_viscosity": (-1e3, 1e3),
+    "per_kelvin": (-1e3, 1e3), "strain_per_volt": (-0.1, 0.1), "torque_constant": (-1e4, 1e4),
+    "friction_per_length": (-1e12, 1e12), "friction_per_length_pressure": (-1e3, 1e3),
+    "power": (-1e12, 1e12), "damping": (-1e15, 1e15), "conductance": (-1e3, 1e3),
+    "dimensionless": (-1e12, 1e12), "temperature": (-273.15, 1e5),
+}
+
+# Smallest non-zero magnitude accepted, SI: "1e-300" as a stroke overflowed
+# the convex sizing (found by the fuzz test); 1e-24 m still solves.
+TINY = 1e-24
+
+# Input limits checked before pint sees a string: pint's parser is
+# quadratic in the length (100,000 characters took 99 s), recursive in the
+# nesting (RecursionError thousands deep) and evaluates exponent towers
+# (m**2**2**2**2**2**2 never returns).
+MAX_QUANTITY_CHARS = 100
+MAX_NESTING = 4
+MAX_EXPONENT = 12
+_UNIT_CHARS = re.compile(r"^[A-Za-z_%\u00b0\u00b2\u00b3\u00b5\u03bc\u2126\u03a90-9.*/^()\s-]*$")
+_EXPONENT = re.compile(r"(\*\*|\^)\s*")
+# Units that measure a difference or a fraction, never an absolute
+# temperature (pint gives "delta_degC" the dimension [temperature]).
+_RELATIVE_TEMPERATURE = re.compile(r"delta|%|percent|ppm|permille", re.IGNORECASE)
+
 _NUMBER_UNIT = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 
 
@@ -63,43 +98,111 @@ class UnitError(ValueError):
     """A value that is not a quantity of the expected kind."""
 
 
+def _shown(text: str) -> str:
+    """``text`` for a one-line message: at most 40 characters, no newline."""
+    one_line = " ".join(text.split())
+    return one_line if len(one_line) <= 40 else one_line[:37] + "..."
+
+
+def _check_unit_syntax(unit: str, text: str) -> None:
+    """Reject unit expressions pint would choke on, before it sees them."""
+    if not _UNIT_CHARS.match(unit):
+        raise UnitError(f'unknown unit "{_shown(unit)}" in "{_shown(text)}"')
+    depth = 0
+    for char in unit:
+        depth += char == "("
+        depth -= char == ")"
+        if depth < 0 or depth > MAX_NESTING:
+            break
+    if depth != 0:
+        why = "unbalanced parentheses" if depth <= MAX_NESTING else f"nested deeper than {MAX_NESTING}"
+        raise UnitError(f'bad unit "{_shown(unit)}" in "{_shown(text)}": {why}')
+    for match in _EXPONENT.finditer(unit):
+        tail = unit[match.end():]
+        exponent = re.match(r"-?\d+(?:\.\d+)?", tail)
+        rest = tail[exponent.end():].lstrip() if exponent else ""
+        if not exponent or abs(float(exponent.group())) > MAX_EXPONENT or rest.startswith(("**", "^")):
+            raise UnitError(f'bad unit "{_shown(unit)}" in "{_shown(text)}": '
+                            f"an exponent must be one number of at most {MAX_EXPONENT}")
+
+
 def parse_quantity(text: str) -> pint.Quantity:
     """Parse ``"1.96e7 N/m"`` or ``"100 degC"``. Offset units (degC) cannot be
-    multiplied, so the number and the unit are split before pint sees them."""
+    multiplied, so the number and the unit are split before pint sees them.
+    Every failure (too long, bad syntax, unknown unit, division by zero, a
+    non-finite number) is a UnitError with a one-line message."""
+    if len(text) > MAX_QUANTITY_CHARS:
+        raise UnitError(f"expected a number with a unit of at most {MAX_QUANTITY_CHARS} characters, "
+                        f"got {len(text)} characters")
     match = _NUMBER_UNIT.match(text)
     if not match:
-        raise UnitError(f'expected a number with a unit, got "{text}"')
+        raise UnitError(f'expected a number with a unit, got "{_shown(text)}"')
     number, unit = match.groups()
+    magnitude = float(number)
+    if not math.isfinite(magnitude):
+        raise UnitError(f'expected a finite number, got "{_shown(text)}"')
+    _check_unit_syntax(unit, text)
     try:
-        return Q_(float(number), unit or "")
-    except (pint.errors.UndefinedUnitError, pint.errors.DefinitionSyntaxError, AttributeError, TypeError, ValueError) as exc:
-        raise UnitError(f'unknown unit "{unit}" in "{text}"') from exc
+        quantity = Q_(magnitude, unit or "")
+    except Exception as exc:   # pint raises many types (ZeroDivisionError, TokenError, ...)
+        raise UnitError(f'unknown unit "{_shown(unit)}" in "{_shown(text)}"') from exc
+    if not all(math.isfinite(float(p)) for p in quantity.dimensionality.values()):
+        raise UnitError(f'bad unit "{_shown(unit)}" in "{_shown(text)}"')
+    return quantity
+
+
+def _temperature(quantity: pint.Quantity, value: str, word: str) -> float:
+    """An absolute temperature in degC; a difference or a fraction is refused."""
+    if _RELATIVE_TEMPERATURE.search(_NUMBER_UNIT.match(value).group(2)):
+        raise UnitError(f'expected {word} (an absolute one, e.g. "100 degC"), got the relative "{_shown(value)}"')
+    if quantity.unitless:
+        return float(quantity.magnitude)
+    if not quantity.check("[temperature]"):
+        raise UnitError(f'expected {word}, got "{_shown(value)}"')
+    return float(quantity.to("degC").magnitude)
 
 
 def to_si(value: object, kind: str) -> float:
     """Return ``value`` as a float in the SI unit of ``kind`` (degC for
-    temperatures). Raises UnitError with a message meant for the user."""
+    temperatures), inside the kind's plausible range (``PLAUSIBLE``).
+    Raises UnitError with a one-line message meant for the user."""
     unit, word = KINDS[kind]
     if isinstance(value, bool):
         raise UnitError(f"expected {word}, got {value!r}")
     if isinstance(value, (int, float)):
-        result = float(value)
+        try:
+            result = float(value)
+        except OverflowError:
+            raise UnitError(f"expected {word}, got a number too large") from None
     elif isinstance(value, str):
         quantity = parse_quantity(value)
-        if kind == "temperature":
-            if quantity.dimensionless and quantity.unitless:
-                result = float(quantity.magnitude)
-            elif quantity.check("[temperature]"):
-                result = float(quantity.to("degC").magnitude)
+        try:
+            if kind == "temperature":
+                result = _temperature(quantity, value, word)
             else:
-                raise UnitError(f'expected {word}, got "{value}"')
-        else:
-            try:
                 result = float(quantity.to(unit).magnitude)
-            except pint.errors.DimensionalityError as exc:
-                raise UnitError(f'expected {word}, got "{value}"') from exc
+        except UnitError:
+            raise
+        except Exception as exc:   # DimensionalityError, OverflowError, ...
+            raise UnitError(f'expected {word}, got "{_shown(value)}"') from exc
     else:
-        raise UnitError(f"expected {word}, got {value!r}")
-    if not math.isfinite(result):
-        raise UnitError(f"expected a finite number, got {value!r}")
-    return result
+        raise UnitError(f"expected {word}, got {_shown(repr(value))}")
+    return check_range(result, kind, value)
+
+
+def check_range(number: float, kind: str, given: object = None) -> float:
+    """``number`` (SI) if finite and inside the kind's plausible range, else
+    UnitError naming the range. ``given``: what the user wrote, for the message."""
+    shown = _shown(repr(given if given is not None else number))
+    if not math.isfinite(number):
+        raise UnitError(f"expected a finite number, got {shown}")
+    low, high = PLAUSIBLE.get(kind, DEFAULT_RANGE)
+    if number != 0.0 and abs(number) < TINY:
+        raise UnitError(f"expected 0 or a magnitude of at least {TINY:g} (SI), got {shown}")
+    if kind == "temperature" and number < low:
+        raise UnitError(f"expected a temperature above absolute zero ({low:g} degC), got {shown}")
+    if not low <= number <= high:
+        unit = "degC" if kind == "temperature" else KINDS.get(kind, ("",))[0]
+        raise UnitError(f"expected {KINDS.get(kind, (None, 'a value'))[1]} between {low:g} and {high:g}"
+                        f"{' ' + unit if unit else ''}, got {shown}")
+    return number

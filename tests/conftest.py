@@ -10,6 +10,23 @@ import pytest
 REPO = Path(__file__).resolve().parents[1]
 STUDIES = REPO / "studies"
 CATALOGS = REPO / "catalogs"
+# A requirements file that solves in about a second: two stack counts, two
+# simulated candidates, no compensator variants, no DC actuators.
+FAST_REQUIREMENTS = """[requirements]
+stroke = "40 mm"
+blocked_force = "2.5 kN"
+speed = "100 mm/s"
+max_temperature = "100 degC"
+
+[load]
+force = ["1 kN"]
+
+[options]
+max_stacks = 2
+max_simulated = 2
+thermal_compensation = false
+dc_motors = false
+"""
 SEED_BOUC_WEN = dict(d33=8.15e-7, alpha=-2.23e-7, beta=0.134, gamma=0.0755, delta=-5.46e-8, n=1.14)  # seed Table 1
 
 

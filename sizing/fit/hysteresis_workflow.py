@@ -18,6 +18,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..io.catalog import load_catalog
+from ..io.atomic import check_files
 from ..io.catalog_import import entry_toml
 from ..io.runs import read_runs, split_holdout
 from ..io.schema import load_toml
@@ -86,7 +87,7 @@ def fit_hysteresis(paths, holdout=None, model: str = "auto", out=None, report=No
     """Fit Bouc-Wen and Prandtl-Ishlinskii to runs (CSV paths). ``model``:
     "auto" (the better on the holdout), "bouc-wen" or "prandtl-ishlinskii".
     Returns {"toml", "warnings", "result", "written"}."""
-    from .workflow import _write
+    from .workflow import _targets, _write
 
     if model not in MODEL_CHOICES:
         raise InputError("command line", "--model", f"expected one of {', '.join(MODEL_CHOICES)}, got {model!r}")
@@ -94,6 +95,7 @@ def fit_hysteresis(paths, holdout=None, model: str = "auto", out=None, report=No
         raise InputError("command line", "--prior-sigma", f"expected a positive relative sd, got {prior_sigma!r}")
     if catalog_entry is not None:
         _check_entry_id(catalog_entry, catalog)
+    check_files(_targets(out, report), inputs=paths)     # before any work: never over an input
     runs = read_runs(paths, kind="piezohydraulic")
     train, hold = split_holdout(runs, holdout, ", ".join(str(p) for p in paths))
     train_rec, hold_rec = [_record(r) for r in train], [_record(r) for r in hold]
@@ -157,7 +159,7 @@ def fit_hysteresis(paths, holdout=None, model: str = "auto", out=None, report=No
                            "message": bw.message_},
               "prandtl_ishlinskii": {"thresholds_V": pi.thresholds_, "weights_m_V": pi.weights_},
               "model_choice": choice, "filter": fit_table["input_filter"], "sources": [str(p) for p in paths]}
-    written = _write(out, report, toml, result, kind="hysteresis", extra=files)
+    written = _write(out, report, toml, result, kind="hysteresis", inputs=paths, extra=files)
     return {"toml": toml, "warnings": list(dict.fromkeys(caught)), "result": result, "written": written}
 
 

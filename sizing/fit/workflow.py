@@ -9,9 +9,10 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import InputError
-from ..io.atomic import write_many
+from ..io.atomic import check_files, write_files
 from ..io.rig import DCRig, load_rig
 from ..io.runs import read_runs, split_holdout
+from ..limits import check_steps, dc_steps
 from ..sim.signals import nrmse
 from .dc_motor import DCMotorEstimator, DCRecord
 from .output import render_toml
@@ -40,10 +41,13 @@ def fit_dc_motor(paths, rig_path, holdout=None, out=None, report=None, fit_gains
     """Fit c1, c2 (and gains) of the rig's DC motor to reference/position runs."""
     from ..sim.rigs import dc_model
 
+    check_files(_targets(out, report), inputs=[*paths, rig_path])
     rig = load_rig(rig_path)
     if not isinstance(rig, DCRig):
         raise InputError(str(rig_path), "kind", 'expected "dc_motor" for sizing fit dc-motor')
     runs = read_runs(paths, kind="dc_motor")
+    check_steps(dc_steps(sum(float(r.time[-1] - r.time[0]) for r in runs), rig.controller.rate),
+                str(rig_path), "[controller].rate", "controller steps per simulation of the runs")
     train, hold = split_holdout(runs, holdout, _source(paths))
 
     def record(run):
@@ -81,18 +85,29 @@ def fit_dc_motor(paths, rig_path, holdout=None, out=None, report=None, fit_gains
               "summary": {"dc-motor": {"nrmse_train": fit_table["nrmse_train"],
                                        "nrmse_holdout": fit_table["nrmse_holdout"],
                                        "nrmse_runs": fit_table["nrmse_runs"]}}}
-    written = _write(out, report, toml, result, kind="dc-motor")
+    written = _write(out, report, toml, result, kind="dc-motor", inputs=[*paths, rig_path])
     return {"toml": toml, "warnings": list(dict.fromkeys(caught)), "result": result, "written": written}
 
 
-def _write(out, report, toml, result, kind, extra: dict | None = None) -> list[str]:
-    files: dict[Path, str] = dict(extra or {})
-    if out is not None:
-        files[Path(out)] = toml
-        if report is None:
-            report = Path(out).with_suffix(".html")
+def _targets(out, report) -> list[Path]:
+    """The files ``--out`` and ``--report`` name (the report defaults to OUT.html)."""
+    targets = [Path(out)] if out is not None else []
+    if report is None and out is not None:
+        report = Path(out).with_suffix(".html")
     if report is not None:
-        from ..report.fit_html import render
-        files[Path(report)] = render(result, kind=kind, toml=toml)
-    write_many(files)
+        if targets and Path(report).absolute() == targets[0].absolute():
+            raise InputError(str(report), "--report", "the report would overwrite the --out file; give another name")
+        targets.append(Path(report))
+    return targets
+
+
+def _write(out, report, toml, result, kind, inputs=(), extra: dict | None = None) -> list[str]:
+    """Write the TOML, the report and any ``extra`` files (path -> text) as
+    one set (``io.atomic.write_files``), never over an input."""
+    from ..report.fit_html import render
+    targets = _targets(out, report)
+    files: dict[Path, object] = {path: toml for path in targets[:1 if out is not None else 0]}
+    files.update({path: render(result, kind=kind, toml=toml) for path in targets[1 if out is not None else 0:]})
+    files.update(extra or {})
+    write_files(files, inputs=inputs)
     return [str(p) for p in files]

@@ -9,15 +9,16 @@ from __future__ import annotations
 
 import datetime as dt
 import hashlib
+import os
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Annotated, Literal, Optional
 
-from pydantic import AfterValidator, field_validator, model_validator
+from pydantic import AfterValidator, Field, field_validator, model_validator
 
 from ..errors import InputError
-from .schema import Qty, Strict, load_toml, parse_model
+from .schema import BW_LINEAR, BW_SHAPE, GAIN, Qty, Strict, load_toml, parse_model, read_input_bytes
 
 DEFAULT_CATALOG = Path(__file__).resolve().parents[2] / "catalogs"
 ID_PATTERN = re.compile(r"^[a-z0-9][a-z0-9.\-]*$")
@@ -70,11 +71,11 @@ class Entry(Strict):
 
 class BoucWenTable(Strict):
     d33: Qty("strain_per_volt", positive=True)
-    alpha: float
-    beta: float
-    gamma: float
-    delta: float
-    n: float
+    alpha: BW_LINEAR
+    beta: BW_SHAPE
+    gamma: BW_SHAPE
+    delta: BW_LINEAR
+    n: float = Field(le=10.0, allow_inf_nan=False)   # assumed bound, as schema.BW_EXPONENT
 
     @field_validator("n")
     @classmethod
@@ -143,9 +144,9 @@ class Amplifier(Entry):
 
 class PIDTable(Strict):
     rate: Qty("frequency", positive=True)
-    kp: float
-    ki: float
-    kd: float
+    kp: GAIN
+    ki: GAIN
+    kd: GAIN
     derivative_on: Literal["error", "measurement"] = "error"
 
 
@@ -343,16 +344,20 @@ def load_catalog(folder: str | Path | None = None) -> Catalog:
     found = False
     for file_name, (array_name, model) in KINDS.items():
         path = folder / file_name
-        if not path.exists():
+        if not os.path.lexists(path):     # a symlink loop or a dangling link is an error, not an absent file
             continue
         found = True
-        catalog.files[file_name] = hashlib.sha256(path.read_bytes()).hexdigest()
+        catalog.files[file_name] = hashlib.sha256(read_input_bytes(path, "a TOML file")).hexdigest()
         data = load_toml(path)
         unknown = [k for k in data if k != array_name]
         if unknown:
             raise InputError(str(path), unknown[0], f"unknown table; expected [[{array_name}]] entries")
         group = catalog.groups()[array_name]
-        for index, raw in enumerate(data.get(array_name, [])):
+        entries = data.get(array_name, [])
+        if not isinstance(entries, list):
+            raise InputError(str(path), array_name, f"expected [[{array_name}]] entries (an array of tables), "
+                                                    f"got {type(entries).__name__} {entries!r:.40}")
+        for index, raw in enumerate(entries):
             label = f"[[{array_name}]] {raw.get('id', '#' + str(index + 1))}" if isinstance(raw, dict) else f"[[{array_name}]] #{index + 1}"
             entry = _parse_entry(model, raw, path, label)
             if entry.id in seen:

@@ -163,6 +163,8 @@ def parse_sheet(csv_path: str | Path, model: type[Entry], array: str) -> list[tu
         raise InputError(str(csv_path), None, "file not found") from None
     except (IsADirectoryError, UnicodeDecodeError):
         raise InputError(str(csv_path), None, "expected a UTF-8 CSV file") from None
+    except OSError as exc:      # symlink loop, permission denied
+        raise InputError(str(csv_path), None, f"cannot read the CSV file: {exc.strerror or exc}") from None
     rows = list(csv.reader(text.splitlines()))
     if not rows:
         raise InputError(str(csv_path), "line 1", "expected a header line, got an empty file")

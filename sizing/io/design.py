@@ -4,7 +4,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Literal, Optional, Union
 
-from pydantic import Field, model_validator
+from pydantic import Field, field_validator, model_validator
 
 from .schema import Qty, Strict, parse_tagged
 
@@ -19,6 +19,14 @@ class LoadTable(Strict):
     dynamic_pressure: list[Qty("pressure", nonnegative=True)] = Field(default_factory=lambda: [10e3, 25e3])
     force: Optional[list[Qty("force")]] = None      # explicit forces instead of pressures
     stiffness: Qty("stiffness", nonnegative=True) = 0.0
+
+    @field_validator("force")
+    @classmethod
+    def _some_force(cls, value):
+        # an empty list would run no load case: evaluate rejects it as solve does
+        if value is not None and not value:
+            raise ValueError("expected at least one load case, got an empty list")
+        return value
 
 
 class PiezoDesignFile(Strict):

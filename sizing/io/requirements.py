@@ -15,7 +15,7 @@ from typing import Literal, Optional
 from pydantic import Field, field_validator
 
 from .design import LoadTable
-from .schema import Qty, Strict, load_toml, parse_model
+from .schema import Qty, Strict, load_toml, parse_model, read_input_bytes
 
 OBJECTIVES = ("mass", "cost", "volume", "power")
 ABSOLUTE_ZERO_DEGC = -273.15
@@ -161,7 +161,7 @@ def load_requirements(path: str | Path) -> tuple[RequirementsFile, str]:
     file's sha256. Raises InputError naming the file and the field."""
     path = Path(path)
     data = load_toml(path)
-    return parse_requirements(data, path), hashlib.sha256(path.read_bytes()).hexdigest()
+    return parse_requirements(data, path), hashlib.sha256(read_input_bytes(path)).hexdigest()
 
 
 def parse_requirements(data: dict, path: str | Path) -> RequirementsFile:

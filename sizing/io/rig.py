@@ -6,15 +6,15 @@ from typing import Literal, Optional, Union
 
 from pydantic import Field, model_validator
 
-from .schema import Qty, Strict, parse_tagged
+from .schema import BW_EXPONENT, BW_LINEAR, BW_SHAPE, GAIN, Qty, Strict, parse_tagged
 
 
 class BoucWenRig(Strict):
-    alpha: float
-    beta: float
-    gamma: float
-    delta: float
-    n: float = Field(gt=0)
+    alpha: BW_LINEAR
+    beta: BW_SHAPE
+    gamma: BW_SHAPE
+    delta: BW_LINEAR
+    n: BW_EXPONENT
 
 
 class StackRig(Strict):
@@ -66,8 +66,8 @@ class PiezoRig(Strict):
 
 
 class MotorRig(Strict):
-    c1: float
-    c2: float = Field(gt=0)
+    c1: float = Field(ge=-1e6, allow_inf_nan=False)
+    c2: float = Field(gt=0, le=1e9, allow_inf_nan=False)
     screw_lead: Qty("length", positive=True)
     screw_efficiency: Qty("dimensionless", positive=True) = 0.9
     torque_constant: Qty("torque_constant", positive=True) = 0.1
@@ -81,9 +81,9 @@ class MotorRig(Strict):
 
 class ControllerRig(Strict):
     rate: Qty("frequency", positive=True)
-    kp: float
-    ki: float
-    kd: float
+    kp: GAIN
+    ki: GAIN
+    kd: GAIN
     derivative_on: Literal["error", "measurement"] = "error"
     current_limit: Qty("current", positive=True)
 

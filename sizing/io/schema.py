@@ -12,7 +12,7 @@ import tomllib
 from pathlib import Path
 from typing import Annotated, Any, TypeVar
 
-from pydantic import BaseModel, BeforeValidator, ConfigDict, ValidationError
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, ValidationError
 
 from ..errors import InputError
 from ..units import KINDS, UnitError, to_si
@@ -48,26 +48,61 @@ def Qty(kind: str, *, positive: bool = False, nonnegative: bool = False):
     return Annotated[float, BeforeValidator(_quantity_validator(kind, positive, nonnegative))]
 
 
+def Bounded(low: float, high: float):
+    """A plain model coefficient (no unit) that must lie in [low, high]:
+    outside it the simulations overflow or never finish (issue 14: a rig's
+    alpha = 1e300 crashed diagnose, beta = 1e12 ran for minutes)."""
+    return Annotated[float, Field(ge=low, le=high, allow_inf_nan=False)]
+
+
+# assumed: bounds wide around every published and fitted value (seed Table 1:
+# alpha -2.23e-7 m/V, beta 0.134, gamma 0.0755, delta -5.46e-8 m/V, n 1.14;
+# the shipped catalog's fits lie inside), narrow enough to integrate.
+BW_LINEAR = Bounded(-1e-3, 1e-3)      # alpha, delta: m/V
+BW_SHAPE = Bounded(-1e3, 1e3)         # beta, gamma
+BW_EXPONENT = Bounded(1e-6, 10.0)     # n (a shipped catalog fit has 0.0072)
+GAIN = Bounded(-1e9, 1e9)             # PID gains, SI
+
+
 def finite(value: float, name: str = "value") -> float:
     if not math.isfinite(value):
         raise ValueError(f"expected a finite {name}, got {value!r}")
     return value
 
 
-def load_toml(path: str | Path) -> dict:
-    """Read a TOML file; a missing or malformed file is an InputError."""
+MAX_TOML_BYTES = 10_000_000   # an input TOML is a few kB; refuse to parse a huge one
+
+
+def read_input_bytes(path: str | Path, expected: str = "a file", limit: int | None = None) -> bytes:
+    """The bytes of an input file, or an InputError naming it: missing, a
+    folder, a symlink loop, unreadable, or larger than ``limit`` bytes."""
     path = Path(path)
     try:
-        with path.open("rb") as handle:
-            return tomllib.load(handle)
+        if limit is not None and path.stat().st_size > limit:
+            raise InputError(str(path), None, f"expected {expected} of at most {limit:,} bytes, "
+                                              f"got {path.stat().st_size:,} bytes")
+        return path.read_bytes()
     except FileNotFoundError:
         raise InputError(str(path), None, "file not found") from None
     except IsADirectoryError:
-        raise InputError(str(path), None, "expected a file, got a folder") from None
+        raise InputError(str(path), None, f"expected {expected}, got a folder") from None
+    except OSError as exc:   # symlink loop, permission denied, a device, ...
+        raise InputError(str(path), None, f"cannot read {expected}: {exc.strerror or exc}") from None
+
+
+def load_toml(path: str | Path) -> dict:
+    """Read a TOML file; a missing or malformed file is an InputError. A
+    UTF-8 byte-order mark (what some editors write) is accepted."""
+    path = Path(path)
+    raw = read_input_bytes(path, "a TOML file", MAX_TOML_BYTES)
+    try:
+        return tomllib.loads(raw.decode("utf-8").removeprefix("\ufeff"))
     except tomllib.TOMLDecodeError as exc:
         raise InputError(str(path), None, f"malformed TOML: {exc}") from None
     except UnicodeDecodeError:
         raise InputError(str(path), None, "not a text file") from None
+    except RecursionError:
+        raise InputError(str(path), None, "malformed TOML: nested too deep") from None
 
 
 def field_path(loc: tuple) -> str:
@@ -111,7 +146,7 @@ def parse_tagged(path: str | Path, key: str, models: dict[str, type[M]]) -> M:
     (``technology`` of a design, ``kind`` of a rig)."""
     data = load_toml(path)
     tag = data.get(key)
-    if tag not in models:
+    if not isinstance(tag, str) or tag not in models:   # a list or table here is unhashable
         choices = " or ".join(f'"{name}"' for name in models)
         raise InputError(str(path), key, f"expected {choices}, got {tag!r}")
     return parse_model(models[tag], data, path)

@@ -287,7 +287,7 @@ def fit_hysteresis(data: List[Path] = typer.Argument(..., help="Run CSVs (time_s
                    operators: int = number_option(16, "--operators", "Play operators of the Prandtl-Ishlinskii model.", low=1, high=1000),
                    seed: int = number_option(0, "--seed", "Seed of the random starting points.", low=0, high=SEED_MAX),
                    prior_stack: Optional[str] = typer.Option(None, "--prior-stack", help="Catalog stack id whose datasheet (and Bouc-Wen values, if any) regularise the parameters the data leave free. Default: the seed's Table 1 loop rescaled to the record."),
-                   prior_sigma: float = number_option(0.5, "--prior-sigma", "Relative 1-sigma of the prior on each dimensionless Bouc-Wen group.", low=1e-6, high=1e6),
+                   prior_sigma: float = typer.Option(0.5, "--prior-sigma", help="Relative 1-sigma of the prior on each dimensionless Bouc-Wen group (positive; the library checks it)."),
                    catalog_entry: Optional[str] = typer.Option(None, "--catalog-entry", help="Also write ID.toml and ID.csv beside --out: a stack catalog entry (for a stacks.toml, or for sizing catalog add stack ID.csv) with the fitted Bouc-Wen values under status measured."),
                    catalog: Optional[Path] = CatalogOpt,
                    max_samples: Optional[int] = MaxSamplesOpt):

@@ -1,11 +1,17 @@
 """Shared fixtures. Every random step takes a seed (STYLE.md)."""
 from __future__ import annotations
 
+import os
 import shutil
 from pathlib import Path
 
-import numpy as np
-import pytest
+# One BLAS thread: the fits' small least-squares problems ran about 5x slower
+# with OpenBLAS threads fighting over CI's 2 cores. Set before numpy loads.
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+os.environ.setdefault("OMP_NUM_THREADS", "1")
+
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
 
 REPO = Path(__file__).resolve().parents[1]
 STUDIES = REPO / "studies"

@@ -333,25 +333,33 @@ class _StageBars:
         self.quiet, self.bar, self.tasks = quiet, None, {}
 
     def __enter__(self):
-        if not self.quiet:
-            from rich.console import Console
-            from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
-            self.bar = Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(),
-                                TimeElapsedColumn(), console=Console(stderr=True), transient=True)
-            self.bar.start()
         return self
 
+    def _start(self) -> None:
+        """Start the bars at the first report of work, so input errors found
+        before any work print their one line and nothing else."""
+        from rich.console import Console
+        from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+        self.bar = Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(),
+                            TimeElapsedColumn(), console=Console(stderr=True), transient=True)
+        self.bar.start()
+
     def __call__(self, stage: str, done: int, total: int) -> None:
-        if self.bar is None:
+        if self.quiet:
             return
+        if self.bar is None:
+            self._start()
         if stage not in self.tasks:
             self.tasks[stage] = self.bar.add_task(stage, total=total)
         self.bar.update(self.tasks[stage], completed=done, total=total)
 
     def note(self, text: str) -> None:
         """A line above the bars (e.g. the Dask dashboard's address)."""
-        if self.bar is not None:
-            self.bar.console.print(text)
+        if self.quiet:
+            return
+        if self.bar is None:
+            self._start()
+        self.bar.console.print(text)
 
     def __exit__(self, *exc):
         if self.bar is not None:

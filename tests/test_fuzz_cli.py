@@ -78,10 +78,14 @@ COMMANDS = {
     "catalog-validate": (["catalog", "validate", "{d}/cat"],
                          ["cat/stacks.toml", "cat/seals.toml", "cat/dc_actuators.toml"], None),
     "catalog-add": (["catalog", "add", "stack", "{d}/sheet.csv", "--catalog", "{d}/cat"], ["sheet.csv"], None),
+    "robust": (["robust", "{d}/req.toml", "--samples", "4", "--designs", "1", "--workers", "0", "--out", "{d}/out",
+                "--quiet"], ["req.toml"], "out"),
+    "sweep": (["sweep", "{d}/req.toml", "--vary", "stroke=38mm..40mm:2", "--workers", "0", "--out", "{d}/out",
+               "--quiet"], ["req.toml"], "out"),
 }
 # examples per command: the cheap ones get more (a valid diagnose takes seconds)
 EXAMPLES = {"diagnose": 4, "solve": 12, "evaluate": 30, "catalog-validate": 20, "fit-hysteresis": 15,
-            "fit-dc-motor": 12, "catalog-add": 15}
+            "fit-dc-motor": 12, "catalog-add": 15, "robust": 6, "sweep": 5}
 
 
 def _lines(text: str) -> list[str]:

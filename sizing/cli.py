@@ -16,7 +16,7 @@ from typing import List, Optional
 import typer
 
 from . import __version__, api
-from .errors import FitError, InputError
+from .errors import RECEIVED_SIGNALS, FitError, InputError, Interrupted, raise_if_interrupted
 from .limits import use_limits
 
 app = typer.Typer(help="Size smart-material actuators for glide-body control surfaces, "
@@ -422,16 +422,8 @@ def sweep(requirements: Path = typer.Argument(..., help="requirements.toml (CONT
         typer.echo(f"{out}/sweep.json, sweep.html written ({data['where']})")
 
 
-class Interrupted(BaseException):
-    """SIGINT or SIGTERM arrived. A BaseException, so no ``except Exception``
-    swallows it, while every ``finally`` (temporary outputs) still runs."""
-
-    def __init__(self, signum: int):
-        super().__init__(signum)
-        self.signum = signum
-
-
 def _interrupt(signum, frame):
+    RECEIVED_SIGNALS.append(signum)
     raise Interrupted(signum)
 
 
@@ -456,6 +448,7 @@ def main(argv: Optional[List[str]] = None) -> None:
     previous = _handle_signals()
     try:
         code = app(args=argv, standalone_mode=False, prog_name="sizing")
+        raise_if_interrupted()        # a signal some library swallowed still ends the run as interrupted
     except Interrupted as exc:
         typer.echo(f"error: interrupted by {signal.Signals(exc.signum).name}; outputs are complete or untouched", err=True)
         sys.exit(128 + exc.signum)
@@ -489,6 +482,7 @@ def main(argv: Optional[List[str]] = None) -> None:
     finally:
         for sig, handler in previous.items():
             signal.signal(sig, handler)
+        RECEIVED_SIGNALS.clear()
     if isinstance(code, int) and code:
         sys.exit(code)
 

@@ -24,3 +24,24 @@ class SimulationError(Exception):
 
 class FitError(Exception):
     """Data cannot support the requested fit (too short, no reversal, ...)."""
+
+
+class Interrupted(BaseException):
+    """SIGINT or SIGTERM arrived. A BaseException, so no ``except Exception``
+    swallows it, while every ``finally`` (temporary outputs) still runs."""
+
+    def __init__(self, signum: int):
+        super().__init__(signum)
+        self.signum = signum
+
+
+# Signals received by the command line's handler. A library may swallow the
+# Interrupted raised inside it (cvxpy's solver import catches everything), so
+# the output writer asks here again before it swaps any file in.
+RECEIVED_SIGNALS: list[int] = []
+
+
+def raise_if_interrupted() -> None:
+    """Raise Interrupted when a signal arrived earlier and was swallowed."""
+    if RECEIVED_SIGNALS:
+        raise Interrupted(RECEIVED_SIGNALS[0])

@@ -191,3 +191,19 @@ def test_sigterm_during_solve_exits_143_with_nothing_written(tmp_path):
     assert proc.returncode == 143, err
     assert len(err.strip().splitlines()) == 1 and "SIGTERM" in err, err
     assert not out.exists() and leftovers(tmp_path) == []
+
+
+def test_a_swallowed_signal_still_stops_the_write(tmp_path):
+    # cvxpy's solver import catches every exception, so the Interrupted the
+    # SIGTERM handler raised there was lost and the solve ran on and wrote its
+    # outputs with exit 0 (seen on a fresh install). The handler also records
+    # the signal, and the writer asks before it swaps anything in.
+    from sizing.errors import RECEIVED_SIGNALS, Interrupted
+    from sizing.io.atomic import write_folder
+    RECEIVED_SIGNALS.append(15)
+    try:
+        with pytest.raises(Interrupted):
+            write_folder(tmp_path / "out", {"results.json": "{}"})
+    finally:
+        RECEIVED_SIGNALS.clear()
+    assert not (tmp_path / "out").exists() and not list(tmp_path.iterdir())

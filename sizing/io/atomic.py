@@ -34,7 +34,7 @@ import threading
 from pathlib import Path
 from typing import Callable, Iterable, Mapping, Union
 
-from ..errors import InputError
+from ..errors import InputError, raise_if_interrupted
 
 Content = Union[str, bytes, Callable[[], Union[str, bytes]]]
 MAX_CARRIED = 200     # entries of an existing --out folder carried over; more means a wrong folder
@@ -222,6 +222,7 @@ def _write_folder(dest: Path, files: Mapping[str, Content], option: str) -> Path
         if dest.is_dir():
             _carry_over(dest, tmp, {name.partition("/")[0] for name in files}, option)
             old = Path(tempfile.mkdtemp(dir=parent, prefix=f".{dest.name}.old-"))
+            raise_if_interrupted()      # a signal swallowed on the way: write nothing
             with signals_deferred():
                 os.replace(dest, old / dest.name)
                 try:
@@ -230,6 +231,7 @@ def _write_folder(dest: Path, files: Mapping[str, Content], option: str) -> Path
                     os.replace(old / dest.name, dest)
                     raise
         else:
+            raise_if_interrupted()      # a signal swallowed on the way: write nothing
             with signals_deferred():
                 os.replace(tmp, dest)
     finally:
@@ -262,6 +264,7 @@ def _write_files(paths: list[Path], contents: list) -> None:
             if path.exists():
                 backups[path] = Path(tempfile.mktemp(dir=path.parent, prefix=f".{path.name}.", suffix=".old"))
                 _link_or_copy(path, backups[path])
+        raise_if_interrupted()
         with signals_deferred():
             try:
                 for path in paths:

@@ -188,6 +188,8 @@ def run_crossform(verbose: bool = True, only: str = "") -> dict:
                          "status": v["status"], "first": d.fits[0].name if d.fits else NONE,
                          "shrink": float(v.get("shrink_holdout", 0.0)),
                          "shrink_first": float(1 - d.fits[0].nrmse_holdout / d.baseline_holdout) if d.fits else 0.0,
+                         "params_first": d.fits[0].params if d.fits else {},
+                         "reason": v.get("reason", ""),
                          "nrmse_baseline": d.baseline_holdout, "noise_floor": d.noise_floor_holdout,
                          "seconds": d.seconds, "seconds_generate": generated, "ok": ok})
             if verbose:

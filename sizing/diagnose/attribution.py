@@ -28,6 +28,9 @@
    - "partial": the best removes >= PARTIAL of the gap energy above the
      floor and is significantly better than the baseline, but one of the
      other conditions fails; ``remaining`` says where its residual is;
+     an effect whose fitted time constant (a ``*time_s`` parameter) is
+     longer than the shortest training run does not settle within a run,
+     so it cannot be told from a slow drift: it is at most "partial";
    - "unexplained" otherwise. Both null verdicts name no effect.
    Significance (separation test): moving-block bootstrap over the holdout
    runs cut into BLOCK_S blocks; the statistic is the difference of the
@@ -231,7 +234,19 @@ def runner_up(fits, best):
     return None
 
 
-def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks=None, seed: int = 0) -> dict:
+def unsettled(fit, run_length: float | None) -> dict:
+    """The fitted time constants (parameters named ``*time_s``) of ``fit``
+    longer than ``run_length`` (s): an effect that does not settle within a
+    run is indistinguishable from a slow drift over it."""
+    if fit is None or run_length is None:
+        return {}
+    return {k: v for k, v in fit.params.items()
+            if k.endswith("time_s") and not k.startswith("recalibration.") and v > run_length}
+
+
+def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks=None, seed: int = 0,
+            run_length: float | None = None) -> dict:
+    """``run_length``: the shortest training run (s), for the settling rule."""
     floor = total_floor(floor_holdout)
     if baseline_holdout <= GAP_FACTOR * floor_holdout:
         return {"effect": None, "shrink_holdout": 0.0, "status": "no_significant_gap",
@@ -262,7 +277,8 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
     significant = shrink > 0 and p_base < ALPHA
     separated = p_second < ALPHA
     leaves = best.nrmse_holdout <= RESIDUAL_FACTOR * floor
-    if significant and share >= EXPLAINED and separated and leaves:
+    slow = unsettled(best, run_length)
+    if significant and share >= EXPLAINED and separated and leaves and not slow:
         out.update(effect=best.name, status="explained",
                    reason=f"{best.name} removes {100 * share:.0f} % of the holdout gap energy above the floor, "
                           f"separated from {second.name if second else 'every other effect'} (p = {p_second:.3f})")
@@ -275,6 +291,9 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
             why.append(f"not separated from {second.name} (p = {p_second:.3f})")
         if not leaves:
             why.append(f"it leaves {best.nrmse_holdout:.4f} > {RESIDUAL_FACTOR:g} x the floor {floor:.4f}")
+        for k, v in slow.items():
+            why.append(f"its fitted {k} = {v:.3g} s is longer than the shortest training run ({run_length:.3g} s): "
+                       f"it does not settle within a run and cannot be told from a slow drift")
         out.update(effect=best.name, status="partial",
                    reason=f"{best.name} explains part of the gap: " + "; ".join(why))
         return out

@@ -124,7 +124,8 @@ def diagnose_runs(kind: str, rig, runs, holdout: list[str], recalibrate: list[st
     floor_ho = float(np.mean(floor[bench.holdout]))
     fits = attribution.attribute(bench, base_ho, floor_ho, seed=seed, pairs=pairs)
     base_blocks = attribution.block_energy(bench, [nominal[i] for i in bench.holdout], bench.holdout)
-    verdict = attribution.verdict(base_ho, floor_ho, fits, base_blocks, seed=seed)
+    shortest = min((float(bench.runs[i].t[-1] - bench.runs[i].t[0]) for i in bench.train), default=None)
+    verdict = attribution.verdict(base_ho, floor_ho, fits, base_blocks, seed=seed, run_length=shortest)
     chosen = attribution.pick(fits, seed, attribution.total_floor(floor_ho))
     best_sim = [y[0] for y in bench.simulate_channels(chosen.effects, chosen.z[None, :])] if chosen else None
     if verdict["status"] in ("explained", "partial") and best_sim is not None:

@@ -1,0 +1,42 @@
+"""The settling rule of the verdict: an effect whose fitted time constant is
+longer than the shortest training run cannot be told from a slow drift, so
+it is at most "partial" (sizing/diagnose/attribution.py)."""
+import numpy as np
+import pytest
+
+from sizing.diagnose import attribution
+from sizing.diagnose.effects import get
+from sizing.diagnose.fitting import EffectFit
+
+
+def _fits(creep_time_s):
+    creep, damping = get("piezohydraulic", "stack_creep"), get("piezohydraulic", "viscous_damping")
+    best = EffectFit((creep,), creep.unit({"creep_fraction": 0.1, "creep_time_s": creep_time_s}), 0.004,
+                     nrmse_holdout=0.004, residual_blocks=np.full(40, 1.0))
+    second = EffectFit((damping,), damping.unit({"viscous_damping_N_s_m": 200.0}), 0.015,
+                       nrmse_holdout=0.015, residual_blocks=np.full(40, 5.0))
+    return [best, second]
+
+
+def test_unsettled_lists_time_constants_longer_than_the_run():
+    best = _fits(5.0)[0]
+    assert attribution.unsettled(best, 2.0) == {"creep_time_s": pytest.approx(5.0)}
+    assert attribution.unsettled(best, 6.0) == {}
+    assert attribution.unsettled(best, None) == {}
+    assert attribution.unsettled(_fits(0.5)[0], 2.0) == {}
+
+
+@pytest.mark.parametrize("creep_time_s,run_length,status", [
+    (5.0, 2.0, "partial"),       # does not settle in a 2 s run: a drift would fit as well
+    (5.0, 20.0, "explained"),    # settles within a 20 s run
+    (0.5, 2.0, "explained"),
+])
+def test_verdict_caps_an_unsettled_effect_at_partial(creep_time_s, run_length, status):
+    # baseline 0.02, noise floor 0.001 -> floor sqrt(0.001^2 + 0.002^2) = 0.00224;
+    # the best leaves 0.004 <= 2.5 x floor and removes
+    # 1 - (0.004^2 - 0.00224^2) / (0.02^2 - 0.00224^2) = 97 % of the gap energy above it
+    v = attribution.verdict(0.02, 0.001, _fits(creep_time_s), np.full(40, 10.0), run_length=run_length)
+    assert v["explained_gap_energy"] == pytest.approx(1 - (0.004 ** 2 - 5e-6) / (0.02 ** 2 - 5e-6))
+    assert v["status"] == status and v["effect"] == "stack_creep"
+    if status == "partial":
+        assert "creep_time_s" in v["reason"] and "drift" in v["reason"]

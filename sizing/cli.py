@@ -123,20 +123,9 @@ def solve(requirements: Path = typer.Argument(..., help="requirements.toml (CONT
 
 
 def _solve(requirements, out, catalog, baseline, quiet) -> dict:
-    if quiet:
-        return api.solve(requirements, out, catalog, baseline)
-    else:
-        from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
-        with Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
-                      transient=True) as bar:
-            tasks = {}
-
-            def progress(stage, done, total):
-                if stage not in tasks:
-                    tasks[stage] = bar.add_task(f"{stage} candidates", total=total)
-                bar.update(tasks[stage], completed=done, total=total)
-
-            return api.solve(requirements, out, catalog, baseline, progress=progress)
+    with _StageBars(quiet) as bars:          # the same bars as robust and sweep (below)
+        return api.solve(requirements, out, catalog, baseline,
+                         progress=lambda stage, done, total: bars(f"{stage} candidates", done, total))
 
 
 @catalog_app.command("list")

@@ -286,8 +286,3 @@ def _write_files(paths: list[Path], contents: list) -> None:
 def write_text(path: str | Path, text: str, inputs: Iterable = ()) -> None:
     """One file, atomically (``write_files`` with a single entry)."""
     write_files({Path(path): text}, inputs)
-
-
-def write_many(files: Mapping[Path, str], inputs: Iterable = ()) -> None:
-    """Several loose files; all are written before the first is renamed."""
-    write_files(files, inputs)

@@ -185,9 +185,14 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
     enough = (explained(baseline_holdout, best.nrmse_holdout, floor) >= EXPLAINED
               and best.nrmse_holdout <= RESIDUAL_FACTOR * floor)
     if pairs and not enough:
-        tops = [f for f in fits[:TOP_PAIRS]]
+        tops = []                                         # the best form of each of the top families
+        for f in fits:
+            if len(tops) < TOP_PAIRS and f.name not in {t.name for t in tops}:
+                tops.append(f)
         for a, b in itertools.combinations(tops, 2):
             ea, eb = a.named, b.named
+            if {e.name for e in ea} & {e.name for e in eb}:
+                continue                                  # two forms of one family are alternatives, not a pair
             za, zb = a.z[len(a.z) - sum(len(e.params) for e in ea):], b.z[len(b.z) - sum(len(e.params) for e in eb):]
             if ea[0].post and eb[0].post is False:
                 ea, eb, za, zb = eb, ea, zb, za          # model effects first, measurement effects after
@@ -263,7 +268,7 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
     p_second = bootstrap_p(best.residual_blocks, second.residual_blocks, seed) if second is not None else 0.0
     out = {"shrink_holdout": float(shrink), "explained_gap_energy": share, "floor_holdout": floor,
            "runner_up": None if second is None else {
-               "effect": second.name, "shrink_holdout": float(1.0 - second.nrmse_holdout / baseline_holdout),
+               "effect": second.name, "form": second.form, "shrink_holdout": float(1.0 - second.nrmse_holdout / baseline_holdout),
                "explained_gap_energy": explained(baseline_holdout, second.nrmse_holdout, floor)},
            "separation": {"test": f"block bootstrap over holdout segments ({BLOCK_S:g} s blocks, "
                                   f"{N_BOOT} resamples, one-sided)",
@@ -279,7 +284,7 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
     leaves = best.nrmse_holdout <= RESIDUAL_FACTOR * floor
     slow = unsettled(best, run_length)
     if significant and share >= EXPLAINED and separated and leaves and not slow:
-        out.update(effect=best.name, status="explained",
+        out.update(effect=best.name, form=best.form, status="explained",
                    reason=f"{best.name} removes {100 * share:.0f} % of the holdout gap energy above the floor, "
                           f"separated from {second.name if second else 'every other effect'} (p = {p_second:.3f})")
         return out
@@ -294,7 +299,7 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
         for k, v in slow.items():
             why.append(f"its fitted {k} = {v:.3g} s is longer than the shortest training run ({run_length:.3g} s): "
                        f"it does not settle within a run and cannot be told from a slow drift")
-        out.update(effect=best.name, status="partial",
+        out.update(effect=best.name, form=best.form, status="partial",
                    reason=f"{best.name} explains part of the gap: " + "; ".join(why))
         return out
     out.update(effect=None, shrink_holdout=0.0, status="unexplained",

@@ -45,7 +45,7 @@ class Diagnosis:
             shrink = 1.0 - f.nrmse_holdout / self.baseline_holdout if self.baseline_holdout > 0 else 0.0
             by_channel = {c: float(1.0 - v / self.baseline_channels[c]) if self.baseline_channels.get(c) else 0.0
                           for c, v in f.nrmse_channels.items()}
-            candidates.append({"effect": f.name, "params": f.params, "nrmse_train": f.nrmse_train,
+            candidates.append({"effect": f.name, "form": f.form, "params": f.params, "nrmse_train": f.nrmse_train,
                                "nrmse_holdout": f.nrmse_holdout, "shrink_holdout": float(shrink),
                                "nrmse_holdout_channels": f.nrmse_channels,
                                "shrink_holdout_channels": by_channel,

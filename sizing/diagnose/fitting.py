@@ -43,6 +43,11 @@ class EffectFit:
         return "+".join(e.name for e in self.named)
 
     @property
+    def form(self) -> str:
+        """The form of each named effect, joined like ``name``."""
+        return "+".join(e.form for e in self.named)
+
+    @property
     def params(self) -> dict:
         out, col = {}, 0
         single = len(self.named) == 1

@@ -8,7 +8,9 @@ An effect acts in one or both of two places:
 - ``measure``: the measurement path, a pure post-processing of one simulated
   position trace (sensor delay, backlash, sensor vibration).
 Effects are plain data plus these two hooks (scikit-learn habit: bounds are
-declared as data).
+declared as data). An effect ``name`` is a family (CONTRACTS.md names);
+the library may hold several ``form``s of one family, alternatives that the
+attribution fits side by side and reports under the family name.
 """
 from __future__ import annotations
 
@@ -46,7 +48,7 @@ class Param:
 class Effect:
     """A candidate unmodelled effect (see the module docstring)."""
 
-    name: str
+    name: str                        # the family (CONTRACTS.md effect name); several forms may share it
     technology: str                  # "piezohydraulic" or "dc_motor"
     params: tuple = ()
     sizes: tuple = ()                # two realistic sizes: ({param: value}, {param: value})
@@ -58,6 +60,10 @@ class Effect:
     # nominal value (``nominal_factors``) instead of fixed ``sizes``.
     fields: dict = field(default_factory=dict)
     nominal_factors: tuple = ()
+    # Which form of the family this is (e.g. "karnopp" or "stribeck" for
+    # friction): forms of one family are alternatives judged together, never
+    # paired with each other and never each other's runner-up.
+    form: str = "default"
 
     @property
     def names(self) -> list[str]:

@@ -158,19 +158,22 @@ def _same(a: str, b: str) -> bool:
     return set(a.split("+")) == set(b.split("+"))
 
 
-def run_crossform(verbose: bool = True, only: str = "") -> dict:
+def run_crossform(verbose: bool = True, only: str = "", heldout: bool = False) -> dict:
     sys.path.insert(0, str(ROOT))
     from benchmarks.crossform import cases as xcases
     from benchmarks.crossform.common import write_campaign
     from sizing import api
 
     rows = []
-    for technology, table in (("dc_motor", xcases.DC), ("piezohydraulic", xcases.PIEZO)):
+    tables = ((("dc_motor", xcases.DC_HELDOUT), ("piezohydraulic", xcases.PIEZO_HELDOUT)) if heldout else
+              (("dc_motor", xcases.DC), ("piezohydraulic", xcases.PIEZO)))
+    seed0 = SEED * 100 + (5000 if heldout else 0)                 # other noise and misstatements
+    for technology, table in tables:
         for k, case in enumerate(table):
             if only and only not in case[0]:
                 continue
             start = time.perf_counter()
-            rig, runs, holdout = xcases.generate(case, SEED * 100 + k, technology)
+            rig, runs, holdout = xcases.generate(case, seed0 + k, technology)
             with tempfile.TemporaryDirectory() as folder:
                 write_campaign(Path(folder), rig, runs)
                 generated = time.perf_counter() - start
@@ -227,10 +230,12 @@ def main(argv=None) -> int:
     parser.add_argument("--json", type=Path, help="write every case and the summary here")
     parser.add_argument("--crossform", action="store_true", help="the second generator's campaigns instead")
     parser.add_argument("--only", default="", help="with --crossform: only the cases whose name contains this")
+    parser.add_argument("--heldout", action="store_true",
+                        help="with --crossform: the held-out set (other sizes, rigs, noise and seeds)")
     args = parser.parse_args(argv)
     start = time.perf_counter()
     if args.crossform:
-        result = run_crossform(only=args.only)
+        result = run_crossform(only=args.only, heldout=args.heldout)
         s = result["summary"]
         print(s["confusion"])
         print(f"right effect named (explained or partial): {s['named_right']} of {s['n_effect_cases']}; "

@@ -15,6 +15,16 @@ rings at the edges of voltage steps. The treatment, stated in every report:
 3. between two significant reversals the input is monotone: each piece is
    replaced by its isotonic (least-squares monotone) regression, so holds
    become flat and ramps never reverse.
+
+Steps are kept sharp: the low-pass smooths each stretch between two jumps
+on its own. A jump is a single-sample change far above the noise
+(JUMP_SIGMAS x sigma) that is also JUMP_ISOLATION times larger than both its
+neighbours: a fast ramp (a test amplifier's rate limit) changes by about
+the same amount every sample and is not a jump. Without the isolation test
+a ramp whose slope sits near the jump threshold is cut into pieces where
+the noise happens to cross it, and each piece is smoothed with its own
+edges: errors of several volts on the ramp, and a different error for each
+draw of the noise.
 """
 from __future__ import annotations
 
@@ -25,6 +35,7 @@ from scipy.optimize import isotonic_regression
 SMOOTH_SAMPLES = 4.0
 REVERSAL_SIGMAS = 6.0
 JUMP_SIGMAS = 8.0
+JUMP_ISOLATION = 3.0
 
 
 def noise_sigma(x: np.ndarray) -> float:
@@ -74,7 +85,7 @@ def treat_voltage(v: np.ndarray) -> np.ndarray:
     sigma = noise_sigma(v)
     # steps: jumps between two samples far above the noise are kept sharp by
     # smoothing each stretch between jumps on its own
-    jumps = np.flatnonzero(np.abs(np.diff(v)) > JUMP_SIGMAS * max(sigma, 1e-12)) + 1
+    jumps = step_edges(v, sigma)
     smooth = np.empty_like(v)
     for a, b in zip(np.r_[0, jumps], np.r_[jumps, len(v)]):
         smooth[a:b] = gaussian_filter1d(v[a:b], SMOOTH_SAMPLES, mode="nearest") if b - a > 1 else v[a:b]
@@ -86,6 +97,14 @@ def treat_voltage(v: np.ndarray) -> np.ndarray:
         increasing = piece[-1] >= piece[0]
         out[a:b + 1] = isotonic_regression(piece, increasing=increasing).x
     return out
+
+
+def step_edges(v: np.ndarray, sigma: float) -> np.ndarray:
+    """Indices i where v jumps between samples i - 1 and i (module docstring)."""
+    d = np.abs(np.diff(v))
+    neighbours = np.maximum(np.r_[0.0, d[:-1]], np.r_[d[1:], 0.0])
+    big = d > JUMP_SIGMAS * max(sigma, 1e-12)
+    return np.flatnonzero(big & (d > JUMP_ISOLATION * neighbours)) + 1
 
 
 def describe() -> str:

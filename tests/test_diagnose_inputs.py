@@ -1,0 +1,31 @@
+"""The treatment of a measured piezo voltage (sizing/diagnose/inputs.py)
+against the clean signal it was made from."""
+import numpy as np
+
+from sizing.diagnose.inputs import JUMP_SIGMAS, step_edges, treat_voltage
+
+
+def _noisy(v, sigma, seed=0):
+    return v + np.random.default_rng(seed).normal(0.0, sigma, v.size)
+
+
+def test_a_fast_ramp_at_the_jump_threshold_is_not_cut_into_pieces():
+    # a 40-sample ramp whose per-sample change equals the jump threshold:
+    # noise pushes half its samples over it; none of them is a jump
+    sigma = 0.3
+    slope = JUMP_SIGMAS * sigma
+    clean = np.concatenate([np.zeros(200), slope * np.arange(1, 41), np.full(200, 40 * slope)])
+    noisy = _noisy(clean, sigma)
+    assert step_edges(noisy, sigma).size == 0
+    treated = treat_voltage(noisy)
+    ramp = slice(205, 235)                     # away from the corners the low-pass rounds
+    assert np.max(np.abs(treated[ramp] - clean[ramp])) < 3 * sigma
+
+
+def test_a_step_stays_sharp():
+    sigma = 0.3
+    clean = np.r_[np.zeros(300), np.full(300, 100.0)]
+    noisy = _noisy(clean, sigma, seed=1)
+    assert list(step_edges(noisy, sigma)) == [300]
+    treated = treat_voltage(noisy)
+    assert abs(treated[299]) < 3 * sigma and abs(treated[300] - 100.0) < 3 * sigma

@@ -1,9 +1,11 @@
 """Speed of ``sizing robust`` and ``sizing sweep`` (issue 13).
 
     python benchmarks/robust_benchmark.py [--designs 10] [--samples 1000] [--workers 2] [--sweep 20]
+                                          [--technology piezohydraulic|dc_motor]
 
 1. The seed case (studies/seed-requirements.toml, 2 load cases) is solved
-   once; its ``--designs`` best designs get ``--samples`` Monte Carlo
+   once; its ``--designs`` best designs (of ``--technology`` when given;
+   since issue 11 the best are DC designs from parts) get ``--samples`` Monte Carlo
    samples each, every sample a full simulation under both load cases, run
    serially and on a local Dask cluster of ``--workers`` processes. Prints
    the wall time, the throughput in simulated candidate-seconds per wall
@@ -48,13 +50,16 @@ def main() -> None:
     ap.add_argument("--samples", type=int, default=1000)
     ap.add_argument("--workers", type=int, default=2)
     ap.add_argument("--sweep", type=int, default=20, help="solves in the sweep (0: skip)")
+    ap.add_argument("--technology", choices=["piezohydraulic", "dc_motor"], default=None,
+                    help="study only this technology's best designs (default: the best of both)")
     args = ap.parse_args()
 
     req, sha = load_requirements(REQ)
     cat = load_catalog(None)
     results, t_solve = timed(lambda: solve(req, sha, cat).results)
-    designs = pick_designs(results, args.designs)
-    print(f"seed solve: {t_solve:.1f} s; {len(designs)} designs x {args.samples} samples x 2 load cases")
+    designs = pick_designs(results, args.designs, args.technology)
+    techs = sorted({d["technology"] for d in designs})
+    print(f"seed solve: {t_solve:.1f} s; {len(designs)} designs ({', '.join(techs)}) x {args.samples} samples x 2 load cases")
 
     serial, t_serial = timed(lambda: robust(req, cat, designs, args.samples, 0, Executor(0)))
     sim_s = serial["simulated_candidate_s"]

@@ -219,8 +219,10 @@ def _executor(scheduler: str | None, workers: int, cluster=None, progress=None):
 
 def robust(requirements_path: str | Path, out_dir: str | Path | None = "robust-out", catalog_dir=None,
            samples: int = 1000, seed: int = 0, designs: int = 10, scheduler: str | None = None,
-           workers: int = 0, cluster=None, progress=None, bouc_wen_fit: str | Path | None = None) -> dict:
+           workers: int = 0, cluster=None, progress=None, bouc_wen_fit: str | Path | None = None,
+           technology: str | None = None) -> dict:
     """Probability of compliance of the ``designs`` best designs of ``solve``
+    (piezohydraulic and DC from parts; only ``technology``'s when given)
     under the [tolerances] (CONTRACTS.md, second round). ``workers`` > 0: a
     local Dask cluster of that many processes; ``scheduler``: a running one;
     ``cluster``: a dask cluster object. ``bouc_wen_fit``: a ``sizing fit
@@ -239,6 +241,8 @@ def robust(requirements_path: str | Path, out_dir: str | Path | None = "robust-o
         raise InputError(None, "--samples", f"expected at least 1 sample, got {samples}")
     if designs < 1:
         raise InputError(None, "--designs", f"expected at least 1 design, got {designs}")
+    if technology not in (None, "piezohydraulic", "dc_motor"):
+        raise InputError(None, "--technology", f'expected "piezohydraulic" or "dc_motor", got {technology!r}')
     req, sha = load_requirements(requirements_path)
     cat = load_catalog(catalog_dir)
     extra = None
@@ -249,9 +253,10 @@ def robust(requirements_path: str | Path, out_dir: str | Path | None = "robust-o
         from .engine.solve import solve as run                # (the engine's imports take seconds)
         from .studies.robust import pick_designs, robust as run_robust
         results = run(req, sha, cat, progress=progress).results
-        picked = pick_designs(results, designs)
+        picked = pick_designs(results, designs, technology)
         if not picked:
-            raise InputError(str(requirements_path), None, "no sized piezohydraulic design to study")
+            raise InputError(str(requirements_path), None, "no sized design (piezohydraulic, or DC from parts) "
+                                                           f"to study{'' if technology is None else ' of ' + technology}")
         data = run_robust(req, cat, picked, samples, seed, ex, extra_spreads=extra,
                           progress=(lambda d, t: progress("sampling", d, t)) if progress else None)
     data["requirements_sha256"] = sha

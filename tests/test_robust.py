@@ -19,7 +19,7 @@ from sizing.studies.robust import robust
 from sizing.studies.stats import wilson
 from sizing.studies.tolerances import Tolerance, factors, perturbed_combo
 
-from .conftest import ONE_DESIGN, STUDIES, run_cli, subset_catalog
+from .conftest import CATALOGS, ONE_DESIGN, STUDIES, run_cli, subset_catalog
 
 # at the default duty (one stroke per second) the amplifier's continuous current
 # fails every piezohydraulic design (issue 9); at 0.1 strokes/s the other
@@ -129,14 +129,16 @@ def test_local_dask_cluster_gives_the_serial_numbers(tmp_path, small_catalog):
     from dask.distributed import LocalCluster
     req, _ = load_requirements(_requirements(tmp_path))          # default tolerances
     _, nominal, _ = _nominal(req, small_catalog)
-    cands = [c for c in nominal]
-    serial = robust(req, small_catalog, cands, samples=40, seed=11, executor=Executor(0), batch=20)
+    both = _with_dc_parts(small_catalog)
+    cands = [c for c in nominal] + [_dc_candidate(req, both)]    # and a DC design from parts
+    serial = robust(req, both, cands, samples=40, seed=11, executor=Executor(0), batch=20)
+    assert serial["designs"][-1]["technology"] == "dc_motor"
     # threads keep the test quick (worker processes spend ~20 s importing the engine on a loaded
     # 2-core machine; benchmarks/robust_benchmark.py runs processes); pickling is checked below.
     with LocalCluster(n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None) as cluster:
         with Executor(cluster=cluster) as ex:
             assert "2 workers" in ex.where
-            spread = robust(req, small_catalog, cands, samples=40, seed=11, executor=ex, batch=20)
+            spread = robust(req, both, cands, samples=40, seed=11, executor=ex, batch=20)
     for out in (serial, spread):
         out.pop("where")
     assert json.dumps(serial, sort_keys=True) == json.dumps(spread, sort_keys=True)
@@ -155,7 +157,10 @@ def test_local_dask_cluster_gives_the_serial_numbers(tmp_path, small_catalog):
 @pytest.mark.parametrize("extra, args, field", [
     ('\n[tolerances]\n"stack.strok" = "5 %"\n', [], "stack.strok"),
     ('\n[tolerances]\n"stack.stiffness" = "-5 %"\n', [], "stack.stiffness"),
+    ('\n[tolerances]\n"motor.torque_konstant" = "10 %"\n', [], "motor.torque_konstant"),   # neither technology's
+    ('\n[tolerances]\n"drive.max_temperature" = "10 %"\n', [], "drive.max_temperature"),  # a temperature
     ("", ["--samples", "0"], "--samples"),
+    ("", ["--technology", "hydraulic"], "--technology"),
 ])
 def test_bad_input_exits_2_with_one_line_and_writes_nothing(tmp_path, extra, args, field):
     out = tmp_path / "out"
@@ -251,3 +256,114 @@ def test_bouc_wen_spreads_from_a_fit_and_their_effect(tmp_path, small_catalog):
     assert (p.stack.bouc_wen.d33, p.stack.bouc_wen.alpha, p.stack.bouc_wen.n) == (bw.d33, bw.alpha, bw.n)
     with pytest.raises(ValueError):
         perturbed_combo(combo, tols, np.array([1.2]))        # the loop must be given
+
+
+# --- DC designs sized from parts (issue 13, the DC path) --------------------
+DC_PARTS = dict(motor="gen-bldc42-28v-h", screw="ball-12x2", drive="servo-48v-10a")
+
+
+def _dc_catalog(gear=None):
+    """The shipped catalog cut down to one motor, screw, drive (and gear)."""
+    from dataclasses import replace
+
+    from sizing.io.catalog import load_catalog
+    full = load_catalog(CATALOGS)
+    return replace(full, motors={DC_PARTS["motor"]: full.motors[DC_PARTS["motor"]]},
+                   screws={DC_PARTS["screw"]: full.screws[DC_PARTS["screw"]]},
+                   drives={DC_PARTS["drive"]: full.drives[DC_PARTS["drive"]]},
+                   gears={} if gear is None else {gear: full.gears[gear]})
+
+
+def _with_dc_parts(catalog):
+    """``catalog`` plus the DC parts of ``_dc_catalog``."""
+    from dataclasses import replace
+    dc = _dc_catalog()
+    return replace(catalog, motors=dc.motors, screws=dc.screws, drives=dc.drives, gears={})
+
+
+def _dc_candidate(req, catalog, gear=None) -> dict:
+    """The DC design of these parts as ``sizing solve`` sizes and verifies it."""
+    from sizing.engine.dc_sizing import dc_parts_candidates
+    loads = [c["load_N"] for c in load_cases(req.load)]
+    cands = dc_parts_candidates(req, catalog, loads)["candidates"]
+    return next(c for c in cands if c["components"]["gear"] == gear and c["stage"] == "simulated")
+
+
+def test_dc_screw_efficiency_tolerance_gives_the_closed_form_probability(tmp_path):
+    # Closed form for the DC path: the blocked force of a DC design from parts is
+    # F = min(2 pi eta_s eta_g N k_t i_max / l, 2 pi eta_s T_gear / l) (engine/dc_parts.py), so
+    # both terms, and F, are proportional to the screw efficiency eta_s. A relative normal
+    # spread s on eta_s (capped at 1, which only clips the upper tail) and a nominal margin m
+    # give P(blocked force) = P(1 + s z >= 1 / (1 + m)) = Phi(m / ((1 + m) s)).
+    # Judged at 1.7 kN (sized parts deliver ~2.8 kN): m ~ 0.66, P = 0.91, naive Phi(m / s) = 0.99.
+    s = 0.30
+    path = _requirements(tmp_path, f'\n[tolerances]\n"screw.efficiency" = "{s * 100:g} %"\n')
+    path.write_text(path.read_text().replace('blocked_force = "2.5 kN"', 'blocked_force = "1.7 kN"', 1))
+    req, _ = load_requirements(path)
+    catalog = _dc_catalog()
+    cand = _dc_candidate(req, catalog)
+    m = cand["margins"]["blocked_force"]
+    assert 0.5 < m < 0.9
+    expected = norm.cdf(m / ((1 + m) * s))
+    out = robust(req, catalog, [cand], samples=400, seed=5, executor=Executor(0))
+    d = out["designs"][0]
+    lo, hi = d["p_requirement_ci95"]["blocked_force"]
+    print(f"closed form: m={m:.4f} s={s} P={expected:.4f}, estimate {d['p_requirement']['blocked_force']:.4f} "
+          f"[{lo:.4f}, {hi:.4f}]")
+    assert lo <= expected <= hi
+    assert not lo <= norm.cdf(m / s) <= hi
+    assert d["technology"] == "dc_motor" and list(d["sensitivity"]) == ["screw.efficiency"]
+
+
+def test_dc_nominal_samples_reproduce_the_solve_and_the_controller_stays(tmp_path):
+    from sizing.engine.rank import verdict
+    from sizing.engine.sized import study_designs
+    from sizing.studies.robust import BatchTask, run_batch
+    from sizing.studies.tolerances import perturbed_parts, tolerances_of
+    req, _ = load_requirements(_requirements(tmp_path))
+    catalog = _dc_catalog("planetary32-3.5")
+    loads = [c["load_N"] for c in load_cases(req.load)]
+    for gear in (None, "planetary32-3.5"):
+        cand = _dc_candidate(req, catalog, gear)
+        design = study_designs(req, catalog, [cand])[0]
+        assert design.settings["kp"] == cand["controller"]["kp"] and design.has_gear == (gear is not None)
+        # zero spreads: every margin is the solve's, exactly
+        out = run_batch(BatchTask(req, catalog, design, cand["id"], tolerances_of({"motor.torque_constant": 0.0}),
+                                  0, 0, 0, 2, loads))
+        assert {k: v[0] for k, v in out["margins"].items()} == cand["margins"]
+        assert bool(out["feasible"][0]) == verdict(cand["margins"])[0]
+        # gear fields apply only where there is a gear
+        keys = run_batch(BatchTask(req, catalog, design, cand["id"], tolerances_of(req.tolerance_spreads),
+                                   0, 0, 0, 2, loads))["keys"]
+        assert ("gear.efficiency" in keys) == (gear is not None) and "stack.stroke" not in keys
+        assert "operating.temperature" in keys
+    # a torque-constant factor moves k_t and k_e together (one flux); efficiency is capped at 1
+    tols = [Tolerance("motor.torque_constant", 0.1), Tolerance("screw.efficiency", 0.1)]
+    p = perturbed_parts(design.parts, tols, np.array([[0.9, 1.05], [1.1, 1.2]]))
+    v0 = design.parts.values
+    assert p.values["motor_torque_constant"] == pytest.approx(v0["motor_torque_constant"][0] * np.array([0.9, 1.1]))
+    assert p.values["motor_back_emf_constant"] == pytest.approx(v0["motor_back_emf_constant"][0] * np.array([0.9, 1.1]))
+    assert p.values["screw_efficiency"] == pytest.approx([min(1.0, 1.05 * v0["screw_efficiency"][0]), 1.0])
+    assert p.values["motor_winding_resistance"] == pytest.approx([v0["motor_winding_resistance"][0]] * 2)
+    assert len(design.parts) == 1                       # the design's own parts are untouched
+
+
+def test_dc_and_piezo_designs_share_robust_json_each_with_its_own_tolerances(tmp_path, small_catalog):
+    req, _ = load_requirements(_requirements(tmp_path))          # default tolerances: both technologies'
+    _, nominal, _ = _nominal(req, small_catalog)
+    both = _with_dc_parts(small_catalog)
+    cands = [_dc_candidate(req, both), nominal[0]]
+    out = robust(req, both, cands, samples=40, seed=2, executor=Executor(0), batch=20)
+    json.dumps(out, allow_nan=False)
+    dc, ph = out["designs"]
+    assert (dc["technology"], ph["technology"]) == ("dc_motor", "piezohydraulic")
+    for d in (dc, ph):
+        assert 0.0 <= d["p_compliance"] <= 1.0 and d["p_ci95"][0] <= d["p_compliance"] <= d["p_ci95"][1]
+        assert d["p_requirement"] and "operating.temperature" in d["sensitivity"]
+    assert not any(k.split(".")[0] in ("stack", "fluid", "seal", "amplifier") for k in dc["sensitivity"])
+    assert not any(k.split(".")[0] in ("motor", "screw", "gear", "drive") for k in ph["sensitivity"])
+    assert "motor.torque_constant" in dc["sensitivity"] and "stack.stroke" in ph["sensitivity"]
+    # a tolerance of the other technology only: the design keeps its nominal verdict
+    req2, _ = load_requirements(_requirements(tmp_path, '\n[tolerances]\n"screw.efficiency" = "30 %"\n'))
+    ph2 = robust(req2, both, cands[1:], samples=20, seed=2, executor=Executor(0))["designs"][0]
+    assert ph2["sensitivity"] == {} and ph2["p_compliance"] == float(cands[1]["feasible"])

@@ -153,22 +153,30 @@ def temperature_margin(rated, required):
         return np.where(np.isfinite(required), (np.asarray(rated) - required) / np.maximum(np.abs(required), 1.0), -np.inf)
 
 
-def static_screen(p: PartArrays, req, loads) -> tuple[dict, dict, dict]:
-    """(plant, static figures, margins): dicts of (n,) arrays."""
+def static_screen(p: PartArrays, req, loads, ambient=None, settings=None) -> tuple[dict, dict, dict]:
+    """(plant, static figures, margins): dicts of (n,) arrays.
+    ``ambient`` (sizing robust): per row, the temperature the parts work at
+    instead of the required maximum (k_t and the hot resistance follow it;
+    ratings are still judged at the maximum). ``settings``: the drive's
+    current limit and voltage limit as designed (``current_limit_A``,
+    ``voltage_limit_V``, (n,) arrays), which the drive keeps whatever the
+    parts: the hardware can only lower them (its peak current, its bus)."""
     r, o, v = req.requirements, req.options, p.values
     T = r.max_temperature
+    T_op = T if ambient is None else np.asarray(ambient, float)
     F_load = max(loads) if loads else 0.0
-    pl = plant(p, r.stroke, T)
+    pl = plant(p, r.stroke, T_op)
     kt, lead, eta = pl["torque_constant"], pl["lead"], pl["efficiency"]
-    i_max = current_limit(p, kt)
+    i_max = current_limit(p, kt) if settings is None else np.minimum(settings["current_limit_A"], v["drive_peak_current"])
     F_peak = np.minimum(screw_phys.force_from_torque(kt * i_max, lead, eta),
                         screw_phys.force_from_torque(v["gear_max_output_torque"], v["screw_lead"], v["screw_efficiency"]))
     i_load = screw_phys.torque_for_force(F_load, lead, eta) / kt
-    hold = winding(p, T, i_load)
+    hold = winding(p, T_op, i_load)
     r_hot = motor_phys.resistance_at(v["motor_winding_resistance"], v["motor_resistance_temperature_coefficient"],
                                      np.minimum(hold["temperature_degC"], 1e3))
+    rated = hold if ambient is None else winding(p, T, i_load)      # the ratings' check, at the maximum
     w_mech = np.minimum.reduce([v["motor_max_speed"], v["gear_max_input_speed"], v["screw_max_speed"] * v["gear_ratio"]])
-    u_drive = drive_voltage(p, w_mech)
+    u_drive = drive_voltage(p, w_mech) if settings is None else np.minimum(v["drive_bus_voltage"], settings["voltage_limit_V"])
     w_volt = motor_phys.speed_ceiling(u_drive, v["motor_back_emf_constant"], r_hot, i_load)
     w_max = np.minimum(w_volt, w_mech)
     v_max = screw_phys.output_speed(w_max, lead)
@@ -189,8 +197,8 @@ def static_screen(p: PartArrays, req, loads) -> tuple[dict, dict, dict]:
     margins = {
         "blocked_force": F_peak / r.blocked_force - 1.0,
         "speed": v_max / r.speed - 1.0,
-        "winding_temperature": temperature_margin(v["motor_max_winding_temperature"], hold["temperature_degC"]),
-        "magnet_temperature": temperature_margin(v["motor_magnet_max_temperature"], hold["temperature_degC"]),
+        "winding_temperature": temperature_margin(v["motor_max_winding_temperature"], rated["temperature_degC"]),
+        "magnet_temperature": temperature_margin(v["motor_magnet_max_temperature"], rated["temperature_degC"]),
         "temperature": temperature_margin(np.minimum.reduce([v["motor_max_temperature"], v["screw_max_temperature"],
                                                              v["gear_max_temperature"]]), T),
         "drive_temperature": temperature_margin(v["drive_max_temperature"], drive_ambient),

@@ -26,7 +26,7 @@ from . import dc_controller as ctl
 from .dc import OUTPUT_RATE_HZ, SETTLED
 from .dc_parts import enumerate_parts, metrics, static_screen, temperature_margin
 from .dc_candidates import dc_duration
-from .rank import nondominated_levels
+from .rank import nondominated_levels, verdict
 
 MAX_SIMULATED = 300     # designs simulated per solve (each under every load case)
 MIN_SIMULATED = 24      # filled with the closest-to-feasible when fewer pass the screen
@@ -96,16 +96,12 @@ def dc_parts_candidates(req, catalog, loads, progress=None, duration=None) -> di
     for i in range(len(p)):
         cid = design_id(p, i)
         st = {k: float(v[i]) for k, v in static.items()}
-        m = {k: float(v[i]) for k, v in margins.items()}
         st["no_load_max_speed_m_s"] = float(st["drive_voltage_V"] / p.values["motor_back_emf_constant"][i]
                                             * pl["lead"][i] / (2 * math.pi))
         sim = sims.get(i)
-        simulated = {}
+        simulated, m = _row_margins(req, p, i, st, margins, sim)
         if sim is not None:
-            simulated, sim_margins = _sim_figures(req, p, i, st, sim)
-            m.update(sim_margins)
             kept[cid] = sim["model"]
-        m = {k: val for k, val in m.items() if val != math.inf}     # no limit to check (e.g. no magnet rating)
         failed = [k for k, v in m.items() if not v >= 0]
         stage = "simulated" if sim is not None else ("sized" if not failed else "pruned")
         controller = {"kp": float(gains["kp"][i]), "ki": float(gains["ki"][i]), "kd": float(gains["kd"][i]),
@@ -130,6 +126,40 @@ def dc_parts_candidates(req, catalog, loads, progress=None, duration=None) -> di
             "reason": "" if not failed or stage == "simulated" else "ruled out before simulation: " + ", ".join(failed),
         })
     return {"candidates": out, "models": kept}
+
+
+def _row_margins(req, p, i, st, margins, sim) -> tuple[dict, dict]:
+    """(simulated figures, margins) of row i: the static margins, replaced by
+    the simulation's where it ran; a margin with no limit to check (inf,
+    e.g. no magnet rating) is dropped."""
+    m = {k: float(v[i]) for k, v in margins.items()}
+    simulated = {}
+    if sim is not None:
+        simulated, sim_margins = _sim_figures(req, p, i, st, sim)
+        m.update(sim_margins)
+    return simulated, {k: val for k, val in m.items() if val != math.inf}
+
+
+def verify_parts(req, p, loads, settings: dict, ambient=None, duration=None) -> list[dict]:
+    """Re-verify DC designs whose parts and settings are fixed (``sizing
+    robust``: one design, its parts perturbed per row) through the steps of
+    ``dc_parts_candidates``: static screen, simulation of every row under
+    every load case, margins, verdict. ``settings``: (n,) arrays of the
+    design's controller gains (kp, ki, kd: tuned on the nominal parts and
+    kept) and drive limits (current_limit_A, voltage_limit_V);
+    ``ambient``: optional per-row operating temperature (``static_screen``).
+    Returns per row {"margins", "feasible", "driver", "simulated"}."""
+    duration = dc_duration(req) if duration is None else duration
+    pl, static, margins = static_screen(p, req, loads, ambient=ambient, settings=settings)
+    gains = {k: np.asarray(settings[k], float) for k in ("kp", "ki", "kd")}
+    sims = _simulate(req, pl, static, gains, p, np.arange(len(p)), loads, duration, None)
+    out = []
+    for i in range(len(p)):
+        st = {k: float(v[i]) for k, v in static.items()}
+        simulated, m = _row_margins(req, p, i, st, margins, sims.get(i))
+        feasible, driver = verdict(m)
+        out.append({"margins": m, "feasible": feasible, "driver": driver, "simulated": simulated})
+    return out
 
 
 def _simulate(req, pl, static, gains, p, chosen, loads, duration, progress) -> dict:

@@ -1,10 +1,13 @@
-"""Rebuild a solved piezohydraulic design (a results.json candidate) as the
-(Combo, Variant, SizingResult) triple that ``solve.verify_sized`` re-verifies: the
-parts from the catalog, the geometry (R, wide bore, drive voltage) as sized.
-Used by ``sizing robust`` to re-run the solve's checks on perturbed parts."""
+"""Rebuild a solved design (a results.json candidate) for ``sizing robust``
+to re-run the solve's checks on perturbed parts: a piezohydraulic design as
+the (Combo, Variant, SizingResult) triple that ``solve.verify_sized``
+re-verifies (the parts from the catalog, the geometry (R, wide bore, drive
+voltage) as sized); a DC design from parts as its parts and its settings
+(``DCPartsDesign``, re-verified by ``dc_sizing.verify_parts``)."""
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 from ..errors import InputError
 from ..io.catalog import Catalog
@@ -48,3 +51,51 @@ def _combo_key(candidate_id: str, material: str, compensator: str | None) -> str
     (``Variant.suffix``: -MATERIAL, then -tc-COMPENSATOR or -pc)."""
     tail = f"-{material}" + (f"-tc-{compensator}" if compensator is not None else "")
     return candidate_id.removesuffix("-pc").removesuffix(tail)
+
+
+@dataclass(frozen=True)
+class DCPartsDesign:
+    """A solved DC design from parts, rebuilt for ``sizing robust``: its
+    parts as one row of ``dc_parts.PartArrays`` and what was set on the
+    nominal parts and stays when the parts vary (the controller's gains and
+    the drive's current and voltage limits, ``dc_sizing.verify_parts``)."""
+    parts: object           # PartArrays, one row
+    settings: dict          # kp, ki, kd, current_limit_A, voltage_limit_V
+    duration: float         # simulated time of each step (s), as solved
+
+    @property
+    def has_gear(self) -> bool:
+        return self.parts.gear[0] is not None
+
+
+def dc_parts_design(catalog: Catalog, cand: dict) -> DCPartsDesign:
+    """The DC design of a results.json candidate sized from parts."""
+    from dataclasses import replace
+    from .dc_parts import enumerate_parts
+    comp, ctl = cand.get("components", {}), cand.get("controller", {})
+    gear = comp.get("gear")
+    ok = (cand.get("technology") == "dc_motor" and cand.get("variant") == "parts"
+          and comp.get("motor") in catalog.motors and comp.get("screw") in catalog.screws
+          and comp.get("drive") in catalog.drives and (gear is None or gear in catalog.gears)
+          and all(k in ctl for k in SETTINGS))
+    if not ok:
+        raise InputError(None, cand.get("id"), "expected a DC design sized from parts of this catalog")
+    one = replace(catalog, motors={comp["motor"]: catalog.motors[comp["motor"]]},
+                  screws={comp["screw"]: catalog.screws[comp["screw"]]},
+                  gears={} if gear is None else {gear: catalog.gears[gear]},
+                  drives={comp["drive"]: catalog.drives[comp["drive"]]})
+    p = enumerate_parts(one)
+    row = [i for i in range(len(p)) if p.gear[i] == gear]
+    return DCPartsDesign(p.take(row), {k: float(ctl[k]) for k in SETTINGS},
+                         float(cand.get("design", {}).get("duration", 0.0)) or None)
+
+
+SETTINGS = ("kp", "ki", "kd", "current_limit_A", "voltage_limit_V")
+
+
+def study_designs(req: RequirementsFile, catalog: Catalog, candidates: list[dict]) -> list:
+    """What ``sizing robust`` perturbs, per candidate: a piezohydraulic
+    (Combo, Variant, SizingResult) triple (``sized_designs``) or a
+    ``DCPartsDesign``."""
+    return [dc_parts_design(catalog, c) if c.get("technology") == "dc_motor" else sized_designs(req, catalog, [c])[0]
+            for c in candidates]

@@ -81,17 +81,29 @@ class DutyTable(Strict):
 
 # [tolerances] (CONTRACTS.md, second round): relative 1-sigma normal spread of
 # a catalog field, keyed "kind.field". Used when the table is absent (sizing
-# robust); the values are the contract's example, assumed: typical datasheet
-# tolerances of PICA stacks (stroke, stiffness), oil bulk modulus data
-# scatter and seal friction scatter, not measured on these parts.
-DEFAULT_TOLERANCES = {"stack.stroke": 0.05, "stack.stiffness": 0.10, "fluid.bulk_modulus": 0.20,
-                      "seal.friction_per_length": 0.30, "fluid.air_fraction": 0.001,
-                      "operating.temperature": 1.0}
-# Pseudo-fields that are not catalog fields: "fluid.air_fraction", entrained
-# air, an absolute volume fraction (half-normal with this 1-sigma);
-# "operating.temperature", the fraction of the required range (from
-# options.drift_reference_temperature up to max_temperature), counted down
-# from the maximum, over which the operating temperature is uniform.
+# robust); the piezohydraulic values are the contract's example, assumed:
+# typical datasheet tolerances of PICA stacks (stroke, stiffness), oil bulk
+# modulus data scatter and seal friction scatter, not measured on these parts.
+# DC parts (issue 13): motor datasheets state +/-10 % on their data
+# (Beckhoff AM8100 technical data, "the data can have a tolerance of +/- 10%";
+# HIWIN torque motors, "+/-10 % for all specification values"), taken, like
+# the stack's, as the 1-sigma spread of k_t, R and R_th; the others are
+# assumed (README, "Robust sizing"). A tolerance applies to the designs whose
+# parts have that field: stack, fluid, seal, amplifier to piezohydraulic
+# designs, motor, screw, gear, drive to DC designs sized from parts;
+# operating.temperature to both.
+PIEZO_DEFAULT_TOLERANCES = {"stack.stroke": 0.05, "stack.stiffness": 0.10, "fluid.bulk_modulus": 0.20,
+                            "seal.friction_per_length": 0.30, "fluid.air_fraction": 0.001}
+DC_DEFAULT_TOLERANCES = {"motor.torque_constant": 0.10, "motor.winding_resistance": 0.10,
+                         "motor.thermal_resistance": 0.10,
+                         "motor.viscous_damping": 0.30,    # assumed: itself an estimate (catalogs/motors.toml)
+                         "screw.efficiency": 0.05,         # assumed: ball screws 0.85-0.95 with preload and grease
+                         "gear.efficiency": 0.05,          # assumed: as the screw's
+                         "drive.peak_current": 0.03,       # assumed: current-loop gain and shunt accuracy
+                         "drive.bus_voltage": 0.05}        # assumed: bus regulation under load
+DEFAULT_TOLERANCES = {**PIEZO_DEFAULT_TOLERANCES, **DC_DEFAULT_TOLERANCES, "operating.temperature": 1.0}
+PIEZO_PARTS = ("stack", "fluid", "seal", "amplifier")
+DC_PARTS = ("motor", "screw", "gear", "drive")
 TOLERANCE_PSEUDO_FIELDS = {"fluid.air_fraction", "operating.temperature"}
 # relative spreads of the stack's Bouc-Wen parameters (seed eq. 1-2), e.g.
 # from a fit's standard errors (``sizing robust --bouc-wen-fit``)
@@ -99,12 +111,13 @@ BOUC_WEN_TOLERANCES = tuple(f"stack.bouc_wen.{p}" for p in ("d33", "alpha", "bet
 
 
 def tolerance_fields() -> dict[str, list[str]]:
-    """Catalog fields a tolerance may name, per part kind: the numeric
-    quantities, without temperatures (a relative spread of a degC value
-    means nothing)."""
-    from .catalog import Amplifier, Fluid, Seal, Stack
+    """Catalog fields a tolerance may name, per part kind (piezohydraulic
+    parts and DC parts): the numeric quantities, without temperatures (a
+    relative spread of a degC value means nothing)."""
+    from .catalog import Amplifier, Drive, Fluid, Gear, Motor, Screw, Seal, Stack
     out = {}
-    for kind, model in {"stack": Stack, "fluid": Fluid, "seal": Seal, "amplifier": Amplifier}.items():
+    for kind, model in {"stack": Stack, "fluid": Fluid, "seal": Seal, "amplifier": Amplifier,
+                        "motor": Motor, "screw": Screw, "gear": Gear, "drive": Drive}.items():
         out[kind] = [f for f in model.quantity_fields()
                      if not (f.endswith("_temperature") or f == "flash_point")]
     return out

@@ -1,11 +1,14 @@
 """``sizing robust``: probability of compliance of the best designs under
 part tolerances (CONTRACTS.md, second round).
 
-For each of the K best piezohydraulic designs of ``sizing solve``, N
-samples of the tolerated catalog fields (``tolerances.py``) are drawn, and
-every sample is re-verified by the solve's own checks
-(``engine.solve.verify_sized``: static figures, margins and a full dynamic
-simulation under every load case). Work is split into tasks of one design x
+For each of the K best designs of ``sizing solve`` (piezohydraulic, and DC
+designs sized from parts), N samples of the tolerated catalog fields that
+apply to the design (``tolerances.py``) are drawn, and every sample is
+re-verified by the solve's own checks (piezohydraulic:
+``engine.solve.verify_sized``; DC: ``engine.dc_sizing.verify_parts``, with
+the controller and drive limits kept as designed on the nominal parts:
+static figures, margins and a full dynamic simulation under every load
+case). Work is split into tasks of one design x
 one batch of samples, each seeded by (seed, design, batch), and run by
 ``executor.Executor`` (serial, local Dask cluster or a scheduler): the same
 seed gives the same numbers wherever they ran.
@@ -27,13 +30,15 @@ import numpy as np
 from ..engine.evaluate import load_cases
 from ..engine.piezo import reference_bouc_wen, stack_bouc_wen
 from ..engine.rank import nondominated_levels
-from ..engine.sized import sized_designs
+from ..engine.dc_candidates import dc_duration
+from ..engine.dc_sizing import verify_parts
+from ..engine.sized import DCPartsDesign, study_designs
 from ..engine.solve import verify_sized
 from ..engine.verify import SETTLE_TIME_S
 from .executor import Executor, task_seed
 from .stats import sensitivity, wilson
-from .tolerances import (BOUC_WEN_PREFIX, Tolerance, factors, operating_temperatures, perturbed_combo,
-                         tolerances_of)
+from .tolerances import (BOUC_WEN_PREFIX, Tolerance, applicable, factors, operating_temperatures, perturbed_combo,
+                         perturbed_parts, tolerances_of)
 
 BATCH = 250                 # samples per task: one vectorised simulation per load case
 WORST_FLOOR = -1.0          # worst margin of a failed simulation, for the sensitivity
@@ -43,9 +48,9 @@ WORST_FLOOR = -1.0          # worst margin of a failed simulation, for the sensi
 class BatchTask:
     req: object
     catalog: object
-    design: tuple           # (Combo, Variant, SizingResult)
+    design: object          # (Combo, Variant, SizingResult), or engine.sized.DCPartsDesign
     variant_id: str         # the candidate id to read
-    tolerances: list[Tolerance]
+    tolerances: list[Tolerance]     # all of them: run_batch keeps those that apply to the design
     seed: int
     design_index: int
     batch_index: int
@@ -54,25 +59,48 @@ class BatchTask:
 
 
 def run_batch(task: BatchTask) -> dict:
-    """One design x one batch: perturb, re-verify, return margins per sample."""
+    """One design x one batch: perturb the tolerances that apply to the
+    design, re-verify, return margins per sample."""
+    tols = applicable(task.tolerances, task.design)
     rng = task_seed(task.seed, task.design_index, task.batch_index)
-    z = rng.standard_normal((task.size, len(task.tolerances)))
-    f = factors(task.tolerances, z)
-    combo, variant, res = task.design
-    bw = None
-    if any(t.key.startswith(BOUC_WEN_PREFIX) for t in task.tolerances):
-        bw = stack_bouc_wen(combo.stack, reference_bouc_wen(task.catalog.stacks))[0]
-    sized = [(perturbed_combo(combo, task.tolerances, row, bw), variant, res) for row in f]
+    z = rng.standard_normal((task.size, len(tols)))
+    f = factors(tols, z)
     r, o = task.req.requirements, task.req.options
-    temps = operating_temperatures(task.tolerances, f, o.drift_reference_temperature, r.max_temperature)
-    verified = verify_sized(task.req, task.catalog, sized, task.loads, chunk=task.size, temperatures=temps)
-    picked = [_pick(cands, task.variant_id) for cands in verified]
+    temps = operating_temperatures(tols, f, o.drift_reference_temperature, r.max_temperature)
+    verify = _verify_dc if isinstance(task.design, DCPartsDesign) else _verify_piezo
+    picked, sim_s = verify(task, tols, f, temps)
     keys = sorted({k for c in picked for k in c["margins"]})
     margins = {k: np.array([_finite(c["margins"].get(k)) for c in picked]) for k in keys}
+    return {"keys": [t.key for t in tols], "z": z, "margins": margins,
+            "feasible": np.array([c["feasible"] for c in picked]), "simulated_s": float(sim_s)}
+
+
+def _verify_piezo(task: BatchTask, tols: list[Tolerance], f: np.ndarray, temps) -> tuple[list[dict], float]:
+    """The solve's own checks (``verify_sized``) of each perturbed sample;
+    (the design's candidate per sample, simulated seconds)."""
+    combo, variant, res = task.design
+    bw = None
+    if any(t.key.startswith(BOUC_WEN_PREFIX) for t in tols):
+        bw = stack_bouc_wen(combo.stack, reference_bouc_wen(task.catalog.stacks))[0]
+    sized = [(perturbed_combo(combo, tols, row, bw), variant, res) for row in f]
+    verified = verify_sized(task.req, task.catalog, sized, task.loads, chunk=task.size, temperatures=temps)
+    picked = [_pick(cands, task.variant_id) for cands in verified]
     sim_s = sum(sum(case["ramp_time_s"] + SETTLE_TIME_S for case in c["simulated"].get("cases", []))
                 for c in picked)
-    return {"z": z, "margins": margins, "feasible": np.array([c["feasible"] for c in picked]),
-            "simulated_s": float(sim_s)}
+    return picked, sim_s
+
+
+def _verify_dc(task: BatchTask, tols: list[Tolerance], f: np.ndarray, temps) -> tuple[list[dict], float]:
+    """The DC solve's checks (``dc_sizing.verify_parts``) of each perturbed
+    sample, with the controller and drive limits as designed on the nominal
+    parts; (per sample its verdict, simulated seconds)."""
+    d = task.design
+    n = f.shape[0]
+    settings = {k: np.full(n, v) for k, v in d.settings.items()}
+    duration = d.duration if d.duration is not None else dc_duration(task.req)
+    picked = verify_parts(task.req, perturbed_parts(d.parts, tols, f), task.loads, settings,
+                          ambient=temps, duration=duration)
+    return picked, n * len(task.loads) * duration
 
 
 def _pick(cands: list[dict], variant_id: str) -> dict:
@@ -87,9 +115,13 @@ def _finite(v) -> float:
     return -math.inf if v is None or (isinstance(v, float) and math.isnan(v)) else float(v)
 
 
-def pick_designs(results: dict, k: int) -> list[dict]:
-    """The K best sized piezohydraulic candidates, in rank order."""
-    out = [c for c in results["candidates"] if c["technology"] == "piezohydraulic" and "design" in c]
+def pick_designs(results: dict, k: int, technology: str | None = None) -> list[dict]:
+    """The K best candidates robust can perturb, in rank order: sized
+    piezohydraulic designs and DC designs from parts (not the catalog's
+    ready-made DC actuators); only ``technology``'s when given."""
+    out = [c for c in results["candidates"] if "design" in c and (
+        c["technology"] == "piezohydraulic" or (c["technology"] == "dc_motor" and c.get("variant") == "parts"))
+        and technology in (None, c["technology"])]
     return out[:k]
 
 
@@ -100,7 +132,7 @@ def robust(req, catalog, candidates: list[dict], samples: int, seed: int, execut
     Bouc-Wen spreads of a fit (``io.fit_spreads``)."""
     tols = tolerances_of({**req.tolerance_spreads, **(extra_spreads or {})})
     loads = [c["load_N"] for c in load_cases(req.load)]
-    designs = sized_designs(req, catalog, candidates)
+    designs = study_designs(req, catalog, candidates)
     tasks = []
     for d, (cand, design) in enumerate(zip(candidates, designs)):
         for b, start in enumerate(range(0, samples, batch)):
@@ -110,7 +142,7 @@ def robust(req, catalog, candidates: list[dict], samples: int, seed: int, execut
     out_designs = []
     for d, cand in enumerate(candidates):
         parts = [r for t, r in zip(tasks, done) if t.design_index == d]
-        out_designs.append(_summarise(cand, tols, parts, seed))
+        out_designs.append(_summarise(cand, parts, seed))
     _robust_front(out_designs)
     return {"samples": samples, "seed": seed, "tolerances": {t.key: t.spread for t in tols},
             "tolerances_source": "requirements [tolerances]" if req.tolerances is not None else "defaults",
@@ -122,7 +154,10 @@ def robust(req, catalog, candidates: list[dict], samples: int, seed: int, execut
             "designs": out_designs}
 
 
-def _summarise(cand: dict, tols: list[Tolerance], parts: list[dict], seed: int) -> dict:
+def _summarise(cand: dict, parts: list[dict], seed: int) -> dict:
+    """The design's figures over its samples; its sensitivity indices are
+    over the tolerances that apply to it (``tolerances.applicable``)."""
+    names = parts[0]["keys"]
     z = np.concatenate([p["z"] for p in parts])
     feasible = np.concatenate([p["feasible"] for p in parts])
     keys = sorted({k for p in parts for k in p["margins"]})
@@ -130,7 +165,7 @@ def _summarise(cand: dict, tols: list[Tolerance], parts: list[dict], seed: int) 
     n = len(feasible)
     ok = int(feasible.sum())
     worst = np.clip(np.min(np.vstack([margins[k] for k in keys]), axis=0), WORST_FLOOR, None)
-    sens = sensitivity([t.key for t in tols], z, worst, seed=seed)
+    sens = sensitivity(names, z, worst, seed=seed)
     p_req = {k: float(np.mean(margins[k] >= 0)) for k in keys}
     failing = sorted((k for k in keys if p_req[k] < 1.0), key=p_req.get)
     return {"id": cand["id"], "technology": cand["technology"], "rank": cand.get("rank"),

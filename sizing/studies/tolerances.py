@@ -23,6 +23,14 @@ Two rules tie fields together:
   volume fraction a = s |z| (half-normal: air is never negative), lowering
   the oil's bulk modulus by Wood's rule at ``AIR_PRESSURE_PA``
   (``physics.fluid.effective_bulk_modulus``).
+- DC designs from parts (``perturbed_parts``): ``motor.torque_constant``
+  also scales ``back_emf_constant`` (one magnet flux: k_t = k_e in SI), and
+  an efficiency (screw, gear) is capped at 1.
+
+A tolerance applies to the designs whose parts have that field
+(``applicable``): stack, fluid, seal and amplifier fields to piezohydraulic
+designs, motor, screw, gear and drive fields to DC designs from parts (gear
+fields only where the design has a gear), ``operating.temperature`` to all.
 """
 from __future__ import annotations
 
@@ -64,6 +72,18 @@ class Tolerance:
 def tolerances_of(spreads: dict[str, float]) -> list[Tolerance]:
     """Sorted, so the order of the sample columns does not depend on the file."""
     return [Tolerance(k, float(v)) for k, v in sorted(spreads.items())]
+
+
+def applicable(tols: list[Tolerance], design) -> list[Tolerance]:
+    """The tolerances that move ``design``'s parts (``engine.sized``: a
+    piezohydraulic triple or a DCPartsDesign), in the given order."""
+    from ..engine.sized import DCPartsDesign
+    from ..io.requirements import DC_PARTS, PIEZO_PARTS
+    if isinstance(design, DCPartsDesign):
+        parts = tuple(p for p in DC_PARTS if p != "gear" or design.has_gear)
+    else:
+        parts = PIEZO_PARTS
+    return [t for t in tols if t.key == OPERATING_TEMPERATURE or t.part in parts]
 
 
 def factors(tols: list[Tolerance], z: np.ndarray) -> np.ndarray:
@@ -137,3 +157,21 @@ def _scaled_displacement(stack, factor: float) -> dict:
 
 def _table(b: BoucWen) -> BoucWenTable:
     return BoucWenTable.model_construct(d33=b.d33, alpha=b.alpha, beta=b.beta, gamma=b.gamma, delta=b.delta, n=b.n)
+
+
+def perturbed_parts(parts, tols: list[Tolerance], f: np.ndarray):
+    """``parts`` (dc_parts.PartArrays, one row) repeated once per sample,
+    each field named by a tolerance scaled by that sample's factor (f (n, p),
+    ``factors``). The catalog parts are untouched."""
+    n = f.shape[0]
+    out = parts.take(np.zeros(n, dtype=int))
+    values = dict(out.values)
+    for j, t in enumerate(tols):
+        if t.key == OPERATING_TEMPERATURE:
+            continue                       # not a part: the operating temperature (robust.run_batch)
+        names = [f"{t.part}_{t.field}"] + (["motor_back_emf_constant"] if t.key == "motor.torque_constant" else [])
+        for name in names:
+            scaled = values[name] * f[:, j]
+            values[name] = np.minimum(scaled, 1.0) if t.field == "efficiency" else scaled
+    out.values = values
+    return out

@@ -14,7 +14,7 @@ PIEZO = (seal_stick_slip.EFFECT, fluid_compressibility.EFFECT, viscous_damping.E
          leakage.EFFECT, stack_creep.EFFECT, amplifier_slew_limit.EFFECT, no_return.EFFECT,
          sensor_delay.PIEZO)
 DC = (current_saturation.COMMAND, current_saturation.DRIVE, coulomb_friction.COULOMB, coulomb_friction.STRIBECK,
-      backlash.EFFECT,
+      backlash.PLAY, backlash.COASTING,
       sensor_vibration.EFFECT, sensor_delay.DC)
 
 

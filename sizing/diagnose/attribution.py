@@ -16,7 +16,8 @@
    effect on the holdout runs only.
 4. Pairs: when no single effect explains the gap, the best pairs of the
    top fitted singles (TOP_PAIRS families; a single only screened, not
-   promising on the training runs, is not paired) are fitted together; a pair ranks first only when it is
+   promising on the training runs, is not paired) are fitted together,
+   and the best single with the next family; a pair ranks first only when it is
    significantly better than the best of its two singles (same bootstrap)
    and removes >= PAIR_GAIN of the gap energy that single leaves above the floor.
 5. Verdict (all measures are the combined measure of bench.py, holdout runs):
@@ -199,9 +200,11 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
         for f in fits:
             if f.message == "screened only":
                 continue                                  # not promising on the training runs: not paired
-            if len(tops) < TOP_PAIRS and f.name not in {t.name for t in tops}:
+            if len(tops) < TOP_PAIRS + 1 and f.name not in {t.name for t in tops}:
                 tops.append(f)
-        for a, b in itertools.combinations(tops, 2):
+        # every pair of the top TOP_PAIRS families, and the best single with the next family
+        combos = list(itertools.combinations(tops[:TOP_PAIRS], 2)) + [(tops[0], t) for t in tops[TOP_PAIRS:]]
+        for a, b in combos:
             ea, eb = a.named, b.named
             if {e.name for e in ea} & {e.name for e in eb}:
                 continue                                  # two forms of one family are alternatives, not a pair

@@ -16,6 +16,14 @@ proportional term may act on the measurement instead of the error (I-PD,
 zero-order-hold solution of eq. 13 (eq. 14 for the velocity), with the load
 current of PHYSICS-NOTES and optional Coulomb friction (Karnopp: a piston at
 rest stays at rest while the net current is inside the friction band).
+Two forms of the diagnose library (issue 10) add fields, inert at their
+defaults (the traces are then bit-identical): ``drive_current_limit``, a
+limit of the drive on the actual motor current that the controller does not
+know (the motor gets the clipped current, the recorded ``current_A`` is the
+command, the integrator winds up), and a Stribeck friction curve,
+``static_friction`` (breakaway, N) above ``coulomb_friction`` falling over
+``stribeck_velocity`` (m/s), F(v) = F_c + (F_s - F_c) exp(-(v/v_s)^2), taken at
+the speed at the start of each interval; a piston at rest breaks away at F_s.
 Many candidates run at once; positions are reported from the rest position.
 """
 from __future__ import annotations
@@ -44,7 +52,8 @@ class DCMotorModel(ParameterSet):
     lead m, rate Hz, kp A/m, ki A/(m s), kd A s/m, current_limit A, load N and
     N/m, efficiency -, torque_constant N m/A, coulomb_friction N,
     bus_voltage V (inf: no ceiling), back_emf_constant V s/rad (bus-referred),
-    winding_resistance ohm. ``lead`` is output metres per motor radian x 2 pi
+    winding_resistance ohm, drive_current_limit A (inf: none),
+    static_friction N (<= coulomb_friction: none), stribeck_velocity m/s. ``lead`` is output metres per motor radian x 2 pi
     (screw lead / gear ratio)."""
 
     c1: object

@@ -101,3 +101,15 @@ def test_bad_input_exits_2_with_one_line(tmp_path, rig, columns, match):
     assert proc.returncode == 2
     assert len(proc.stderr.strip().splitlines()) == 1 and match.split(":")[0] in proc.stderr
     assert not (tmp_path / "out").exists()
+
+
+def test_drive_current_limit_is_named_with_its_form(tmp_path):
+    """A drive that limits the actual current to 4.5 A behind the
+    controller's back (the logged command is not clipped, the loop winds up):
+    current_saturation in its ``drive`` form, the limit found within 10 %."""
+    folder = _campaign(tmp_path, {"current_limit": 4.5}, seed=23)
+    d = api.diagnose(folder, ["stairs_b"])
+    assert d.verdict["effect"] == "current_saturation" and d.verdict["form"] == "drive"
+    assert d.verdict["status"] == "explained"
+    best = d.fits[0]
+    assert best.params["current_limit_A"] == pytest.approx(4.5, rel=0.1)

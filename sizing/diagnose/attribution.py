@@ -11,9 +11,13 @@
    seeded Latin-hypercube of parameter sets, one simulator batch per
    effect, scored on the training runs.
 3. Fit the promising effects (least squares on the training runs, from the
-   best screened point); judge every effect on the holdout runs only.
+   best screened point): the best-screened form of each of the TOP_FIT best
+   families, and any form that screens at < 0.9 x the baseline; judge every
+   effect on the holdout runs only.
 4. Pairs: when no single effect explains the gap, the best pairs of the
-   top singles are fitted together; a pair ranks first only when it is
+   top fitted singles (TOP_PAIRS families; a single only screened, not
+   promising on the training runs, is not paired) are fitted together,
+   and the best single with the next family; a pair ranks first only when it is
    significantly better than the best of its two singles (same bootstrap)
    and removes >= PAIR_GAIN of the gap energy that single leaves above the floor.
 5. Verdict (all measures are the combined measure of bench.py, holdout runs):
@@ -171,8 +175,15 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
     def fit_with(effects, z):
         return fitting.fit(bench, head + tuple(effects), np.concatenate([z_head, z]), bench.train)
 
-    for rank, (effect, z0, score) in enumerate(screened):
-        promising = rank < TOP_FIT or score < 0.9 * base_train
+    # TOP_FIT counts families: the best-screened form of each of the top
+    # TOP_FIT families is fitted (so a family with several forms does not
+    # push another family out), and any form that screens well on its own
+    family_rank = {}
+    for effect, _, _ in screened:
+        family_rank.setdefault(effect.name, (len(family_rank), effect))
+    for effect, z0, score in screened:
+        rank, first_form = family_rank[effect.name]
+        promising = (rank < TOP_FIT and effect is first_form) or score < 0.9 * base_train
         if promising:
             f = fit_with([effect], z0)
         else:
@@ -185,11 +196,15 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
     enough = (explained(baseline_holdout, best.nrmse_holdout, floor) >= EXPLAINED
               and best.nrmse_holdout <= RESIDUAL_FACTOR * floor)
     if pairs and not enough:
-        tops = []                                         # the best form of each of the top families
+        tops = []                                         # the best fitted form of each of the top families
         for f in fits:
-            if len(tops) < TOP_PAIRS and f.name not in {t.name for t in tops}:
+            if f.message == "screened only":
+                continue                                  # not promising on the training runs: not paired
+            if len(tops) < TOP_PAIRS + 1 and f.name not in {t.name for t in tops}:
                 tops.append(f)
-        for a, b in itertools.combinations(tops, 2):
+        # every pair of the top TOP_PAIRS families, and the best single with the next family
+        combos = list(itertools.combinations(tops[:TOP_PAIRS], 2)) + [(tops[0], t) for t in tops[TOP_PAIRS:]]
+        for a, b in combos:
             ea, eb = a.named, b.named
             if {e.name for e in ea} & {e.name for e in eb}:
                 continue                                  # two forms of one family are alternatives, not a pair

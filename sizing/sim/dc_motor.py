@@ -16,6 +16,14 @@ proportional term may act on the measurement instead of the error (I-PD,
 zero-order-hold solution of eq. 13 (eq. 14 for the velocity), with the load
 current of PHYSICS-NOTES and optional Coulomb friction (Karnopp: a piston at
 rest stays at rest while the net current is inside the friction band).
+Two forms of the diagnose library (issue 10) add fields, inert at their
+defaults (the traces are then bit-identical): ``drive_current_limit``, a
+limit of the drive on the actual motor current that the controller does not
+know (the motor gets the clipped current, the recorded ``current_A`` is the
+command, the integrator winds up), and a Stribeck friction curve,
+``static_friction`` (breakaway, N) above ``coulomb_friction`` falling over
+``stribeck_velocity`` (m/s), F(v) = F_c + (F_s - F_c) exp(-(v/v_s)^2), taken at
+the speed at the start of each interval; a piston at rest breaks away at F_s.
 Many candidates run at once; positions are reported from the rest position.
 """
 from __future__ import annotations
@@ -32,7 +40,7 @@ PARAMS = (
     "c1", "c2", "lead", "rate", "kp", "ki", "kd", "derivative_on_measurement",
     "current_limit", "load_force", "load_stiffness", "efficiency", "torque_constant",
     "coulomb_friction", "proportional_on_measurement", "bus_voltage", "back_emf_constant",
-    "winding_resistance",
+    "winding_resistance", "drive_current_limit", "static_friction", "stribeck_velocity",
 )
 CHANNELS = ("position_m", "velocity_m_s", "current_A")
 
@@ -44,7 +52,8 @@ class DCMotorModel(ParameterSet):
     lead m, rate Hz, kp A/m, ki A/(m s), kd A s/m, current_limit A, load N and
     N/m, efficiency -, torque_constant N m/A, coulomb_friction N,
     bus_voltage V (inf: no ceiling), back_emf_constant V s/rad (bus-referred),
-    winding_resistance ohm. ``lead`` is output metres per motor radian x 2 pi
+    winding_resistance ohm, drive_current_limit A (inf: none),
+    static_friction N (<= coulomb_friction: none), stribeck_velocity m/s. ``lead`` is output metres per motor radian x 2 pi
     (screw lead / gear ratio)."""
 
     c1: object
@@ -65,14 +74,18 @@ class DCMotorModel(ParameterSet):
     bus_voltage: object = np.inf
     back_emf_constant: object = 0.0
     winding_resistance: object = 1.0
+    drive_current_limit: object = np.inf
+    static_friction: object = 0.0
+    stribeck_velocity: object = 0.0
 
 
 @numba.njit(cache=True)
-def _plant_step(y, v, u, a, b, a_y, b_y, c1, g, Ts, i_fric):
+def _plant_step(y, v, u, a, b, a_y, b_y, c1, g, Ts, i_fric, i_stick):
     """Advance eq. 13 over one hold period with net current u (before
-    friction). Returns y, v."""
+    friction): running friction i_fric, breakaway i_stick (>= i_fric; equal
+    for Coulomb friction). Returns y, v."""
     if i_fric > 0.0:
-        if v == 0.0 and abs(u) <= i_fric:
+        if v == 0.0 and abs(u) <= i_stick:
             return y, 0.0
         s = 1.0 if v > 0.0 else (-1.0 if v < 0.0 else (1.0 if u > 0.0 else -1.0))
         u = u - s * i_fric
@@ -118,14 +131,26 @@ def _hit_time(v0, v_star, c, g, u):
 
 
 @numba.njit(cache=True)
-def _advance(y, v, i, dt, c1, c1v, g, load_i, i_fric, U, ke, Rw, to_speed, limited):
+def _friction_level(v, i_fric, i_stat, v_s):
+    """Friction current at speed v: Coulomb i_fric, or with a Stribeck
+    curve (v_s > 0, i_stat > i_fric) i_fric + (i_stat - i_fric) exp(-(v/v_s)^2),
+    evaluated at the speed at the start of the step. Returns (running, breakaway)."""
+    if v_s > 0.0 and i_stat > i_fric:
+        r = v / v_s
+        return i_fric + (i_stat - i_fric) * np.exp(-r * r), i_stat
+    return i_fric, i_fric
+
+
+@numba.njit(cache=True)
+def _advance(y, v, i, dt, c1, c1v, g, load_i, i_fric, U, ke, Rw, to_speed, limited, i_stat, v_s):
     """Advance the plant over dt with the drive holding current i, except
     where the bus voltage cannot push it: then the motor is voltage-driven
     (i = (U - k_e w) / R) from the instant R i + k_e w reaches U.
     Returns y, v and the current flowing at the end."""
     if not limited:
         a, b, a_y, b_y = _zoh(c1, g, dt)
-        y, v = _plant_step(y, v, i - load_i, a, b, a_y, b_y, c1, g, dt, i_fric)
+        f_run, f_stick = _friction_level(v, i_fric, i_stat, v_s)
+        y, v = _plant_step(y, v, i - load_i, a, b, a_y, b_y, c1, g, dt, f_run, f_stick)
         return y, v, i
     need = Rw * i + ke * v * to_speed
     if abs(need) <= U:
@@ -135,14 +160,16 @@ def _advance(y, v, i, dt, c1, c1v, g, load_i, i_fric, U, ke, Rw, to_speed, limit
         t_hit = _hit_time(v, v_star, c1, g, i - load_i)
         t1 = min(t_hit, dt)
         a, b, a_y, b_y = _zoh(c1, g, t1)
-        y, v = _plant_step(y, v, i - load_i, a, b, a_y, b_y, c1, g, t1, i_fric)
+        f_run, f_stick = _friction_level(v, i_fric, i_stat, v_s)
+        y, v = _plant_step(y, v, i - load_i, a, b, a_y, b_y, c1, g, t1, f_run, f_stick)
         if t_hit >= dt:
             return y, v, i
         dt = dt - t1
         v = v_star
     V_app = U if Rw * i + ke * v * to_speed > 0.0 else -U
     a, b, a_y, b_y = _zoh(c1v, g, dt)
-    y, v = _plant_step(y, v, V_app / Rw - load_i, a, b, a_y, b_y, c1v, g, dt, i_fric)
+    f_run, f_stick = _friction_level(v, i_fric, i_stat, v_s)
+    y, v = _plant_step(y, v, V_app / Rw - load_i, a, b, a_y, b_y, c1v, g, dt, f_run, f_stick)
     return y, v, (V_app - ke * v * to_speed) / Rw
 
 
@@ -151,6 +178,7 @@ def _simulate_one(p, t_ref, r_row, t_out, rec):
     c1, c2, lead, rate, kp, ki, kd = p[0], p[1], p[2], p[3], p[4], p[5], p[6]
     d_meas, i_max, F0, kL, eta, kt, Fc = p[7], p[8], p[9], p[10], p[11], p[12], p[13]
     p_meas, U, ke, Rw = p[14], p[15], p[16], p[17]
+    i_drv, Fs, v_s = p[18], p[19], p[20]
     Ts = 1.0 / rate
     g = lead / (2.0 * np.pi) * c2
     limited = U < np.inf and ke > 0.0
@@ -158,6 +186,7 @@ def _simulate_one(p, t_ref, r_row, t_out, rec):
     to_speed = 2.0 * np.pi / lead                        # motor rad/s per m/s
     to_current = lead / (2.0 * np.pi * eta * kt)     # A per N at the output
     i_fric = Fc * to_current
+    i_stat = Fs * to_current                             # Stribeck breakaway (0: Coulomb only)
     y, v = 0.0, 0.0
     # rest under the load: the integrator already holds the load current
     integ = (F0 * to_current / ki) if ki != 0.0 else 0.0
@@ -169,19 +198,26 @@ def _simulate_one(p, t_ref, r_row, t_out, rec):
     n_out = t_out.shape[0]
     while j < n_out:
         load_i = (F0 + kL * y) * to_current
+        # a drive current limit the controller does not know: the motor
+        # gets the clipped current, the logged current is the command
+        i_act = min(max(i, -i_drv), i_drv)
+        drive_clipped = i_act != i
         # record every output time that falls inside this control period
         while j < n_out and t_out[j] < t + Ts - 1e-12:
             tau = t_out[j] - t
             if tau <= 0.0:
                 rec[0, j], rec[1, j], rec[2, j] = y, v, i
             else:
-                rec[0, j], rec[1, j], rec[2, j] = _advance(y, v, i, tau, c1, c1v, g, load_i, i_fric,
-                                                          U, ke, Rw, to_speed, limited)
+                rec[0, j], rec[1, j], rec[2, j] = _advance(y, v, i_act, tau, c1, c1v, g, load_i, i_fric,
+                                                          U, ke, Rw, to_speed, limited, i_stat, v_s)
+                if drive_clipped:
+                    rec[2, j] = i
             j += 1
         if j >= n_out:
             break
         # controller tick at time t + Ts: sample, compute, hold
-        y, v, _ = _advance(y, v, i, Ts, c1, c1v, g, load_i, i_fric, U, ke, Rw, to_speed, limited)
+        y, v, _ = _advance(y, v, i_act, Ts, c1, c1v, g, load_i, i_fric, U, ke, Rw, to_speed, limited,
+                           i_stat, v_s)
         t += Ts
         r = np.interp(t, t_ref, r_row)
         err = r - y

@@ -13,7 +13,8 @@ from .base import Effect, Param
 PIEZO = (seal_stick_slip.EFFECT, fluid_compressibility.EFFECT, viscous_damping.EFFECT,
          leakage.EFFECT, stack_creep.EFFECT, amplifier_slew_limit.EFFECT, no_return.EFFECT,
          sensor_delay.PIEZO)
-DC = (current_saturation.EFFECT, coulomb_friction.EFFECT, backlash.EFFECT,
+DC = (current_saturation.COMMAND, current_saturation.DRIVE, coulomb_friction.COULOMB, coulomb_friction.STRIBECK,
+      backlash.PLAY, backlash.COASTING,
       sensor_vibration.EFFECT, sensor_delay.DC)
 
 

@@ -244,7 +244,8 @@ def _lugre_step(F, u, z, F_c, F_s, inv_vs, z_pre, m, dt):
     the presliding deflection at breakaway), bristle damping sigma1 =
     sqrt(sigma0 m) (damping ratio 1/2 of the bristle mode). The speed is
     advanced semi-implicitly (bristle damping implicit), then the bristle
-    relaxes exactly towards its steady deflection at the new speed.
+    relaxes exactly towards its steady deflection at the new speed (the
+    bristle spring and damping are implicit in the speed: stable at any step).
     Returns the new speed and bristle deflection."""
     s0 = F_s / z_pre
     s1 = np.sqrt(s0 * m)
@@ -252,8 +253,10 @@ def _lugre_step(F, u, z, F_c, F_s, inv_vs, z_pre, m, dt):
     g = F_c + (F_s - F_c) * np.exp(-w * w) if inv_vs > 0.0 else F_c
     g = max(g, 1e-12)
     k = s0 * abs(u) / g
-    # friction with z' = u - k z; the s1 u part of it taken implicitly in u
-    u_new = (m * u + dt * (F - s0 * z + s1 * k * z)) / (m + dt * s1)
+    # friction s0 z + s1 z' with z' = u - k z; the bristle spring and damping
+    # taken implicitly in u (z -> z + u_new dt), so a stiff bristle (short
+    # presliding) stays stable at the step of the hydraulics
+    u_new = (m * u + dt * (F - s0 * z + s1 * k * z)) / (m + dt * s1 + dt * dt * s0)
     w = u_new * inv_vs
     g = F_c + (F_s - F_c) * np.exp(-w * w) if inv_vs > 0.0 else F_c
     g = max(g, 1e-12)

@@ -14,7 +14,7 @@ PIEZO = (seal_stick_slip.EFFECT, fluid_compressibility.EFFECT, viscous_damping.E
          leakage.EFFECT, stack_creep.EFFECT, amplifier_slew_limit.EFFECT, no_return.EFFECT,
          sensor_delay.PIEZO,
          # widened forms (issue 10): alternatives of the families above
-         seal_stick_slip.STRIBECK, seal_stick_slip.LUGRE, stack_creep.LOG, fluid_compressibility.AIR, leakage.ORIFICE,
+         seal_stick_slip.LUGRE, stack_creep.LOG, fluid_compressibility.AIR, leakage.ORIFICE,
          amplifier_slew_limit.BANDWIDTH)
 DC = (current_saturation.EFFECT, coulomb_friction.EFFECT, backlash.EFFECT,
       sensor_vibration.EFFECT, sensor_delay.DC)

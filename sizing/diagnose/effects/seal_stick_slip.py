@@ -17,7 +17,9 @@ al., Eur. J. Control 4 (1998) 176), with a Stribeck velocity v_s of 1-10
 mm/s for lubricated elastomer and PTFE seals; the wide seal keeps its
 nominal friction (only the output seal is changed: a stuck output seal
 against a sliding wide seal is the stepped motion). Sizes: 1.5 N, 1.8 x,
-5 mm/s and 3 N, 2 x, 1 mm/s.
+5 mm/s and 3 N, 2 x, 1 mm/s. (STRIBECK is kept for use and tests; the
+library holds the "lugre" form, whose steady state is this curve, to keep
+one extra seal form's fitting time.)
 
 Form "lugre" (dynamic friction with presliding): the same Stribeck curve
 as the steady state of a LuGre bristle state (Canudas de Wit, Olsson,

@@ -75,7 +75,7 @@ STRIBECK = SealStribeck(
 
 LUGRE = SealLuGre(
     name="seal_stick_slip", technology="piezohydraulic", form="lugre",
-    params=STRIBECK.params + (Param("presliding_m", 1e-6, 1e-4, log=True,
+    params=STRIBECK.params + (Param("presliding_m", 5e-6, 2e-4, log=True,
                                     doc="bristle deflection of the output seal at breakaway"),),
     sizes=({"narrow_friction_N": 1.5, "breakaway_ratio": 1.8, "stribeck_velocity_m_s": 5e-3, "presliding_m": 1e-5},
            {"narrow_friction_N": 3.0, "breakaway_ratio": 2.0, "stribeck_velocity_m_s": 1e-3, "presliding_m": 3e-5}),

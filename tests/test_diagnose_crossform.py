@@ -101,3 +101,23 @@ def test_bad_input_exits_2_with_one_line(tmp_path, rig, columns, match):
     assert proc.returncode == 2
     assert len(proc.stderr.strip().splitlines()) == 1 and match.split(":")[0] in proc.stderr
     assert not (tmp_path / "out").exists()
+
+
+def test_lugre_seal_from_the_second_generator_is_explained_as_seal_stick_slip(tmp_path):
+    """Issue 10 acceptance (piezo): the second generator's output seal is
+    LuGre with a Stribeck rise (3 N running, 6 N breakaway, 1 mm/s, 10 um
+    presliding), its own RK4 with the oil pressure as a state, a mis-stated
+    nominal, white + 1/f + quantisation noise, a seed other than the
+    benchmark's. The diagnosis explains the gap and names seal_stick_slip
+    (the LuGre form). With this seed the pair test also keeps stack_creep
+    next to it (the pair is significantly better than the seal alone: the
+    creep takes up part of the model-form difference of the hysteresis), so
+    the name is checked as a member of the verdict, not as the whole of it;
+    on the benchmark's own seed (pz-seal-b) the seal alone is named."""
+    from benchmarks.crossform import piezo
+    rig, runs = piezo.campaign({"seal": cases.SEAL_B}, seed=17)
+    folder = write_campaign(tmp_path / "c", rig, runs)
+    d = api.diagnose(folder, ["stairs_b"])
+    assert d.verdict["status"] == "explained", d.verdict["reason"]
+    assert "seal_stick_slip" in d.verdict["effect"].split("+")
+    assert "lugre" in d.verdict["form"].split("+")

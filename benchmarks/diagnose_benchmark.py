@@ -88,7 +88,7 @@ def drift(t, y, rng):
     return y + 0.03 * np.ptp(y) * (t - t[0])
 
 
-def run(quick: bool = False, n_null: int = 4, verbose: bool = True) -> dict:
+def run(quick: bool = False, n_null: int = 4, verbose: bool = True, default_forms: bool = False) -> dict:
     cases, per_rig = [], {}
     case_id = 0
     for spec in rigs():
@@ -98,6 +98,8 @@ def run(quick: bool = False, n_null: int = 4, verbose: bool = True) -> dict:
         jobs = []
         for effect in library(kind):
             if effect.name in spec["skip"] or not effect.applicable(rig, model):
+                continue
+            if default_forms and effect.form != "default":
                 continue
             sizes = effect.sizes_for(rig, model)
             for k in range(1 if (quick or not effect.params) else 2):
@@ -141,7 +143,7 @@ def run(quick: bool = False, n_null: int = 4, verbose: bool = True) -> dict:
         "per_rig": per_rig,
     }
     for kind in ("piezohydraulic", "dc_motor"):
-        names = list(dict.fromkeys(e.name for e in library(kind))) + [NONE]
+        names = list(dict.fromkeys(e.name for e in library(kind))) + [NONE]   # forms share a family name
         kc = [Case(c["truth"], c["size"], c["predicted"], c["shrink"], c["seconds"]) for c in cases
               if c["truth"] in names and any(r["name"] == c["rig"] and r["kind"] == kind for r in RIG_KINDS)]
         summary[f"confusion_{kind}"] = CheckResult(kind, names, kc).table()
@@ -227,6 +229,8 @@ def crossform_table(rows) -> str:
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="one size per effect, one null per rig")
+    parser.add_argument("--default-forms", action="store_true",
+                        help="inject only the default form of each family (the library still diagnoses with every form)")
     parser.add_argument("--json", type=Path, help="write every case and the summary here")
     parser.add_argument("--crossform", action="store_true", help="the second generator's campaigns instead")
     parser.add_argument("--only", default="", help="with --crossform: only the cases whose name contains this")
@@ -247,7 +251,7 @@ def main(argv=None) -> int:
         if args.json:
             args.json.write_text(json.dumps(result, indent=2, default=float))
         return 0
-    result = run(quick=args.quick)
+    result = run(quick=args.quick, default_forms=args.default_forms)
     s = result["summary"]
     print()
     for kind in ("piezohydraulic", "dc_motor"):

@@ -113,3 +113,23 @@ def test_drive_current_limit_is_named_with_its_form(tmp_path):
     assert d.verdict["status"] == "explained"
     best = d.fits[0]
     assert best.params["current_limit_A"] == pytest.approx(4.5, rel=0.1)
+
+
+def test_lugre_seal_from_the_second_generator_is_explained_as_seal_stick_slip(tmp_path):
+    """Issue 10 acceptance (piezo): the second generator's output seal is
+    LuGre with a Stribeck rise (3 N running, 6 N breakaway, 1 mm/s, 10 um
+    presliding), its own RK4 with the oil pressure as a state, a mis-stated
+    nominal, white + 1/f + quantisation noise, a seed other than the
+    benchmark's. The diagnosis explains the gap and names seal_stick_slip
+    (the LuGre form). With this seed the pair test also keeps stack_creep
+    next to it (the pair is significantly better than the seal alone: the
+    creep takes up part of the model-form difference of the hysteresis), so
+    the name is checked as a member of the verdict, not as the whole of it;
+    on the benchmark's own seed (pz-seal-b) the seal alone is named."""
+    from benchmarks.crossform import piezo
+    rig, runs = piezo.campaign({"seal": cases.SEAL_B}, seed=17)
+    folder = write_campaign(tmp_path / "c", rig, runs)
+    d = api.diagnose(folder, ["stairs_b"])
+    assert d.verdict["status"] == "explained", d.verdict["reason"]
+    assert "seal_stick_slip" in d.verdict["effect"].split("+")
+    assert "lugre" in d.verdict["form"].split("+")

@@ -8,7 +8,10 @@ low-pass is not enough (any wiggle left is a reversal), and a sharp one
 rings at the edges of voltage steps. The treatment, stated in every report:
 
 1. a zero-phase Gaussian low-pass (symmetric kernel: no delay, no overshoot
-   at steps) of standard deviation SMOOTH_SAMPLES samples;
+   at steps) of standard deviation SMOOTH_SAMPLES samples, on each stretch
+   between jumps (a sample-to-sample change above JUMP_SIGMAS x the noise)
+   on its own, each extended past its ends by odd reflection so that
+   ramps keep their slope to the ends of a stretch;
 2. the significant reversals: the turning points of a zig-zag with a
    threshold of REVERSAL_SIGMAS times the noise of the logged voltage
    (estimated from its second differences) and at least 0.5 % of its range;
@@ -77,6 +80,21 @@ def reversals(x: np.ndarray, threshold: float) -> list[int]:
     return pivots
 
 
+def smooth_piece(x: np.ndarray) -> np.ndarray:
+    """Zero-phase Gaussian low-pass of one stretch between jumps, extended
+    past its ends by odd (point) reflection, so that a straight line is
+    passed unchanged: a stretch that is part of a fast ramp (a commanded
+    step with a finite rate, cut into short stretches where single samples
+    cross the jump threshold) keeps its slope up to its ends instead of
+    being flattened towards them."""
+    x = np.asarray(x, float)
+    if x.size < 3:
+        return x.copy()
+    pad = int(4 * SMOOTH_SAMPLES + 1)
+    ext = np.pad(x, pad, mode="reflect", reflect_type="odd")
+    return gaussian_filter1d(ext, SMOOTH_SAMPLES, mode="nearest")[pad:pad + x.size]
+
+
 def treat_voltage(v: np.ndarray) -> np.ndarray:
     """The treated input (see the module docstring)."""
     v = np.asarray(v, float)
@@ -88,7 +106,7 @@ def treat_voltage(v: np.ndarray) -> np.ndarray:
     jumps = step_edges(v, sigma)
     smooth = np.empty_like(v)
     for a, b in zip(np.r_[0, jumps], np.r_[jumps, len(v)]):
-        smooth[a:b] = gaussian_filter1d(v[a:b], SMOOTH_SAMPLES, mode="nearest") if b - a > 1 else v[a:b]
+        smooth[a:b] = smooth_piece(v[a:b])
     threshold = max(REVERSAL_SIGMAS * sigma, 0.005 * float(np.ptp(v)), 1e-12)
     pivots = reversals(smooth, threshold)
     out = smooth.copy()

@@ -44,6 +44,8 @@ PARAMS = (
     "load_force", "load_stiffness", "viscous_damping", "leak_conductance",
     "creep_fraction", "creep_time", "slew_rate", "no_return", "dt_max",
     "wide_friction_pressure", "narrow_friction_pressure",
+    "narrow_stribeck_velocity", "log_creep", "log_creep_time", "air_fraction", "air_polytropic",
+    "leak_orifice_area", "amp_bandwidth", "narrow_presliding",
 )
 IDX = {name: i for i, name in enumerate(PARAMS)}
 CHANNELS = ("position_m", "pressure_Pa", "wide_position_m", "voltage_V")
@@ -90,10 +92,20 @@ class PiezoHydraulicModel(ParameterSet):
     dt_max: object = 5e-5
     wide_friction_pressure: object = 0.0     # N/Pa: running friction grows with |p| (seals at pressure)
     narrow_friction_pressure: object = 0.0
-
+    # Widened forms of the effects (issue 10); each is off at its default,
+    # and then the kernel runs the nominal path unchanged.
+    narrow_stribeck_velocity: object = 0.0   # m/s: Stribeck rise of the output seal (0: Karnopp)
+    log_creep: object = 0.0                  # creep per decade of time, fraction of the free stroke
+    log_creep_time: object = 0.01            # s: shortest of the LOG_CREEP_MODES modes a decade apart
+    air_fraction: object = 0.0               # entrained air, volume fraction at atmospheric pressure
+    air_polytropic: object = 1.4             # polytropic index of the entrained air (1: isothermal)
+    leak_orifice_area: object = 0.0          # m^2: discharge coefficient x area of an orifice leak
+    amp_bandwidth: object = 0.0              # rad/s: first-order amplifier bandwidth (0: unlimited)
+    narrow_presliding: object = 0.0          # m: LuGre output seal, bristle deflection at breakaway (0: Karnopp)
 
 
 STEP_FACTOR = 0.2   # dt * omega_max: ~30 steps per period of the fastest mode
+LUGRE_STEP = 0.1    # dt * omega of the oil + bristle mode of a LuGre output seal
 
 
 def stable_step(P: np.ndarray, step_factor: float = STEP_FACTOR) -> np.ndarray:
@@ -105,6 +117,15 @@ def stable_step(P: np.ndarray, step_factor: float = STEP_FACTOR) -> np.ndarray:
     m = P[:, IDX["narrow_mass"]]
     omega = np.sqrt(k / m)
     dt = np.minimum(P[:, IDX["dt_max"]], step_factor / omega)
+    # a LuGre output seal: its bristle spring sigma0 = F_s / z_pre in parallel
+    # (the stick-slip cycle it takes part in needs a finer step than the
+    # oil mode: LUGRE_STEP of the combined mode)
+    pre = P[:, IDX["narrow_presliding"]]
+    lugre = pre > 0
+    if lugre.any():
+        s0 = P[:, IDX["narrow_friction"]] * P[:, IDX["narrow_breakaway"]] / np.where(lugre, pre, 1.0)
+        omega_b = np.sqrt((k + s0) / m)
+        dt = np.where(lugre, np.minimum(dt, LUGRE_STEP * step_factor / STEP_FACTOR / omega_b), dt)
     damping = P[:, IDX["viscous_damping"]]
     dt = np.where(damping > 0, np.minimum(dt, 0.5 * m / np.maximum(damping, 1e-300)), dt)
     return dt
@@ -120,6 +141,48 @@ def _equilibrium(K, xf, A_w, A_n, V0, bulk, F0, kL):
     p = (-a * A_w * xf * kL - a * A_n * F0) / det
     y = (c * F0 - a * A_n * A_w * xf) / det
     return xf - A_w * p / K, y, p
+
+
+P_ATM = 1.0e5         # Pa, absolute pressure of the oil at zero gauge (entrained air)
+LOG_CREEP_MODES = 4   # creep modes a decade apart (log creep as a Prony series)
+
+
+@numba.njit(cache=True, error_model="numpy")
+def air_strain(p, eps0, kappa, bulk):
+    """Volume strain s = -dV/V0 of oil carrying entrained air at gauge
+    pressure p, and ds/dp: the oil at its bulk modulus plus a polytropic gas,
+    s = (1 - eps0) p / bulk + eps0 (1 - (p_atm / p_abs)^(1/kappa)), so that
+    1 / beta(p) = ds/dp = (1 - eps0) / bulk + eps(p) / (kappa p_abs) with
+    eps(p) = eps0 (p_atm / p_abs)^(1/kappa) (Merritt 1967, sec. 2.3;
+    Gholizadeh, Burton and Schoenau, Int. J. Fluid Power 15 (2014)). Below
+    0.2 atm absolute the gas is held at that volume (no cavitation model)."""
+    pa = p + P_ATM
+    gas = True
+    if pa < 0.2 * P_ATM:
+        pa = 0.2 * P_ATM
+        gas = False
+    r = (P_ATM / pa) ** (1.0 / kappa)
+    s = (1.0 - eps0) * p / bulk + eps0 * (1.0 - r)
+    ds = (1.0 - eps0) / bulk
+    if gas:
+        ds += eps0 * r / (kappa * pa)
+    return s, ds
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _air_equilibrium(K, xf, A_w, A_n, V0, bulk, F0, kL, eps0, kappa):
+    """Static rest with entrained air: _equilibrium at the secant bulk
+    modulus p / s(p), iterated to its fixed point."""
+    x, y, p = _equilibrium(K, xf, A_w, A_n, V0, bulk, F0, kL)
+    for _ in range(60):
+        s, ds = air_strain(p, eps0, kappa, bulk)
+        sec = p / s if abs(p) > 1e-6 and s != 0.0 else 1.0 / ds
+        x, y, p_new = _equilibrium(K, xf, A_w, A_n, V0, sec, F0, kL)
+        if abs(p_new - p) <= 1e-9 * (abs(p) + 1.0):
+            p = p_new
+            break
+        p = p_new
+    return x, y, p
 
 
 @numba.njit(cache=True, error_model="numpy")
@@ -167,6 +230,52 @@ def _narrow_accel(F, u, F_run, F_static, inv_m):
     return (F - (F_run if u > 0.0 else -F_run)) * inv_m
 
 
+@numba.njit(cache=True, error_model="numpy")
+def _narrow_accel_stribeck(F, u, F_run, F_static, inv_m, inv_vs):
+    """Karnopp stick with a Stribeck curve while sliding: the friction falls
+    from the breakaway F_static at rest to the running F_run as
+    F_run + (F_static - F_run) exp(-(u / v_s)^2) (Armstrong-Helouvry,
+    Dupont and Canudas de Wit, Automatica 30 (1994) 1083)."""
+    if u == 0.0:
+        if abs(F) <= F_static:
+            return 0.0
+        return (F - (F_static if F > 0.0 else -F_static)) * inv_m
+    w = u * inv_vs
+    Ff = F_run + (F_static - F_run) * np.exp(-w * w)
+    return (F - (Ff if u > 0.0 else -Ff)) * inv_m
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _lugre_step(F, u, z, F_c, F_s, inv_vs, z_pre, m, dt):
+    """One step of the output piston with a LuGre seal (Canudas de Wit,
+    Olsson, Astrom and Lischinsky, IEEE TAC 40 (1995) 419): friction
+    sigma0 z + sigma1 z', z' = u - sigma0 |u| z / g(u), g(u) = F_c + (F_s -
+    F_c) exp(-(u / v_s)^2); bristle stiffness sigma0 = F_s / z_pre (z_pre:
+    the presliding deflection at breakaway), bristle damping sigma1 =
+    sqrt(sigma0 m) (damping ratio 1/2 of the bristle mode). The speed is
+    advanced semi-implicitly (bristle damping implicit), then the bristle
+    relaxes exactly towards its steady deflection at the new speed (the
+    bristle spring and damping are implicit in the speed: stable at any step).
+    Returns the new speed and bristle deflection."""
+    s0 = F_s / z_pre
+    s1 = np.sqrt(s0 * m)
+    w = u * inv_vs
+    g = F_c + (F_s - F_c) * np.exp(-w * w) if inv_vs > 0.0 else F_c
+    g = max(g, 1e-12)
+    k = s0 * abs(u) / g
+    # friction s0 z + s1 z' with z' = u - k z; the bristle spring and damping
+    # taken implicitly in u (z -> z + u_new dt), so a stiff bristle (short
+    # presliding) stays stable at the step of the hydraulics
+    u_new = (m * u + dt * (F - s0 * z + s1 * k * z)) / (m + dt * s1 + dt * dt * s0)
+    w = u_new * inv_vs
+    g = F_c + (F_s - F_c) * np.exp(-w * w) if inv_vs > 0.0 else F_c
+    g = max(g, 1e-12)
+    if u_new != 0.0:
+        zss = g / s0 * (1.0 if u_new > 0.0 else -1.0)
+        z = zss + (z - zss) * np.exp(-s0 * abs(u_new) * dt / g)
+    return u_new, z
+
+
 @numba.njit(cache=True, parallel=True, error_model="numpy")
 def _simulate(P, dts, t_in, V_in, t_out, v_stride):
     n_cand = P.shape[0]
@@ -187,6 +296,15 @@ def _simulate_one(p, dt_max, t_in, inv_dt, v_row, t_out, rec):
     F0, kL, cv, G = p[20], p[21], p[22], p[23]
     kappa, tau, slew, no_ret = p[24], p[25], p[26], p[27]
     cpw, cpn = p[29], p[30]
+    vs, lc, lc_t, eps0, kap, cdA, bw = p[31], p[32], p[33], p[34], p[35], p[36], p[37]
+    zpre = p[38]
+    z_br = 0.0                           # LuGre bristle deflection of the output seal
+    inv_vs = 1.0 / vs if vs > 0.0 else 0.0
+    n_lc = LOG_CREEP_MODES if lc > 0.0 else 0
+    logc = np.zeros(LOG_CREEP_MODES)
+    inv_tl = np.empty(LOG_CREEP_MODES)
+    for i in range(LOG_CREEP_MODES):
+        inv_tl[i] = 1.0 / (lc_t * 10.0 ** i) if lc_t > 0.0 else 0.0
     Fw0, Fn0 = Fw, Fn
     R = A_w / A_n
     bern = 1.0 - 1.0 / (R * R)
@@ -201,7 +319,14 @@ def _simulate_one(p, dt_max, t_in, inv_dt, v_row, t_out, rec):
     v, j = _interp(t_out[0], t_in, inv_dt, v_row, j)
     xf_lin = d33 * v + h
     creep = kappa * xf_lin
-    x, y, pr = _equilibrium(K, xf_lin + creep, A_w, A_n, V0, bulk, F0, kL)
+    xf_tot = xf_lin + creep
+    for i in range(n_lc):
+        logc[i] = lc * xf_lin
+        xf_tot = xf_tot + logc[i]
+    if eps0 > 0.0:
+        x, y, pr = _air_equilibrium(K, xf_tot, A_w, A_n, V0, bulk, F0, kL, eps0, kap)
+    else:
+        x, y, pr = _equilibrium(K, xf_tot, A_w, A_n, V0, bulk, F0, kL)
     y0 = y
     u = 0.0
     v_leak = 0.0
@@ -218,24 +343,57 @@ def _simulate_one(p, dt_max, t_in, inv_dt, v_row, t_out, rec):
             t += dt
             v_cmd, j = _interp(t, t_in, inv_dt, v_row, j)
             v_new = v_cmd
+            if bw > 0.0:                      # first-order amplifier (exact over the step)
+                v_new = v + (v_cmd - v) * (1.0 - np.exp(-bw * dt))
             if slew > 0.0:
                 step = slew * dt
-                v_new = min(max(v_cmd, v - step), v + step)
+                v_new = min(max(v_new, v - step), v + step)
             h = hysteresis_step(h, v, v_new, dt, al, be, ga, de, nb)
             v = v_new
             xf_lin = d33 * v + h
             if tau > 0.0:
                 creep += dt * (kappa * xf_lin - creep) * inv_tau
+            xf_tot = xf_lin + creep
+            for i in range(n_lc):
+                logc[i] += dt * (lc * xf_lin - logc[i]) * inv_tl[i]
+                xf_tot = xf_tot + logc[i]
             v_leak += G * pr * dt
+            if cdA > 0.0:                     # orifice leak, Q = Cd A sgn(p) sqrt(2 |p| / rho)
+                v_leak += cdA * np.sqrt(2.0 * abs(pr) / rho) * (1.0 if pr >= 0.0 else -1.0) * dt
+            v_eff = v_leak
+            if eps0 > 0.0:                    # oil with air: tangent to s(p) at the last pressure
+                s_p, ds_p = air_strain(pr, eps0, kap, bulk)
+                a_oil = 1.0 / (ds_p * V0)
+                aA_w = a_oil * A_w
+                kf = aA_w * A_w
+                inv_Kkf, inv_kf = 1.0 / (K + kf), 1.0 / kf
+                v_eff = v_leak - (pr - s_p / ds_p) / a_oil     # p = a_oil (dV - v_eff)
             Fw = Fw0 + cpw * abs(pr)
             Fn = Fn0 + cpn * abs(pr)
             thr = Fw if sliding else Fw * brk_w
-            x, sliding = _wide_piston(x, xf_lin + creep, y, v_leak, K, aA_w, A_n, kf, inv_Kkf, inv_kf,
+            x, sliding = _wide_piston(x, xf_tot, y, v_eff, K, aA_w, A_n, kf, inv_Kkf, inv_kf,
                                       Fw, thr, no_ret)
-            pr = a_oil * (A_w * x - A_n * y - v_leak)
+            pr = a_oil * (A_w * x - A_n * y - v_eff)
             p_n = pr - u * abs(u) * (loss_fwd if u >= 0.0 else loss_back)
             F = A_n * p_n - (F0 + kL * y) - cv * u
-            a = _narrow_accel(F, u, Fn, Fn * brk_n, inv_m)
+            if zpre > 0.0:                    # LuGre output seal (no stick logic: bristles)
+                # the bristle mode sqrt(sigma0 / m) is often faster than the
+                # hydraulics: the output piston takes sub-steps of at most
+                # 0.05 / omega_bristle with the oil pressure following y
+                F_s = Fn * brk_n
+                n_br = int(dt * np.sqrt(F_s / zpre * inv_m) * 20.0) + 1
+                h_dt = dt / n_br
+                for _ in range(n_br):
+                    p_s = a_oil * (A_w * x - A_n * y - v_eff)
+                    p_n = p_s - u * abs(u) * (loss_fwd if u >= 0.0 else loss_back)
+                    F = A_n * p_n - (F0 + kL * y) - cv * u
+                    u, z_br = _lugre_step(F, u, z_br, Fn, F_s, inv_vs, zpre, m, h_dt)
+                    y += u * h_dt
+                continue
+            if vs > 0.0:
+                a = _narrow_accel_stribeck(F, u, Fn, Fn * brk_n, inv_m, inv_vs)
+            else:
+                a = _narrow_accel(F, u, Fn, Fn * brk_n, inv_m)
             u_new = u + a * dt
             if u != 0.0 and u_new * u < 0.0:
                 u_new = 0.0

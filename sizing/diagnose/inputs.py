@@ -9,15 +9,22 @@ rings at the edges of voltage steps. The treatment, stated in every report:
 
 1. a zero-phase Gaussian low-pass (symmetric kernel: no delay, no overshoot
    at steps) of standard deviation SMOOTH_SAMPLES samples, on each stretch
-   between jumps (a sample-to-sample change above JUMP_SIGMAS x the noise)
-   on its own, each extended past its ends by odd reflection so that
-   ramps keep their slope to the ends of a stretch;
-2. the significant reversals: the turning points of a zig-zag with a
-   threshold of REVERSAL_SIGMAS times the noise of the logged voltage
-   (estimated from its second differences) and at least 0.5 % of its range;
-3. between two significant reversals the input is monotone: each piece is
-   replaced by its isotonic (least-squares monotone) regression, so holds
-   become flat and ramps never reverse.
+   between jumps on its own, each extended past its ends by odd reflection
+   so that ramps keep their slope to the ends of a stretch; it serves only
+   to find the reversals;
+2. the significant reversals: the turning points of a zig-zag of the
+   low-passed voltage with a threshold of REVERSAL_SIGMAS times the noise
+   of the logged voltage (estimated from its second differences) and at
+   least 0.5 % of its range;
+3. between two significant reversals the input is monotone: each piece of
+   the *logged* voltage is replaced by its isotonic (least-squares
+   monotone) regression, so holds become flat and ramps never reverse.
+   The monotone fit is taken of the log, not of the low-passed voltage,
+   because a low-pass rounds every corner of a fast ramp (a step commanded
+   at a finite rate): on the cross-form generator's staircases (40 ms
+   ramps, 0.3 V noise) the treated voltage is 0.13 V rms off the clean one
+   this way against 0.28-0.49 V from the low-passed one; on a slow
+   trapezoid 0.18 V against 0.08 V (tests/test_diagnose_inputs.py).
 
 Steps are kept sharp: the low-pass smooths each stretch between two jumps
 on its own. A jump is a single-sample change far above the noise
@@ -25,9 +32,8 @@ on its own. A jump is a single-sample change far above the noise
 neighbours: a fast ramp (a test amplifier's rate limit) changes by about
 the same amount every sample and is not a jump. Without the isolation test
 a ramp whose slope sits near the jump threshold is cut into pieces where
-the noise happens to cross it, and each piece is smoothed with its own
-edges: errors of several volts on the ramp, and a different error for each
-draw of the noise.
+the noise happens to cross it, and reversals are looked for in pieces
+smoothed with their own edges.
 """
 from __future__ import annotations
 
@@ -111,7 +117,7 @@ def treat_voltage(v: np.ndarray) -> np.ndarray:
     pivots = reversals(smooth, threshold)
     out = smooth.copy()
     for a, b in zip(pivots[:-1], pivots[1:]):
-        piece = smooth[a:b + 1]
+        piece = v[a:b + 1]          # the raw log: a monotone fit keeps ramp corners the low-pass rounds
         increasing = piece[-1] >= piece[0]
         out[a:b + 1] = isotonic_regression(piece, increasing=increasing).x
     return out

@@ -104,6 +104,8 @@ def screen(bench, effect, seed: int = 0, head=(), z_head=np.zeros(0)) -> tuple[n
         Z = np.tile(z_head, (1, 1))
         return np.zeros(0), float(np.sqrt(fitting.cost(bench, list(head) + [effect], Z, train)[0]))
     sizes = [effect.unit(s) for s in effect.sizes_for(bench.rig, bench.model) if s]
+    if hasattr(effect, "starts"):                 # start points from the data (e.g. residual spectrum lines)
+        sizes += list(effect.starts(bench, head, z_head))
     n = N_SCREEN * d * (4 if effect.post else 1)
     Z = np.vstack(sizes + [_lhs(n, d, seed)]) if sizes else _lhs(n, d, seed)
     Z = np.clip(Z, 0.0, 1.0)
@@ -164,6 +166,7 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
         bench, [y[None] for y in (bench.nominal_channels()[i] for i in bench.train)], bench.train) ** 2)))
     joint = getattr(bench, "nuisance", None)      # (effect, z) re-fitted with every effect
     head, z_head = ((joint[0],), joint[1]) if joint else ((), np.zeros(0))
+    effects = [e for e in effects if not hasattr(e, "observable") or e.observable(bench, head, z_head)]
     screened = [(e, *screen(bench, e, seed, head, z_head)) for e in effects]
     screened.sort(key=lambda s: s[2])
     fits = []

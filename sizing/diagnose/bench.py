@@ -183,5 +183,12 @@ class Bench:
                 if effect.post:
                     for c in range(n_cand):
                         Y[c, 0] = effect.measure(run.t, Y[c, 0], {k: a[c] for k, a in v.items()})
+            if getattr(self, "fit_linear", True):
+                # terms linear in per-run coefficients (an additive sinusoid's
+                # amplitude and phase) are solved on each run's measurement last
+                for effect, v in zip(effects, values):
+                    if hasattr(effect, "fit_run"):
+                        for c in range(n_cand):
+                            Y[c, 0] = effect.fit_run(run.t, Y[c, 0], run.y, {k: a[c] for k, a in v.items()})
             out.append(Y)
         return out

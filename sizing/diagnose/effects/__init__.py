@@ -14,7 +14,7 @@ PIEZO = (seal_stick_slip.EFFECT, fluid_compressibility.EFFECT, viscous_damping.E
          leakage.EFFECT, stack_creep.EFFECT, amplifier_slew_limit.EFFECT, no_return.EFFECT,
          sensor_delay.PIEZO)
 DC = (current_saturation.EFFECT, coulomb_friction.EFFECT, backlash.EFFECT,
-      sensor_vibration.EFFECT, sensor_delay.DC)
+      sensor_vibration.EFFECT, sensor_vibration.SINUSOID, sensor_delay.DC)
 
 
 def library(kind: str) -> tuple[Effect, ...]:

@@ -253,8 +253,10 @@ def unsettled(fit, run_length: float | None) -> dict:
 
 
 def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks=None, seed: int = 0,
-            run_length: float | None = None) -> dict:
-    """``run_length``: the shortest training run (s), for the settling rule."""
+            run_length: float | None = None, line: dict | None = None) -> dict:
+    """``run_length``: the shortest training run (s), for the settling rule.
+    ``line``: the spectral lines of the holdout gap (spectrum.gap_lines),
+    for the line rule."""
     floor = total_floor(floor_holdout)
     if baseline_holdout <= GAP_FACTOR * floor_holdout:
         return {"effect": None, "shrink_holdout": 0.0, "status": "no_significant_gap",
@@ -276,7 +278,16 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
            "separation": {"test": f"block bootstrap over holdout segments ({BLOCK_S:g} s blocks, "
                                   f"{N_BOOT} resamples, one-sided)",
                           "p_vs_baseline": p_base, "p_vs_runner_up": p_second, "alpha": ALPHA}}
-    if baseline_holdout <= GAP_FACTOR * floor:
+    # line rule: the model-form floor is broadband, smooth-model error; a
+    # spectral line of the holdout gap (spectrum.py) is not covered by it.
+    # Within that floor, a candidate is judged on the share of the lines'
+    # energy above the local level that it removes.
+    on_line = line is not None and line.get("removed", 0.0) >= PARTIAL
+    if on_line and baseline_holdout <= GAP_FACTOR * floor:
+        share = float(line["removed"])
+        out["explained_gap_energy"] = share
+        out["line"] = dict(line, rule="within the model-form floor: judged on the spectral lines of the gap")
+    elif baseline_holdout <= GAP_FACTOR * floor:
         out.update(effect=None, shrink_holdout=0.0, status="unexplained",
                    reason=f"the gap ({baseline_holdout:.4f}) is above the noise floor but within {GAP_FACTOR:g} x "
                           f"the model-form floor {floor:.4f}: no effect is blamed for what a nominal of "
@@ -287,8 +298,9 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
     leaves = best.nrmse_holdout <= RESIDUAL_FACTOR * floor
     slow = unsettled(best, run_length)
     if significant and share >= EXPLAINED and separated and leaves and not slow:
+        what = "of the energy of the gap's spectral lines" if "line" in out else "of the holdout gap energy above the floor"
         out.update(effect=best.name, form=best.form, status="explained",
-                   reason=f"{best.name} removes {100 * share:.0f} % of the holdout gap energy above the floor, "
+                   reason=f"{best.name} removes {100 * share:.0f} % {what}, "
                           f"separated from {second.name if second else 'every other effect'} (p = {p_second:.3f})")
         return out
     if significant and share >= PARTIAL:

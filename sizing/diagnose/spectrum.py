@@ -155,3 +155,34 @@ def excess(t, e, band: slice, level: np.ndarray) -> float:
     """Power of e's periodogram above ``level`` within ``band``."""
     _f, P = periodogram(t, e)
     return float(np.sum(np.maximum(P[band] - level[band], 0.0)))
+
+
+def gap_lines(bench, nominal: list, candidate: list | None) -> dict | None:
+    """The lines of the holdout gap and how much of them a candidate removes.
+
+    ``nominal`` and ``candidate``: simulated positions (n,) of the holdout
+    runs (bench.holdout order). A line of the gap is a common line of the
+    holdout runs' baseline residuals (measured - nominal; ``lines``, the
+    nominal's own lines excluded); its energy is the periodogram above the
+    baseline's local level over the line's band (``line_band``). Returns
+    None without a line, else {"frequencies_Hz", "ratio" (smallest peak /
+    local level), "share" (of the baseline residual power in the lines),
+    "removed" (fraction of the lines' energy the candidate removes)}."""
+    runs = [bench.runs[i] for i in bench.holdout]
+    if not runs:
+        return None
+    res = [(r.t, r.y - y) for r, y in zip(runs, nominal)]
+    found = lines(res, nominal)
+    if not found:
+        return None
+    base = after = total = 0.0
+    for k, ((t, e), r) in enumerate(zip(res, runs)):
+        total += float(np.sum(periodogram(t, e)[1]))
+        for freq, _ratio in found:
+            band, level = line_band(t, e, freq)
+            base += excess(t, e, band, level)
+            if candidate is not None:
+                after += excess(t, r.y - candidate[k], band, level)
+    removed = 0.0 if candidate is None or base <= 0 else float(1.0 - min(after / base, 1.0))
+    return {"frequencies_Hz": [f for f, _ in found], "ratio": min(r for _, r in found),
+            "share": base / max(total, 1e-300), "removed": removed}

@@ -12,7 +12,7 @@ from .base import Effect, Param
 
 PIEZO = (seal_stick_slip.EFFECT, fluid_compressibility.EFFECT, viscous_damping.EFFECT,
          leakage.EFFECT, stack_creep.EFFECT, amplifier_slew_limit.EFFECT, no_return.EFFECT,
-         sensor_delay.PIEZO)
+         sensor_delay.PIEZO, sensor_vibration.PIEZO, sensor_vibration.PIEZO_SINUSOID)
 DC = (current_saturation.EFFECT, coulomb_friction.EFFECT, backlash.EFFECT,
       sensor_vibration.EFFECT, sensor_vibration.SINUSOID, sensor_delay.DC)
 

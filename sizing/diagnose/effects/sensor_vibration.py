@@ -30,6 +30,8 @@ and 23 Hz at 2 % of the span.
 """
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 from scipy import signal
 
@@ -78,6 +80,8 @@ class SensorVibration(Effect):
                 num = sum(float(np.dot(e, z)) for (_t, e), z in zip(res, Z1))
                 den = sum(float(np.dot(z, z)) for z in Z1) or 1.0
                 gain = float(np.clip(num / den, self.params[2].lo, self.params[2].hi))
+                if gain <= 0.0:
+                    continue                        # no ringing of this shape: no start
                 out.append(self.unit({"frequency_Hz": freq, "damping_ratio": zeta, "gain": gain}))
         return out
 
@@ -137,3 +141,7 @@ SINUSOID = SensorSinusoid(
     source="issue 10 item 3: an additive sinusoid of unknown frequency and phase (pump, fan, mains pick-up); "
            "frequency from the residual spectrum, amplitude and phase by linear least squares per run",
     post=True, extra={"fd_step": 1e-4})
+
+# A sensor on a bracket vibrates on a piezohydraulic rig too: the same two forms.
+PIEZO = dataclasses.replace(EFFECT, technology="piezohydraulic")
+PIEZO_SINUSOID = dataclasses.replace(SINUSOID, technology="piezohydraulic")

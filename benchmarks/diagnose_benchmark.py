@@ -194,7 +194,7 @@ def run_crossform(verbose: bool = True, only: str = "") -> dict:
                          "shrink": float(v.get("shrink_holdout", 0.0)),
                          "shrink_first": float(1 - d.fits[0].nrmse_holdout / d.baseline_holdout) if d.fits else 0.0,
                          "params_first": d.fits[0].params if d.fits else {},
-                         "reason": v.get("reason", ""),
+                         "reason": v.get("reason", ""), "line": v.get("line"),
                          "nrmse_baseline": d.baseline_holdout, "noise_floor": d.noise_floor_holdout,
                          "seconds": d.seconds, "seconds_generate": generated, "ok": ok})
             if verbose:

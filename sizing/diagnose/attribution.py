@@ -283,10 +283,12 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
     # Within that floor, a candidate is judged on the share of the lines'
     # energy above the local level that it removes.
     on_line = line is not None and line.get("removed", 0.0) >= PARTIAL
+    if line is not None:
+        out["line"] = dict(line, judged_on=False)
     if on_line and baseline_holdout <= GAP_FACTOR * floor:
         share = float(line["removed"])
         out["explained_gap_energy"] = share
-        out["line"] = dict(line, rule="within the model-form floor: judged on the spectral lines of the gap")
+        out["line"]["judged_on"] = True          # within the model-form floor: judged on the lines
     elif baseline_holdout <= GAP_FACTOR * floor:
         out.update(effect=None, shrink_holdout=0.0, status="unexplained",
                    reason=f"the gap ({baseline_holdout:.4f}) is above the noise floor but within {GAP_FACTOR:g} x "

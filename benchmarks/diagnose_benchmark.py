@@ -146,7 +146,7 @@ def run(quick: bool = False, n_null: int = 4, verbose: bool = True) -> dict:
         "per_rig": per_rig,
     }
     for kind in ("piezohydraulic", "dc_motor"):
-        names = [e.name for e in library(kind)] + [NONE]
+        names = list(dict.fromkeys(e.name for e in library(kind))) + [NONE]
         kc = [Case(c["truth"], c["size"], c["predicted"], c["shrink"], c["seconds"]) for c in cases
               if c["truth"] in names and any(r["name"] == c["rig"] and r["kind"] == kind for r in RIG_KINDS)]
         summary[f"confusion_{kind}"] = CheckResult(kind, names, kc).table()

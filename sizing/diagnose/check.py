@@ -97,7 +97,7 @@ def check_runs(kind: str, rig, inputs: dict, holdout: list[str], noise: Noise, n
                                                 "position_m": np.zeros(len(t))}) for n, (t, u) in inputs.items()],
                   []).model
     effects = [e for e in library(kind) if e.applicable(rig, model)]
-    labels = [e.name for e in effects] + [NONE]
+    labels = list(dict.fromkeys(e.name for e in effects)) + [NONE]     # a family once, whatever its forms
     cases = []
     jobs = [(e, k) for e in effects for k in range(len(e.sizes_for(rig, model)) if e.params else 1)]
     jobs += [(None, k) for k in range(n_null)]

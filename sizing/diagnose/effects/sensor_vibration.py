@@ -42,6 +42,8 @@ from .base import Effect, Param
 def mount_response(t: np.ndarray, y: np.ndarray, freq: float, zeta: float, gain: float) -> np.ndarray:
     """z(t) of the mount driven by the measured motion y(t) (evenly sampled
     on the median step)."""
+    if gain == 0.0:
+        return np.zeros_like(np.asarray(y, float))   # no mount motion (and no all-zero filter)
     fs = 1.0 / float(np.median(np.diff(t)))
     freq = min(freq, 0.45 * fs)
     w = 2 * np.pi * freq

@@ -19,7 +19,10 @@
 5. Verdict (all measures are the combined measure of bench.py, holdout runs):
    - "no_significant_gap": baseline <= GAP_FACTOR x the noise floor;
    - "unexplained" (named nothing) as well when the baseline is within
-     GAP_FACTOR x the floor (noise and model form together);
+     GAP_FACTOR x the floor (noise and model form together), unless the
+     holdout gap has a spectral line (spectrum.gap_lines, a narrow band the
+     broadband model-form floor does not cover): then the best candidate is
+     judged on the share of the lines' energy it removes (line rule);
    - "explained": the best removes >= EXPLAINED of the gap energy above the
      floor, leaves <= RESIDUAL_FACTOR x floor, is significantly better
      than the baseline and separated from the runner-up (the best

@@ -151,8 +151,9 @@ def line_band(t, e, freq: float, edge: float = 4.0) -> tuple[slice, np.ndarray]:
     return slice(max(a - 1, 0), b + 2), level
 
 
-def excess(t, e, band: slice, level: np.ndarray) -> float:
-    """Power of e's periodogram above ``level`` within ``band``."""
+def excess(t, e, band, level: np.ndarray) -> float:
+    """Power of e's periodogram above ``level`` within ``band`` (a slice or
+    a boolean mask of the bins)."""
     _f, P = periodogram(t, e)
     return float(np.sum(np.maximum(P[band] - level[band], 0.0)))
 
@@ -178,11 +179,14 @@ def gap_lines(bench, nominal: list, candidate: list | None) -> dict | None:
     base = after = total = 0.0
     for k, ((t, e), r) in enumerate(zip(res, runs)):
         total += float(np.sum(periodogram(t, e)[1]))
-        for freq, _ratio in found:
+        mask, level = None, None
+        for freq, _ratio in found:          # the union of the lines' bands (bands may overlap)
             band, level = line_band(t, e, freq)
-            base += excess(t, e, band, level)
-            if candidate is not None:
-                after += excess(t, r.y - candidate[k], band, level)
+            mask = np.zeros(len(level), bool) if mask is None else mask
+            mask[band] = True
+        base += excess(t, e, mask, level)
+        if candidate is not None:
+            after += excess(t, r.y - candidate[k], mask, level)
     removed = 0.0 if candidate is None or base <= 0 else float(1.0 - min(after / base, 1.0))
     return {"frequencies_Hz": [f for f, _ in found], "ratio": min(r for _, r in found),
             "share": base / max(total, 1e-300), "removed": removed}

@@ -326,7 +326,7 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
     leaves = best.nrmse_holdout <= RESIDUAL_FACTOR * floor
     slow = unsettled(best, run_length)
     if significant and share >= EXPLAINED and separated and leaves and not slow:
-        what = "of the energy of the gap's spectral lines" if "line" in out else "of the holdout gap energy above the floor"
+        what = "of the energy of the gap's spectral lines" if out.get("line", {}).get("judged_on") else "of the holdout gap energy above the floor"
         out.update(effect=best.name, form=best.form, status="explained",
                    reason=f"{best.name} removes {100 * share:.0f} % {what}, "
                           f"separated from {second.name if second else 'every other effect'} (p = {p_second:.3f})")

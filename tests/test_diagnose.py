@@ -106,16 +106,29 @@ def test_injected_piezo_effect_is_named(piezo_rig, name, values):
         assert lo <= fitted[key] <= hi
 
 
-def test_effect_outside_the_library_is_unexplained(piezo_rig):
-    """50 Hz pickup on the position sensor: nothing in the library explains
-    it, so the verdict names no effect."""
+def test_hum_is_the_sinusoid_form_of_sensor_vibration(piezo_rig):
+    """50 Hz pickup on the position sensor, a random phase per run (it was
+    outside the library before the additive-sinusoid form): named
+    sensor_vibration, form sinusoid, at 50 Hz."""
     def hum(t, y, rng):
         return y + 0.02 * np.ptp(y) * np.sin(2 * np.pi * 50 * t + rng.uniform(0, 6.28))
 
     runs = synth.synthesize("piezohydraulic", piezo_rig, _inputs(), hidden=hum, noise=synth.Noise(seed=4))
     d = diagnose_runs("piezohydraulic", piezo_rig, runs, ["steps"])
-    assert d.verdict["effect"] is None
-    assert d.verdict["status"] == "unexplained"
+    assert d.verdict["effect"] == "sensor_vibration" and d.verdict["form"] == "sinusoid"
+    assert d.verdict["status"] == "explained"
+    assert d.fits[0].params["frequency_Hz"] == pytest.approx(50.0, abs=0.05)
+
+
+def test_effect_outside_the_library_is_not_explained(piezo_rig):
+    """A sensor gain that compresses large readings (outside the library):
+    not explained."""
+    def compress(t, y, rng):
+        return y - 0.1 * (y - y.min()) ** 2 / (np.ptp(y) or 1.0)
+
+    runs = synth.synthesize("piezohydraulic", piezo_rig, _inputs(), hidden=compress, noise=synth.Noise(seed=4))
+    d = diagnose_runs("piezohydraulic", piezo_rig, runs, ["steps"])
+    assert d.verdict["status"] != "explained"
 
 
 def test_dc_sensor_vibration_campaign():

@@ -23,7 +23,10 @@
 5. Verdict (all measures are the combined measure of bench.py, holdout runs):
    - "no_significant_gap": baseline <= GAP_FACTOR x the noise floor;
    - "unexplained" (named nothing) as well when the baseline is within
-     GAP_FACTOR x the floor (noise and model form together);
+     GAP_FACTOR x the floor (noise and model form together), unless the
+     holdout gap has a spectral line (spectrum.gap_lines, a narrow band the
+     broadband model-form floor does not cover): then the best candidate is
+     judged on the share of the lines' energy it removes (line rule);
    - "explained": the best removes >= EXPLAINED of the gap energy above the
      floor, leaves <= RESIDUAL_FACTOR x floor, is significantly better
      than the baseline and separated from the runner-up (the best
@@ -108,6 +111,8 @@ def screen(bench, effect, seed: int = 0, head=(), z_head=np.zeros(0)) -> tuple[n
         Z = np.tile(z_head, (1, 1))
         return np.zeros(0), float(np.sqrt(fitting.cost(bench, list(head) + [effect], Z, train)[0]))
     sizes = [effect.unit(s) for s in effect.sizes_for(bench.rig, bench.model) if s]
+    if hasattr(effect, "starts"):                 # start points from the data (e.g. residual spectrum lines)
+        sizes += list(effect.starts(bench, head, z_head))
     n = N_SCREEN * d * (4 if effect.post else 1)
     Z = np.vstack(sizes + [_lhs(n, d, seed)]) if sizes else _lhs(n, d, seed)
     Z = np.clip(Z, 0.0, 1.0)
@@ -168,6 +173,7 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
         bench, [y[None] for y in (bench.nominal_channels()[i] for i in bench.train)], bench.train) ** 2)))
     joint = getattr(bench, "nuisance", None)      # (effect, z) re-fitted with every effect
     head, z_head = ((joint[0],), joint[1]) if joint else ((), np.zeros(0))
+    effects = [e for e in effects if not hasattr(e, "observable") or e.observable(bench, head, z_head)]
     screened = [(e, *screen(bench, e, seed, head, z_head)) for e in effects]
     screened.sort(key=lambda s: s[2])
     fits = []
@@ -215,7 +221,30 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
             holdout_score(bench, f)
             fits.append(f)
         fits.sort(key=lambda f: f.nrmse_holdout)
+        refit_singles(bench, fits, head, len(z_head))
     return fits
+
+
+def refit_singles(bench, fits, head, n_head: int) -> None:
+    """A pair's fit continues from its singles' optima and can reach one
+    effect's parameters better than that single's own local least squares
+    did (the other effect then fitted at no size): the singles of the
+    leading pair are re-fitted from the pair's coordinates and the better
+    fit of each is kept (so the pair test compares a pair with its singles
+    at their best)."""
+    lead = fits[0]
+    if len(lead.named) != 2:
+        return
+    col = n_head
+    for effect in lead.named:
+        z = np.concatenate([lead.z[:n_head], lead.z[col:col + len(effect.params)]])
+        col += len(effect.params)
+        old = next((k for k, f in enumerate(fits) if len(f.named) == 1 and f.named[0] is effect), None)
+        new = fitting.fit(bench, tuple(head) + (effect,), z, bench.train)
+        if old is not None and new.nrmse_train < fits[old].nrmse_train:
+            holdout_score(bench, new)
+            fits[old] = new
+    fits.sort(key=lambda f: f.nrmse_holdout)
 
 
 PAIR_GAIN = 0.25   # a pair must remove this share of what its best single leaves above the floor
@@ -265,8 +294,10 @@ def unsettled(fit, run_length: float | None) -> dict:
 
 
 def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks=None, seed: int = 0,
-            run_length: float | None = None) -> dict:
-    """``run_length``: the shortest training run (s), for the settling rule."""
+            run_length: float | None = None, line: dict | None = None) -> dict:
+    """``run_length``: the shortest training run (s), for the settling rule.
+    ``line``: the spectral lines of the holdout gap (spectrum.gap_lines),
+    for the line rule."""
     floor = total_floor(floor_holdout)
     if baseline_holdout <= GAP_FACTOR * floor_holdout:
         return {"effect": None, "shrink_holdout": 0.0, "status": "no_significant_gap",
@@ -288,7 +319,18 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
            "separation": {"test": f"block bootstrap over holdout segments ({BLOCK_S:g} s blocks, "
                                   f"{N_BOOT} resamples, one-sided)",
                           "p_vs_baseline": p_base, "p_vs_runner_up": p_second, "alpha": ALPHA}}
-    if baseline_holdout <= GAP_FACTOR * floor:
+    # line rule: the model-form floor is broadband, smooth-model error; a
+    # spectral line of the holdout gap (spectrum.py) is not covered by it.
+    # Within that floor, a candidate is judged on the share of the lines'
+    # energy above the local level that it removes.
+    on_line = line is not None and line.get("removed", 0.0) >= PARTIAL
+    if line is not None:
+        out["line"] = dict(line, judged_on=False)
+    if on_line and baseline_holdout <= GAP_FACTOR * floor:
+        share = float(line["removed"])
+        out["explained_gap_energy"] = share
+        out["line"]["judged_on"] = True          # within the model-form floor: judged on the lines
+    elif baseline_holdout <= GAP_FACTOR * floor:
         out.update(effect=None, shrink_holdout=0.0, status="unexplained",
                    reason=f"the gap ({baseline_holdout:.4f}) is above the noise floor but within {GAP_FACTOR:g} x "
                           f"the model-form floor {floor:.4f}: no effect is blamed for what a nominal of "
@@ -299,8 +341,9 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
     leaves = best.nrmse_holdout <= RESIDUAL_FACTOR * floor
     slow = unsettled(best, run_length)
     if significant and share >= EXPLAINED and separated and leaves and not slow:
+        what = "of the energy of the gap's spectral lines" if out.get("line", {}).get("judged_on") else "of the holdout gap energy above the floor"
         out.update(effect=best.name, form=best.form, status="explained",
-                   reason=f"{best.name} removes {100 * share:.0f} % of the holdout gap energy above the floor, "
+                   reason=f"{best.name} removes {100 * share:.0f} % {what}, "
                           f"separated from {second.name if second else 'every other effect'} (p = {p_second:.3f})")
         return out
     if significant and share >= PARTIAL:

@@ -140,6 +140,23 @@ class Bench:
         out = sim(model, run.t, run.u, run.t)
         return np.stack([out[c] for c in self.channels], axis=1)
 
+    def _simulate_unique(self, changes: dict, run: PreparedRun, n_cand: int) -> np.ndarray:
+        """(n_cand, n_ch, n) for the model ``changes``, simulating each distinct
+        set of model values once (a measurement effect's candidates share
+        theirs: only the re-calibrated parameters change the model)."""
+        keys = list(changes)
+        M = np.column_stack([np.broadcast_to(np.asarray(changes[k], float), (n_cand,)) for k in keys])
+        uniq, inverse = np.unique(M, axis=0, return_inverse=True)
+        if len(uniq) < n_cand:
+            Y = self._raw(self.model.replace(**{k: uniq[:, j].copy() for j, k in enumerate(keys)}), run)
+            if Y.shape[0] != len(uniq):
+                Y = np.broadcast_to(Y, (len(uniq),) + Y.shape[1:])
+            return Y[np.asarray(inverse).ravel()].copy()
+        Y = self._raw(self.model.replace(**changes), run)
+        if Y.shape[0] != n_cand:
+            Y = np.broadcast_to(Y, (n_cand,) + Y.shape[1:]).copy()
+        return Y
+
     def nominal_channels(self) -> list[np.ndarray]:
         """(n_ch, n) simulated channels of every run with the nominal model."""
         if self._nominal is None:
@@ -174,14 +191,19 @@ class Bench:
         for i in runs:
             run = self.runs[i]
             if changes:
-                Y = self._raw(self.model.replace(**changes), run)
-                if Y.shape[0] != n_cand:
-                    Y = np.broadcast_to(Y, (n_cand,) + Y.shape[1:]).copy()
+                Y = self._simulate_unique(changes, run, n_cand)
             else:
                 Y = np.repeat(self.nominal_channels()[i][None], n_cand, axis=0)
             for effect, v in zip(effects, values):
                 if effect.post:
                     for c in range(n_cand):
                         Y[c, 0] = effect.measure(run.t, Y[c, 0], {k: a[c] for k, a in v.items()})
+            if getattr(self, "fit_linear", True):
+                # terms linear in per-run coefficients (an additive sinusoid's
+                # amplitude and phase) are solved on each run's measurement last
+                for effect, v in zip(effects, values):
+                    if hasattr(effect, "fit_run"):
+                        for c in range(n_cand):
+                            Y[c, 0] = effect.fit_run(run.t, Y[c, 0], run.y, {k: a[c] for k, a in v.items()})
             out.append(Y)
         return out

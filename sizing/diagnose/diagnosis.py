@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import InputError
-from . import attribution, where
+from . import attribution, spectrum, where
 from .bench import Bench
 from .effects import library
 from .recalibrate import DEFAULT, nuisance, recalibrate as recalibrate_model
@@ -125,9 +125,11 @@ def diagnose_runs(kind: str, rig, runs, holdout: list[str], recalibrate: list[st
     fits = attribution.attribute(bench, base_ho, floor_ho, seed=seed, pairs=pairs)
     base_blocks = attribution.block_energy(bench, [nominal[i] for i in bench.holdout], bench.holdout)
     shortest = min((float(bench.runs[i].t[-1] - bench.runs[i].t[0]) for i in bench.train), default=None)
-    verdict = attribution.verdict(base_ho, floor_ho, fits, base_blocks, seed=seed, run_length=shortest)
     chosen = attribution.pick(fits, seed, attribution.total_floor(floor_ho))
     best_sim = [y[0] for y in bench.simulate_channels(chosen.effects, chosen.z[None, :])] if chosen else None
+    line = spectrum.gap_lines(bench, [nominal[i][0] for i in bench.holdout],
+                              None if best_sim is None else [best_sim[i][0] for i in bench.holdout])
+    verdict = attribution.verdict(base_ho, floor_ho, fits, base_blocks, seed=seed, run_length=shortest, line=line)
     if verdict["status"] in ("explained", "partial") and best_sim is not None:
         verdict["remaining"] = [{k: e[k] for k in ("run", "label", "share", "t_start_s", "t_end_s", "channel")}
                                 for e in where.gap_map(bench, best_sim, max_entries=5)]

@@ -6,7 +6,9 @@ residual of a run is (measured - simulated) / (span sqrt(n)), so the cost
 is the sum over runs of NRMSE^2 (CONTRACTS.md; the combined measure of bench.py when
 the runs log the current too). The Jacobian is a forward
 difference computed as one batch of the simulator (all perturbed parameter
-sets at once). Confidence intervals: 95 % from s^2 (J'J)^-1 at the
+sets at once), step FD_STEP in unit coordinates or the effect's
+``extra["fd_step"]`` (an additive sinusoid's frequency, which the cost is
+sharp in). Confidence intervals: 95 % from s^2 (J'J)^-1 at the
 optimum, mapped to physical units by the delta method; the residuals of a
 dynamic model are correlated, so read them as optimistic.
 """
@@ -79,9 +81,10 @@ def fit(bench, effects, z0, runs, max_nfev: int = 25) -> EffectFit:
         score = float(np.sqrt(np.mean(run_nrmse(bench, Y, runs) ** 2)))
         return EffectFit(effects, z0, score, message="no parameter")
     cache = {}
+    step = np.concatenate([np.full(len(e.params), float(e.extra.get("fd_step", FD_STEP))) for e in effects])
 
     def batch(z):
-        steps = np.where(z + FD_STEP <= 1.0, FD_STEP, -FD_STEP)
+        steps = np.where(z + step <= 1.0, step, -step)
         Z = np.vstack([z, z + np.diag(steps)])
         R = bench.residuals(bench.simulate_channels(effects, Z, runs), runs)
         cache[z.tobytes()] = (R[0], (R[1:] - R[0]).T / steps[None, :])

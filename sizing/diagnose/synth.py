@@ -65,6 +65,7 @@ def synthesize(kind: str, rig, inputs: dict[str, tuple], effects=(), values=(), 
                 {"voltage_V" if kind == "piezohydraulic" else "reference_m": np.asarray(u, float),
                  "position_m": np.zeros(len(t))}) for name, (t, u) in inputs.items()]
     bench = Bench(kind, rig, runs, [])
+    bench.fit_linear = False        # nothing measured yet: per-run linear terms are injected below
     for run in bench.runs:          # simulate the true (clean) input
         run.u = run.u_raw.copy()
     bench._nominal = None
@@ -73,6 +74,9 @@ def synthesize(kind: str, rig, inputs: dict[str, tuple], effects=(), values=(), 
     out = []
     for run, y in zip(runs, Y):
         y = y[0].copy()
+        for effect, value in zip(effects, values):
+            if hasattr(effect, "inject"):      # effects with per-run terms (an additive sinusoid)
+                y = effect.inject(run.time, y, value, rng)
         if hidden is not None:
             y = hidden(run.time, y, rng)
         span = float(np.ptp(y)) or 1e-3

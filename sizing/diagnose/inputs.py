@@ -9,31 +9,15 @@ rings at the edges of voltage steps. The treatment, stated in every report:
 
 1. a zero-phase Gaussian low-pass (symmetric kernel: no delay, no overshoot
    at steps) of standard deviation SMOOTH_SAMPLES samples, on each stretch
-   between jumps on its own, each extended past its ends by odd reflection
-   so that ramps keep their slope to the ends of a stretch; it serves only
-   to find the reversals;
-2. the significant reversals: the turning points of a zig-zag of the
-   low-passed voltage with a threshold of REVERSAL_SIGMAS times the noise
-   of the logged voltage (estimated from its second differences) and at
-   least 0.5 % of its range;
-3. between two significant reversals the input is monotone: each piece of
-   the *logged* voltage is replaced by its isotonic (least-squares
-   monotone) regression, so holds become flat and ramps never reverse.
-   The monotone fit is taken of the log, not of the low-passed voltage,
-   because a low-pass rounds every corner of a fast ramp (a step commanded
-   at a finite rate): on the cross-form generator's staircases (40 ms
-   ramps, 0.3 V noise) the treated voltage is 0.13 V rms off the clean one
-   this way against 0.28-0.49 V from the low-passed one; on a slow
-   trapezoid 0.18 V against 0.08 V (tests/test_diagnose_inputs.py).
-
-Steps are kept sharp: the low-pass smooths each stretch between two jumps
-on its own. A jump is a single-sample change far above the noise
-(JUMP_SIGMAS x sigma) that is also JUMP_ISOLATION times larger than both its
-neighbours: a fast ramp (a test amplifier's rate limit) changes by about
-the same amount every sample and is not a jump. Without the isolation test
-a ramp whose slope sits near the jump threshold is cut into pieces where
-the noise happens to cross it, and reversals are looked for in pieces
-smoothed with their own edges.
+   between jumps (a sample-to-sample change above JUMP_SIGMAS x the noise)
+   on its own, each extended past its ends by odd reflection so that
+   ramps keep their slope to the ends of a stretch;
+2. the significant reversals: the turning points of a zig-zag with a
+   threshold of REVERSAL_SIGMAS times the noise of the logged voltage
+   (estimated from its second differences) and at least 0.5 % of its range;
+3. between two significant reversals the input is monotone: each piece is
+   replaced by its isotonic (least-squares monotone) regression, so holds
+   become flat and ramps never reverse.
 """
 from __future__ import annotations
 
@@ -44,7 +28,6 @@ from scipy.optimize import isotonic_regression
 SMOOTH_SAMPLES = 4.0
 REVERSAL_SIGMAS = 6.0
 JUMP_SIGMAS = 8.0
-JUMP_ISOLATION = 3.0
 
 
 def noise_sigma(x: np.ndarray) -> float:
@@ -109,7 +92,7 @@ def treat_voltage(v: np.ndarray) -> np.ndarray:
     sigma = noise_sigma(v)
     # steps: jumps between two samples far above the noise are kept sharp by
     # smoothing each stretch between jumps on its own
-    jumps = step_edges(v, sigma)
+    jumps = np.flatnonzero(np.abs(np.diff(v)) > JUMP_SIGMAS * max(sigma, 1e-12)) + 1
     smooth = np.empty_like(v)
     for a, b in zip(np.r_[0, jumps], np.r_[jumps, len(v)]):
         smooth[a:b] = smooth_piece(v[a:b])
@@ -117,18 +100,10 @@ def treat_voltage(v: np.ndarray) -> np.ndarray:
     pivots = reversals(smooth, threshold)
     out = smooth.copy()
     for a, b in zip(pivots[:-1], pivots[1:]):
-        piece = v[a:b + 1]          # the raw log: a monotone fit keeps ramp corners the low-pass rounds
+        piece = smooth[a:b + 1]
         increasing = piece[-1] >= piece[0]
         out[a:b + 1] = isotonic_regression(piece, increasing=increasing).x
     return out
-
-
-def step_edges(v: np.ndarray, sigma: float) -> np.ndarray:
-    """Indices i where v jumps between samples i - 1 and i (module docstring)."""
-    d = np.abs(np.diff(v))
-    neighbours = np.maximum(np.r_[0.0, d[:-1]], np.r_[d[1:], 0.0])
-    big = d > JUMP_SIGMAS * max(sigma, 1e-12)
-    return np.flatnonzero(big & (d > JUMP_ISOLATION * neighbours)) + 1
 
 
 def describe() -> str:

@@ -195,6 +195,7 @@ def run_crossform(verbose: bool = True, only: str = "", heldout: bool = False) -
             else:
                 ok = _same(predicted, truth) and v["status"] in ("explained", "partial")
             rows.append({"case": case[0], "technology": technology, "truth": truth, "predicted": predicted,
+                         "form": v.get("form"),
                          "status": v["status"], "first": d.fits[0].name if d.fits else NONE,
                          "shrink": float(v.get("shrink_holdout", 0.0)),
                          "shrink_first": float(1 - d.fits[0].nrmse_holdout / d.baseline_holdout) if d.fits else 0.0,
@@ -224,9 +225,11 @@ def run_crossform(verbose: bool = True, only: str = "", heldout: bool = False) -
 
 def crossform_table(rows) -> str:
     """Rows: true effect; columns: status and the named effect."""
-    lines = ["| case | truth | status | named | first ranked | holdout shrink of the first |", "|---|---|---|---|---|---|"]
+    lines = ["| case | truth | status | named (form) | first ranked | holdout shrink of the first |",
+             "|---|---|---|---|---|---|"]
     for r in rows:
-        lines.append(f"| {r['case']} | {r['truth']} | {r['status']} | {r['predicted']} | {r['first']} | "
+        named = r["predicted"] + (f" ({r['form']})" if r.get("form") else "")
+        lines.append(f"| {r['case']} | {r['truth']} | {r['status']} | {named} | {r['first']} | "
                      f"{100 * r['shrink_first']:.0f} % |")
     return "\n".join(lines)
 

@@ -98,10 +98,13 @@ def run(quick: bool = False, n_null: int = 4, verbose: bool = True, default_form
         model = piezo_model(rig) if kind == "piezohydraulic" else dc_model(rig)
         holdout = [list(spec["inputs"])[-1]]
         jobs = []
+        first_form = {}                                   # each family's first form in the library
+        for effect in library(kind):
+            first_form.setdefault(effect.name, effect.form)
         for effect in library(kind):
             if effect.name in spec["skip"] or not effect.applicable(rig, model):
                 continue
-            if default_forms and effect.form != "default":
+            if default_forms and effect.form != first_form[effect.name]:
                 continue
             sizes = effect.sizes_for(rig, model)
             for k in range(1 if (quick or not effect.params) else 2):
@@ -238,7 +241,7 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="one size per effect, one null per rig")
     parser.add_argument("--default-forms", action="store_true",
-                        help="inject only the default form of each family (the library still diagnoses with every form)")
+                        help="inject only the first form of each family (the library still diagnoses with every form)")
     parser.add_argument("--json", type=Path, help="write every case and the summary here")
     parser.add_argument("--crossform", action="store_true", help="the second generator's campaigns instead")
     parser.add_argument("--only", default="", help="with --crossform: only the cases whose name contains this")

@@ -221,9 +221,9 @@ def _diagnose(campaign, holdout, out, recalibrate, no_recalibrate, check, seed) 
     v = result.verdict
     typer.echo(f"baseline holdout NRMSE {result.baseline_holdout:.4f} (noise floor {result.noise_floor_holdout:.4f})")
     for f in result.fits[:5]:
-        typer.echo(f"  {f.name:<40} holdout NRMSE {f.nrmse_holdout:.4f}  shrink {100 * (1 - f.nrmse_holdout / result.baseline_holdout):5.1f} %")
+        typer.echo(f"  {f.name + ' (' + f.form + ')':<48} holdout NRMSE {f.nrmse_holdout:.4f}  shrink {100 * (1 - f.nrmse_holdout / result.baseline_holdout):5.1f} %")
     if v["effect"]:
-        typer.echo(f"verdict: {v['status']}: {v['effect']} (holdout shrink {100 * v['shrink_holdout']:.0f} %): {v['reason']}")
+        typer.echo(f"verdict: {v['status']}: {v['effect']} ({v.get('form')} form; holdout shrink {100 * v['shrink_holdout']:.0f} %): {v['reason']}")
     else:
         typer.echo(f"verdict: {v['status']}: {v['reason']}")
     typer.echo(f"wrote {out / 'diagnosis.json'} and {out / 'diagnosis.html'}")

@@ -62,7 +62,7 @@ def test_line_of_the_simulated_output_is_not_a_gap_line():
 
 def test_sinusoid_form_fits_per_run_and_sits_in_the_dc_library():
     forms = [(e.name, e.form) for e in library("dc_motor")]
-    assert ("sensor_vibration", "default") in forms and ("sensor_vibration", "sinusoid") in forms
+    assert ("sensor_vibration", "mount") in forms and ("sensor_vibration", "sinusoid") in forms
     t, e = _residual(freq=50.0, phase=-2.0)
     y = np.linspace(0, 1e-3, t.size)
     out = SINUSOID.fit_run(t, y, y + e, {"frequency_Hz": 50.0})

@@ -19,6 +19,7 @@ from .base import Effect, Param
 
 
 EFFECT = Effect(
+    form="slew",
     name="amplifier_slew_limit", technology="piezohydraulic",
     params=(Param("slew_rate_V_s", 20.0, 2e5, log=True, doc="largest dV/dt the amplifier delivers"),),
     sizes=({"slew_rate_V_s": 1000.0}, {"slew_rate_V_s": 300.0}),

@@ -27,6 +27,7 @@ class EntrainedAir(Effect):
 
 
 EFFECT = Effect(
+    form="bulk_modulus",
     name="fluid_compressibility", technology="piezohydraulic",
     params=(Param("bulk_modulus_Pa", 5e6, 2e9, log=True, doc="effective bulk modulus of the oil"),),
     fields={"bulk_modulus_Pa": "bulk_modulus"}, nominal_factors=(1 / 10, 1 / 40),

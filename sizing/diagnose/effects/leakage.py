@@ -18,6 +18,7 @@ from .base import Effect, Param
 
 
 EFFECT = Effect(
+    form="laminar",
     name="leakage", technology="piezohydraulic",
     params=(Param("leak_conductance_m3_s_Pa", 1e-15, 1e-11, log=True, doc="laminar leak conductance"),),
     sizes=({"leak_conductance_m3_s_Pa": 1e-13}, {"leak_conductance_m3_s_Pa": 4e-13}),

@@ -55,6 +55,7 @@ class SealStickSlip(Effect):
 
 
 EFFECT = SealStickSlip(
+    form="karnopp",
     name="seal_stick_slip", technology="piezohydraulic",
     params=(Param("narrow_friction_N", 0.0, 20.0, doc="running friction of the output seal"),
             Param("breakaway_ratio", 1.0, 4.0, doc="breakaway / running friction of both seals")),

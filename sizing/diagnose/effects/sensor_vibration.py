@@ -128,6 +128,7 @@ class SensorSinusoid(Effect):
 
 
 EFFECT = SensorVibration(
+    form="mount",
     name="sensor_vibration", technology="dc_motor",
     params=(Param("frequency_Hz", 3.0, 300.0, log=True, doc="natural frequency of the sensor mount"),
             Param("damping_ratio", 0.002, 0.5, log=True, doc="damping ratio of the mount"),

@@ -31,6 +31,7 @@ class StackCreep(Effect):
 
 
 EFFECT = StackCreep(
+    form="exponential",
     name="stack_creep", technology="piezohydraulic",
     params=(Param("creep_fraction", 0.0, 0.4, doc="final creep over the instantaneous free stroke"),
             Param("creep_time_s", 0.02, 5.0, log=True, doc="creep time constant")),

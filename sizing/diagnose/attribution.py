@@ -102,23 +102,29 @@ def _lhs(n: int, d: int, seed: int) -> np.ndarray:
     return Z
 
 
-def screen(bench, effect, seed: int = 0, head=(), z_head=np.zeros(0)) -> tuple[np.ndarray, float]:
-    """(best unit point, its training score) over sizes + a Latin hypercube;
-    ``head`` effects (the re-calibrated parameters) held at ``z_head``."""
+def screen(bench, effect, seed: int = 0, head=(), z_heads=(np.zeros(0),)) -> tuple[np.ndarray, float, np.ndarray]:
+    """(best unit point, its training score, the head start it was found
+    with) over sizes + a Latin hypercube; ``head`` effects (the
+    re-calibrated parameters) held at each of ``z_heads`` in turn."""
     train = bench.train
     d = len(effect.params)
     if d == 0:
-        Z = np.tile(z_head, (1, 1))
-        return np.zeros(0), float(np.sqrt(fitting.cost(bench, list(head) + [effect], Z, train)[0]))
+        scores = [fitting.cost(bench, list(head) + [effect], zh[None, :], train)[0] for zh in z_heads]
+        k = int(np.argmin(scores))
+        return np.zeros(0), float(np.sqrt(scores[k])), z_heads[k]
     sizes = [effect.unit(s) for s in effect.sizes_for(bench.rig, bench.model) if s]
     if hasattr(effect, "starts"):                 # start points from the data (e.g. residual spectrum lines)
-        sizes += list(effect.starts(bench, head, z_head))
+        sizes += list(effect.starts(bench, head, z_heads[0]))
     n = N_SCREEN * d * (4 if effect.post else 1)
     Z = np.vstack(sizes + [_lhs(n, d, seed)]) if sizes else _lhs(n, d, seed)
     Z = np.clip(Z, 0.0, 1.0)
-    scores = fitting.cost(bench, list(head) + [effect], np.hstack([np.tile(z_head, (len(Z), 1)), Z]), train)
-    k = int(np.argmin(scores))
-    return Z[k], float(np.sqrt(scores[k]))
+    best = None
+    for zh in z_heads:
+        scores = fitting.cost(bench, list(head) + [effect], np.hstack([np.tile(zh, (len(Z), 1)), Z]), train)
+        k = int(np.argmin(scores))
+        if best is None or scores[k] < best[1]:
+            best = (Z[k], float(scores[k]), zh)
+    return best[0], float(np.sqrt(best[1])), best[2]
 
 
 def holdout_score(bench, fit: fitting.EffectFit) -> None:
@@ -174,24 +180,26 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
     joint = getattr(bench, "nuisance", None)      # (effect, z) re-fitted with every effect
     head, z_head = ((joint[0],), joint[1]) if joint else ((), np.zeros(0))
     effects = [e for e in effects if not hasattr(e, "observable") or e.observable(bench, head, z_head)]
-    screened = [(e, *screen(bench, e, seed, head, z_head)) for e in effects]
+    z_recal = getattr(bench, "nuisance_recalibrated", None)
+    z_heads = (z_head,) if z_recal is None or not joint else (z_head, z_recal)
+    screened = [(e, *screen(bench, e, seed, head, z_heads)) for e in effects]
     screened.sort(key=lambda s: s[2])
     fits = []
 
-    def fit_with(effects, z):
-        return fitting.fit(bench, head + tuple(effects), np.concatenate([z_head, z]), bench.train)
+    def fit_with(effects, z, start=z_head):
+        return fitting.fit(bench, head + tuple(effects), np.concatenate([start, z]), bench.train)
 
     # TOP_FIT counts families: the best-screened form of each of the top
     # TOP_FIT families is fitted (so a family with several forms does not
     # push another family out), and any form that screens well on its own
     family_rank = {}
-    for effect, _, _ in screened:
+    for effect, *_ in screened:
         family_rank.setdefault(effect.name, (len(family_rank), effect))
-    for effect, z0, score in screened:
+    for effect, z0, score, start in screened:
         rank, first_form = family_rank[effect.name]
         promising = (rank < TOP_FIT and effect is first_form) or score < 0.9 * base_train
         if promising:
-            f = fit_with([effect], z0)
+            f = fit_with([effect], z0, start)
         else:
             f = fitting.EffectFit((effect,), z0, score, message="screened only")
         holdout_score(bench, f)

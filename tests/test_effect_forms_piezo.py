@@ -9,16 +9,7 @@ from sizing.diagnose.inputs import treat_voltage
 from sizing.sim import piezohydraulic as ph
 from sizing.sim.piezohydraulic import PiezoHydraulicModel, simulate
 
-A_W, A_N = np.pi * (3.75 * 0.0254) ** 2 / 4, np.pi * (0.375 * 0.0254) ** 2 / 4
-K = 3 * 1.96e7
-
-
-def prototype(**changes):
-    base = dict(k_stacks=K, d33=6.7e-7, alpha=0.0, beta=0.0, gamma=0.0, delta=0.0, n_bw=1.0,
-                wide_area=A_W, narrow_area=A_N, oil_volume=A_W * 3e-3 + A_N * 0.02, bulk_modulus=1.5e9,
-                narrow_mass=0.02)
-    base.update(changes)
-    return PiezoHydraulicModel(**base)
+from .test_sim_piezohydraulic import A_N, A_W, K, prototype   # the seed's Table 3 prototype
 
 
 def test_nominal_path_is_bit_identical_at_default_fields():

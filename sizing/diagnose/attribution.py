@@ -113,8 +113,7 @@ def screen(bench, effect, seed: int = 0, head=(), z_heads=(np.zeros(0),)) -> tup
         k = int(np.argmin(scores))
         return np.zeros(0), float(np.sqrt(scores[k])), z_heads[k]
     sizes = [effect.unit(s) for s in effect.sizes_for(bench.rig, bench.model) if s]
-    if hasattr(effect, "starts"):                 # start points from the data (e.g. residual spectrum lines)
-        sizes += list(effect.starts(bench, head, z_heads[0]))
+    sizes += list(effect.starts(bench, head, z_heads[0]))   # from the data (e.g. residual spectrum lines)
     n = N_SCREEN * d * (4 if effect.post else 1)
     Z = np.vstack(sizes + [_lhs(n, d, seed)]) if sizes else _lhs(n, d, seed)
     Z = np.clip(Z, 0.0, 1.0)
@@ -179,7 +178,7 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
         bench, [y[None] for y in (bench.nominal_channels()[i] for i in bench.train)], bench.train) ** 2)))
     joint = getattr(bench, "nuisance", None)      # (effect, z) re-fitted with every effect
     head, z_head = ((joint[0],), joint[1]) if joint else ((), np.zeros(0))
-    effects = [e for e in effects if not hasattr(e, "observable") or e.observable(bench, head, z_head)]
+    effects = [e for e in effects if e.observable(bench, head, z_head)]
     z_recal = getattr(bench, "nuisance_recalibrated", None)
     z_heads = (z_head,) if z_recal is None or not joint else (z_head, z_recal)
     screened = [(e, *screen(bench, e, seed, head, z_heads)) for e in effects]

@@ -97,6 +97,16 @@ class Effect:
         taus = [v for size in self.sizes_for(rig, model) for k, v in size.items() if k == "delay_s" or k.endswith("time_s")]
         return float(max(taus, default=0.0))
 
+    def observable(self, bench, head=(), z_head=np.zeros(0)) -> bool:
+        """False when the campaign cannot show the effect (it is then not
+        screened), e.g. a disturbance line absent from the residual."""
+        return True
+
+    def starts(self, bench, head=(), z_head=np.zeros(0)) -> list:
+        """Screening start points (unit coordinates) taken from the data,
+        besides the realistic sizes and the Latin hypercube."""
+        return []
+
     def model_changes(self, model, values: dict) -> dict:
         return {model_field: values[param] for param, model_field in self.fields.items()}
 

@@ -143,7 +143,7 @@ def block_energy(bench, sims, runs) -> np.ndarray:
     out = []
     for i, S in zip(runs, sims):
         r = bench.runs[i]
-        e2 = np.sum(bench.weights(i)[:, None] * ((bench.measured(i) - S) / bench.spans(i)[:, None]) ** 2, axis=0)
+        e2 = np.sum(bench.weights(i)[:, None] * (bench.gap(i, S) / bench.spans(i)[:, None]) ** 2, axis=0)
         dt = float(np.median(np.diff(r.t)))
         size = max(int(round(BLOCK_S / dt)), 1)
         n_blocks = max(len(e2) // size, 1)

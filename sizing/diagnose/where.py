@@ -88,10 +88,10 @@ def gap_map(bench, simulated: list[np.ndarray], max_entries: int = 40) -> list[d
     rows = []
     for i, (r, s) in enumerate(zip(bench.runs, simulated)):
         S = np.atleast_2d(s)
-        M = bench.measured(i)[:S.shape[0]]
+        G = bench.gap(i, S)
         w = bench.weights(i)[:S.shape[0]] if S.shape[0] > 1 else np.ones(1)
         for k in range(S.shape[0]):
-            rows.append((r, bench.channels[k], np.sqrt(w[k]) * (M[k] - S[k]) / bench.spans(i)[k]))
+            rows.append((r, bench.channels[k], np.sqrt(w[k]) * G[k] / bench.spans(i)[k]))
     total = sum(float(np.sum(e ** 2)) for _, _, e in rows) or 1.0
     entries = []
     for r, channel, e in rows:

@@ -98,6 +98,72 @@ PIEZO_HELDOUT = [
 ]
 
 
+# The second held-out set: written 2026-11-23 (session 4), blind: the cases
+# were chosen before the session's changes to the attribution were measured
+# on them, and none was run through the diagnosis while building them (only
+# checked to generate finite runs). Other sizes of every effect, other rigs
+# (a 20 mm and an 8 mm DC stroke, 120-300 N DC loads, two and four stacks,
+# 3 and 3.25 in pistons, 100-130 V drives, stiffer and softer springs), a
+# noisier sensor, pairs not used before and other seeds (``--heldout2`` in
+# benchmarks/diagnose_benchmark.py). Viscous damping stays below about
+# 550 N s/m: above it the piezo generator's fixed 0.1 ms RK4 step goes
+# unstable on the 20 g output piston (600 N s/m does).
+NOISY2 = {"white": 1.5e-3, "flicker": 4e-4, "volt_white": 0.5}
+DC_HELDOUT2 = [
+    ("dc-h2-null-long", "none", {}, {"stroke": 0.02, "misstate": 0.02}),
+    ("dc-h2-null-load", "none", {}, {"load": 300.0, "stroke": 0.012, "misstate": 0.05}),
+    ("dc-h2-null-noisy", "none", {}, {"stroke": 0.008, "sensor": NOISY2}),
+    ("dc-h2-lugre", "coulomb_friction",
+     {"friction": dict(fc=45.0, fs=65.0, vs=0.0025, sigma0=2.5e6, sigma1=2.2e3, sigma2=250.0)}, {"stroke": 0.012}),
+    ("dc-h2-lugre-small", "coulomb_friction",
+     {"friction": dict(fc=18.0, fs=32.0, vs=0.006, sigma0=1e6, sigma1=1e3, sigma2=100.0)}, {"load": 250.0}),
+    ("dc-h2-backlash-stiff", "backlash",
+     {"backlash": dict(gap_m=1.2e-4, k_N_m=8e6, zeta=0.15, m_kg=0.8, c_ground=250.0)}, {"stroke": 0.02}),
+    ("dc-h2-backlash-wide", "backlash",
+     {"backlash": dict(gap_m=3.5e-4, k_N_m=1.5e6, zeta=0.35, m_kg=2.5, c_ground=450.0)}, {"misstate": 0.05}),
+    ("dc-h2-mount-high", "sensor_vibration", {"mount": dict(f_Hz=48.0, zeta=0.01, gain=0.12)}, {"stroke": 0.015}),
+    ("dc-h2-mount-low", "sensor_vibration", {"mount": dict(f_Hz=12.0, zeta=0.04, gain=0.3)}, {"load": 120.0}),
+    ("dc-h2-pade", "sensor_delay", {"delay_s": 0.004}, {"stroke": 0.015}),
+    ("dc-h2-ilimit", "current_saturation", {"current_limit": 6.5}, {"stroke": 0.02}),
+    ("dc-h2-lugre+mount", "coulomb_friction+sensor_vibration",
+     {"friction": dict(fc=28.0, fs=42.0, vs=0.0035, sigma0=2.2e6, sigma1=1.8e3, sigma2=120.0),
+      "mount": dict(f_Hz=22.0, zeta=0.02, gain=0.18)}, {}),
+    ("dc-h2-backlash+pade", "backlash+sensor_delay",
+     {"backlash": dict(gap_m=1.8e-4, k_N_m=2.5e6, zeta=0.25, m_kg=1.2, c_ground=320.0), "delay_s": 0.012},
+     {"stroke": 0.012}),
+    ("dc-h2-cogging", "outside:cogging", {"cogging": dict(amp_N=50.0, pitch_m=2e-3 / 12)}, {"stroke": 0.012}),
+    ("dc-h2-drift", "outside:thermal_drift", {"drift": 0.05}, {"load": 200.0}),
+    ("dc-h2-pulses", "outside:force_pulses", {"pulses": [(0.4, 0.02, 450.0), (1.2, 0.04, -250.0)]},
+     {"stroke": 0.015}),
+    ("dc-h2-amp-asym", "outside:amplifier_nonlinearity", {"amp_asymmetry": 0.75}, {"stroke": 0.008}),
+]
+PIEZO_HELDOUT2 = [
+    ("pz-h2-null-2stacks", "none", {}, {"n_stacks": 2, "v_max": 130.0}),
+    ("pz-h2-null-3in-spring", "none", {}, {"wide_in": 3.0, "load": (6.0, 2500.0), "misstate": 0.05}),
+    ("pz-h2-null-noisy", "none", {}, {"v_max": 100.0, "sensor": NOISY2}),
+    ("pz-h2-seal", "seal_stick_slip", {"seal": dict(fc=1.2, fs=2.9, vs=4e-3, sigma2=0.0)}, {}),
+    ("pz-h2-seal-3.25in", "seal_stick_slip", {"seal": dict(fc=3.5, fs=5.0, vs=1.2e-3, sigma2=0.0)},
+     {"wide_in": 3.25}),
+    ("pz-h2-seal-4stacks", "seal_stick_slip", {"seal": dict(fc=2.2, fs=4.2, vs=2.5e-3, sigma2=0.0)},
+     {"n_stacks": 4, "load": (3.0, 800.0)}),
+    ("pz-h2-logcreep-small", "stack_creep", {"creep": 0.012}, {"wide_in": 3.0}),
+    ("pz-h2-logcreep-large", "stack_creep", {"creep": 0.035}, {"v_max": 100.0}),
+    ("pz-h2-air-small", "fluid_compressibility", {"air": dict(eps0=0.012, kappa=1.3)}, {"load": (8.0, 1000.0)}),
+    ("pz-h2-air-large", "fluid_compressibility", {"air": dict(eps0=0.038, kappa=1.0)},
+     {"load": (3.0, 3000.0), "n_stacks": 4}),
+    ("pz-h2-pade", "sensor_delay", {"delay_s": 0.014}, {"n_stacks": 2}),
+    ("pz-h2-bandwidth", "amplifier_slew_limit", {"bandwidth": dict(omega=550.0, slew=700.0)}, {"v_max": 130.0}),
+    ("pz-h2-viscous", "viscous_damping", {"viscous": 250.0}, {"n_stacks": 4}),
+    ("pz-h2-leak", "leakage", {"leak": dict(G=2e-14, area_m2=3e-10, cd=0.6)}, {"load": (9.0, 1800.0)}),
+    ("pz-h2-creep+air", "stack_creep+fluid_compressibility",
+     {"creep": 0.02, "air": dict(eps0=0.028, kappa=1.3)}, {"load": (5.0, 1200.0)}),
+    ("pz-h2-viscous+pade", "viscous_damping+sensor_delay", {"viscous": 450.0, "delay_s": 0.006},
+     {"wide_in": 3.25}),
+    ("pz-h2-pulses", "outside:force_pulses", {"pulses": [(0.5, 0.02, 4.0), (1.3, 0.05, -2.0)]}, {"wide_in": 3.0}),
+    ("pz-h2-amp-compression", "outside:amplifier_nonlinearity", {"amp_compression": 0.2}, {"v_max": 130.0}),
+]
+
+
 def generate(case, seed: int, technology: str):
     """(rig.toml, runs, holdout run) of one case."""
     from . import dc, piezo

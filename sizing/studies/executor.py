@@ -41,8 +41,10 @@ class Executor:
             try:
                 self.client = Client(scheduler, timeout=f"{CONNECT_TIMEOUT_S}s")
             except Exception as exc:       # noqa: BLE001 -- OSError, TimeoutError, ValueError from bad addresses
+                # the exception's type says little (dask reports a refused or
+                # malformed address as TimeoutError, OSError, even MemoryError)
                 raise InputError(None, "--scheduler", f"cannot reach a Dask scheduler at {scheduler!r} within "
-                                 f"{CONNECT_TIMEOUT_S} s ({type(exc).__name__})") from None
+                                 f"{CONNECT_TIMEOUT_S} s; check the address and that the scheduler is running") from None
         else:
             if cluster is None:
                 cluster = self._cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=processes,

@@ -215,6 +215,9 @@ def run_crossform(verbose: bool = True, only: str = "", heldout: bool = False, h
                          "params_first": d.fits[0].params if d.fits else {},
                          "reason": v.get("reason", ""), "line": v.get("line"),
                          "nrmse_baseline": d.baseline_holdout, "noise_floor": d.noise_floor_holdout,
+                         # what a perfect model's raw shrink would be: it still leaves the noise
+                         "shrink_ceiling": float(1 - d.noise_floor_holdout / d.baseline_holdout),
+                         "explained_gap_energy": float(v.get("explained_gap_energy", 0.0)),
                          "seconds": d.seconds, "seconds_generate": generated, "ok": ok})
             if verbose:
                 print(f"{'ok ' if ok else 'BAD'} {case[0]:<20} {truth:<32} -> {v['status']:<18} {predicted:<30} "
@@ -230,6 +233,9 @@ def run_crossform(verbose: bool = True, only: str = "", heldout: bool = False, h
                "null_named": sum(r["predicted"] != NONE for r in null), "n_null": len(null),
                "outside_explained": sum(r["status"] == "explained" for r in outside), "n_outside": len(outside),
                "median_shrink_right": float(np.median([r["shrink"] for r in right])) if right else float("nan"),
+               "median_shrink_ceiling_right": float(np.median([r["shrink_ceiling"] for r in right])) if right else float("nan"),
+               "median_explained_gap_energy_right": (float(np.median([r["explained_gap_energy"] for r in right]))
+                                                     if right else float("nan")),
                "seconds_per_campaign": {"median": float(np.median([r["seconds"] for r in rows])),
                                         "max": float(np.max([r["seconds"] for r in rows]))},
                "confusion": crossform_table(rows)}
@@ -269,7 +275,9 @@ def main(argv=None) -> int:
         print(f"right effect named (explained or partial): {s['named_right']} of {s['n_effect_cases']}; "
               f"ranked first: {s['right_first']}; null cases named: {s['null_named']} of {s['n_null']}; "
               f"outside effects explained: {s['outside_explained']} of {s['n_outside']}; median holdout shrink "
-              f"when right: {100 * s['median_shrink_right']:.1f} %; seconds per campaign: median "
+              f"when right: {100 * s['median_shrink_right']:.1f} % (a perfect model's, which leaves the noise: "
+              f"{100 * s['median_shrink_ceiling_right']:.1f} %; gap energy above the floor removed: "
+              f"{100 * s['median_explained_gap_energy_right']:.1f} %); seconds per campaign: median "
               f"{s['seconds_per_campaign']['median']:.1f}, max {s['seconds_per_campaign']['max']:.1f}; "
               f"total {time.perf_counter() - start:.0f} s")
         if args.json:

@@ -60,7 +60,38 @@ def test_dc_library_forms_are_alternatives_of_one_family():
     for e in library("dc_motor"):
         forms.setdefault(e.name, set()).add(e.form)
     assert forms["current_saturation"] == {"command", "drive"}
-    assert forms["coulomb_friction"] == {"coulomb", "stribeck"}
+    assert forms["coulomb_friction"] == {"coulomb", "stribeck", "asymmetric"}
     assert forms["backlash"] == {"play", "coasting"}
     for e in library("dc_motor"):
         assert e.source and len(e.sizes_for(None, DCMotorModel(c1=-25.0, c2=3000.0, lead=2e-3, current_limit=8.0))) == 2
+
+
+def test_asymmetric_friction_in_the_closed_loop_by_hand():
+    """A slow ramp out and back on the seed's servo: at constant speed w the
+    held current is i = F to_i - c1 w / c2 (eq. 13 at rest acceleration), so
+    the currents moving out (F+) and in (F-) at one speed sum to (F+ - F-) to_i
+    and differ by (F+ + F-) to_i - 2 c1 |w| / c2 (to_i = lead / (2 pi eta k_t))."""
+    from sizing.io.rig import load_rig
+    from sizing.sim import dc_motor
+    from sizing.sim.rigs import dc_model
+
+    model = dc_model(load_rig("studies/campaigns/dc-motor/rig.toml"))
+    up, down = 40.0, 15.0
+    changed = model.replace(**coulomb_friction.ASYMMETRIC.model_changes(
+        model, {"extend_friction_N": np.array([up]), "retract_friction_N": np.array([down])}))
+    t = np.arange(0.0, 2.0, 1e-3)
+    speed = 0.01                                              # m/s, both ways
+    y = np.where(t < 1.0, speed * t, speed * (2.0 - t))
+    current = dc_motor.simulate(changed, t, y)["current_A"][0]
+    i_out, i_in = np.median(current[(t > 0.6) & (t < 0.95)]), np.median(current[(t > 1.6) & (t < 1.95)])
+    lead = float(np.atleast_1d(model.lead)[0])
+    to_i = lead / (2 * np.pi * float(np.atleast_1d(model.efficiency)[0]) * float(np.atleast_1d(model.torque_constant)[0]))
+    w = speed * 2 * np.pi / lead
+    c1, c2 = float(np.atleast_1d(model.c1)[0]), float(np.atleast_1d(model.c2)[0])
+    assert i_out + i_in == pytest.approx((up - down) * to_i, rel=0.02)
+    assert i_out - i_in == pytest.approx((up + down) * to_i - 2 * c1 * w / c2, rel=0.02)
+    # and the symmetric Coulomb form at the mean force gives equal and opposite currents
+    mean = model.replace(coulomb_friction=np.array([0.5 * (up + down)]))
+    current = dc_motor.simulate(mean, t, y)["current_A"][0]
+    assert np.median(current[(t > 0.6) & (t < 0.95)]) + np.median(current[(t > 1.6) & (t < 1.95)]) == pytest.approx(
+        0.0, abs=0.02 * (up - down) * to_i)

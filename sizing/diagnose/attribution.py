@@ -1,11 +1,14 @@
 """Which effect explains the gap, and how far it shrinks.
 
 1. Noise floor of each run, from the data: the white part of the position
-   measurement (second differences, robust) plus the logged input's noise
-   carried through the run's gain (position span / input span).
+   measurement (second differences, robust) plus, on a piezo rig, the
+   spread of the simulated output when the logged voltage is logged again
+   with its own noise and treated the same way (``noise_floor``).
    Model-form floor: what a well-fitted nominal of another form leaves
-   (FORM_FLOOR, of the span; stated assumption, measured on the null cases
-   of the cross-form benchmark). The floor an effect is judged against is
+   (FORM_FLOOR, of the span; a stated assumption, see the README: 0.3-0.5 %
+   on other simulators' null cases, 0.1-0.7 % between the two piezo
+   generators of this project on their noise-free null runs). The floor an
+   effect is judged against is
    floor = sqrt(noise^2 + FORM_FLOOR^2).
 2. Screen: every effect of the library at its two realistic sizes and a
    seeded Latin-hypercube of parameter sets, one simulator batch per

@@ -17,6 +17,7 @@ PIEZO = (seal_stick_slip.EFFECT, fluid_compressibility.EFFECT, viscous_damping.E
          seal_stick_slip.LUGRE, stack_creep.LOG, fluid_compressibility.AIR, leakage.ORIFICE,
          amplifier_slew_limit.BANDWIDTH)
 DC = (current_saturation.COMMAND, current_saturation.DRIVE, coulomb_friction.COULOMB, coulomb_friction.STRIBECK,
+      coulomb_friction.ASYMMETRIC,
       backlash.PLAY, backlash.COASTING,
       sensor_vibration.EFFECT, sensor_vibration.SINUSOID, sensor_delay.DC)
 

@@ -2,7 +2,7 @@
 it moves, so the loop sticks short of the reference and the integrator
 hunts.
 
-Two forms (sizing.sim.dc_motor):
+Three forms (sizing.sim.dc_motor):
 - ``coulomb``: Karnopp friction with a constant running force (a piston at
   rest stays at rest while the net force is inside the band). Sizes: 20 and
   60 N at the output, 1.4 % and 4 % of the 1.41 kN peak force of the seed's
@@ -16,8 +16,20 @@ Two forms (sizing.sim.dc_motor):
   (1998) 176). Viscous friction is linear in the speed and is absorbed by the
   re-calibrated pole c1, so it needs no parameter of its own. Sizes: 20 N
   with F_s / F_c = 1.5 and v_s = 1 mm/s; 60 N with 1.25 and 10 mm/s.
+- ``asymmetric``: Coulomb friction of another size in each direction
+  (F+ while extending, F- while retracting: a rod seal whose lip faces one
+  way, a screw nut preloaded on one flank; Armstrong-Helouvry et al. 1994,
+  sec. 2, direction-dependent friction). Karnopp friction with running
+  force (F+ + F-) / 2 and a constant force (F+ - F-) / 2 against extension
+  is exactly this: moving out the motor overcomes F+, moving in F-, and at
+  rest the band is [-F-, F+]; so the form is the nominal's load force plus
+  that bias, no new simulator field (the one difference: the controller's
+  integrator starts holding the bias, a real one starts inside the band).
+  Sizes: 20 N out and 30 N in; 60 N and 45 N (asymmetries of 25-50 %).
 """
 from __future__ import annotations
+
+import numpy as np
 
 from .base import Effect, Param
 
@@ -45,5 +57,21 @@ STRIBECK = Stribeck(
     sizes=({"coulomb_friction_N": 20.0, "static_ratio": 1.5, "stribeck_velocity_m_s": 1e-3},
            {"coulomb_friction_N": 60.0, "static_ratio": 1.25, "stribeck_velocity_m_s": 1e-2}),
     source="Stribeck curve: Armstrong-Helouvry, Dupont, Canudas de Wit, Automatica 30 (1994) 1083; " + SOURCE)
+
+class Asymmetric(Effect):
+    def model_changes(self, model, values):
+        up, down = values["extend_friction_N"], values["retract_friction_N"]
+        return {"coulomb_friction": 0.5 * (up + down),
+                "load_force": np.asarray(model.load_force, float) + 0.5 * (up - down)}
+
+
+ASYMMETRIC = Asymmetric(
+    name="coulomb_friction", technology="dc_motor", form="asymmetric",
+    params=(Param("extend_friction_N", 0.5, 500.0, log=True, doc="running friction while extending"),
+            Param("retract_friction_N", 0.5, 500.0, log=True, doc="running friction while retracting")),
+    sizes=({"extend_friction_N": 20.0, "retract_friction_N": 30.0},
+           {"extend_friction_N": 60.0, "retract_friction_N": 45.0}),
+    source="direction-dependent friction: Armstrong-Helouvry, Dupont, Canudas de Wit, Automatica 30 (1994) 1083; "
+           + SOURCE)
 
 EFFECT = COULOMB   # the historical form

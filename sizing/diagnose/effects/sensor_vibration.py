@@ -47,7 +47,13 @@ def mount_response(t: np.ndarray, y: np.ndarray, freq: float, zeta: float, gain:
     fs = 1.0 / float(np.median(np.diff(t)))
     freq = min(freq, 0.45 * fs)
     w = 2 * np.pi * freq
-    b, a = signal.bilinear([-gain, 0.0, 0.0], [1.0, 2 * zeta * w, w * w], fs=fs)
+    # bilinear (Tustin) transform of -gain s^2 / (s^2 + 2 zeta w s + w^2),
+    # written out: scipy's bilinear warns of a badly conditioned numerator
+    # for the tiny gains the screen tries, though the section is exact
+    k = 2.0 * fs
+    a0 = k * k + 2 * zeta * w * k + w * w
+    b = -gain * k * k * np.array([1.0, -2.0, 1.0]) / a0
+    a = np.array([1.0, (2 * w * w - 2 * k * k) / a0, (k * k - 2 * zeta * w * k + w * w) / a0])
     y0 = y - y[0]
     return signal.lfilter(b, a, y0)
 

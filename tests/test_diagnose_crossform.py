@@ -133,3 +133,18 @@ def test_lugre_seal_from_the_second_generator_is_explained_as_seal_stick_slip(tm
     assert d.verdict["status"] == "explained", d.verdict["reason"]
     assert "seal_stick_slip" in d.verdict["effect"].split("+")
     assert "lugre" in d.verdict["form"].split("+")
+
+
+def test_a_small_backlash_behind_a_large_delay_is_named_as_the_pair(tmp_path):
+    """A 10 ms Pade delay that alone removes nearly all of the gap above the
+    model-form floor, and a 0.2 mm backlash with contact stiffness behind it
+    (the loop closed on the motor): the delay alone still leaves several
+    times the noise floor, so pairs are tried and the pair is named, each
+    size within 20 % of the generator's."""
+    folder = _campaign(tmp_path, {"delay_s": 0.010, "backlash": dict(gap_m=2e-4, k_N_m=3e6, zeta=0.25, m_kg=1.0,
+                                                                      c_ground=300.0)}, seed=29)
+    d = api.diagnose(folder, ["stairs_b"])
+    assert set(d.verdict["effect"].split("+")) == {"sensor_delay", "backlash"}, d.verdict["reason"]
+    params = d.fits[0].params
+    assert params["sensor_delay.delay_s"] == pytest.approx(0.010, rel=0.2)
+    assert params["backlash.backlash_m"] == pytest.approx(2e-4, rel=0.2)

@@ -17,14 +17,17 @@
    best screened point): the best-screened form of each of the TOP_FIT best
    families, and any form that screens at < 0.9 x the baseline; judge every
    effect on the holdout runs only.
-4. Pairs: when no single effect explains the gap, the best pairs of the
+4. Pairs: unless the best single leaves the holdout within GAP_FACTOR x
+   the noise floor (nothing significant left), the best pairs of the
    top fitted singles (TOP_PAIRS families; a single only screened, not
    promising on the training runs, is not paired) are fitted together,
    and the best single with the next family; a pair ranks first only when it is
    significantly better than the best of its two singles (same bootstrap)
    and removes >= PAIR_GAIN of the gap energy that single leaves above the floor.
 5. Verdict (all measures are the combined measure of bench.py, holdout runs):
-   - "no_significant_gap": baseline <= GAP_FACTOR x the noise floor;
+   - "no_significant_gap": baseline <= GAP_FACTOR x the noise floor and
+     the holdout gap has no spectral line (a line is significant however
+     little broadband energy it holds; it is judged by the line rule);
    - "unexplained" (named nothing) as well when the baseline is within
      GAP_FACTOR x the floor (noise and model form together), unless the
      holdout gap has a spectral line (spectrum.gap_lines, a narrow band the
@@ -208,9 +211,11 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
         fits.append(f)
     fits.sort(key=lambda f: f.nrmse_holdout)
     best = fits[0]
-    floor = total_floor(floor_holdout)
-    enough = (explained(baseline_holdout, best.nrmse_holdout, floor) >= EXPLAINED
-              and best.nrmse_holdout <= RESIDUAL_FACTOR * floor)
+    # pairs are tried unless the best single leaves nothing significant:
+    # judged against the noise floor, not the model-form floor too (a
+    # single that explains most of the gap above that larger floor may
+    # still leave a second effect's gap well above the noise)
+    enough = best.nrmse_holdout <= GAP_FACTOR * floor_holdout
     if pairs and not enough:
         tops = []                                         # the best fitted form of each of the top families
         for f in fits:
@@ -309,7 +314,10 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
     ``line``: the spectral lines of the holdout gap (spectrum.gap_lines),
     for the line rule."""
     floor = total_floor(floor_holdout)
-    if baseline_holdout <= GAP_FACTOR * floor_holdout:
+    on_line = line is not None and line.get("removed", 0.0) >= PARTIAL
+    if baseline_holdout <= GAP_FACTOR * floor_holdout and line is None:
+        # (a spectral line of the gap is significant however little of the
+        # broadband energy it holds: it is then judged by the line rule)
         return {"effect": None, "shrink_holdout": 0.0, "status": "no_significant_gap",
                 "floor_holdout": floor,
                 "reason": f"baseline holdout NRMSE {baseline_holdout:.4f} is within {GAP_FACTOR:g} x "
@@ -333,7 +341,6 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
     # spectral line of the holdout gap (spectrum.py) is not covered by it.
     # Within that floor, a candidate is judged on the share of the lines'
     # energy above the local level that it removes.
-    on_line = line is not None and line.get("removed", 0.0) >= PARTIAL
     if line is not None:
         out["line"] = dict(line, judged_on=False)
     if on_line and baseline_holdout <= GAP_FACTOR * floor:

@@ -17,8 +17,8 @@
    best screened point): the best-screened form of each of the TOP_FIT best
    families, and any form that screens at < 0.9 x the baseline; judge every
    effect on the holdout runs only.
-4. Pairs: unless the best single leaves the holdout within GAP_FACTOR x
-   the noise floor (nothing significant left), the best pairs of the
+4. Pairs: unless the best single explains the gap and leaves at most
+   RESIDUAL_FACTOR x the noise floor on the holdout, the best pairs of the
    top fitted singles (TOP_PAIRS families; a single only screened, not
    promising on the training runs, is not paired) are fitted together,
    and the best single with the next family; a pair ranks first only when it is
@@ -211,11 +211,14 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
         fits.append(f)
     fits.sort(key=lambda f: f.nrmse_holdout)
     best = fits[0]
-    # pairs are tried unless the best single leaves nothing significant:
-    # judged against the noise floor, not the model-form floor too (a
-    # single that explains most of the gap above that larger floor may
-    # still leave a second effect's gap well above the noise)
-    enough = best.nrmse_holdout <= GAP_FACTOR * floor_holdout
+    # pairs are tried unless the best single explains the gap and leaves at
+    # most RESIDUAL_FACTOR x the *noise* floor: a single that explains most
+    # of the gap above the model-form floor too may still leave a second
+    # effect's gap well above the noise (a 12 ms delay over a 0.2 mm
+    # backlash left 4.9 x the noise; the piezo singles that explain their
+    # gap leave 0.8-2.5 x, model-form error that a second effect would absorb)
+    enough = (explained(baseline_holdout, best.nrmse_holdout, total_floor(floor_holdout)) >= EXPLAINED
+              and best.nrmse_holdout <= RESIDUAL_FACTOR * floor_holdout)
     if pairs and not enough:
         tops = []                                         # the best fitted form of each of the top families
         for f in fits:

@@ -177,28 +177,17 @@ def _same(a: str, b: str) -> bool:
     return set(a.split("+")) == set(b.split("+"))
 
 
-def run_crossform(verbose: bool = True, only: str = "", heldout: bool = False, heldout2: bool = False,
-                  heldout3: bool = False, heldout4: bool = False) -> dict:
+def run_crossform(verbose: bool = True, only: str = "", which: str = "dev") -> dict:
+    """``which``: a set of benchmarks/crossform/cases.py SETS."""
     sys.path.insert(0, str(ROOT))
     from benchmarks.crossform import cases as xcases
     from benchmarks.crossform.common import write_campaign
     from sizing import api
 
     rows = []
-    if heldout + heldout2 + heldout3 + heldout4 > 1:
-        raise ValueError("heldout, heldout2, heldout3 and heldout4 are exclusive")
-    if heldout4:
-        tables = (("dc_motor", xcases.DC_HELDOUT4), ("piezohydraulic", xcases.PIEZO_HELDOUT4))
-    elif heldout3:
-        tables = (("dc_motor", xcases.DC_HELDOUT3), ("piezohydraulic", xcases.PIEZO_HELDOUT3))
-    elif heldout2:
-        tables = (("dc_motor", xcases.DC_HELDOUT2), ("piezohydraulic", xcases.PIEZO_HELDOUT2))
-    elif heldout:
-        tables = (("dc_motor", xcases.DC_HELDOUT), ("piezohydraulic", xcases.PIEZO_HELDOUT))
-    else:
-        tables = (("dc_motor", xcases.DC), ("piezohydraulic", xcases.PIEZO))
-    # other noise and misstatements per set
-    seed0 = SEED * 100 + (17000 if heldout4 else 13000 if heldout3 else 9000 if heldout2 else 5000 if heldout else 0)
+    dc_table, piezo_table, offset = xcases.SETS[which]
+    tables = (("dc_motor", dc_table), ("piezohydraulic", piezo_table))
+    seed0 = SEED * 100 + offset
     for technology, table in tables:
         for k, case in enumerate(table):
             if only and only not in case[0]:
@@ -285,8 +274,8 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     start = time.perf_counter()
     if args.crossform:
-        result = run_crossform(only=args.only, heldout=args.heldout, heldout2=args.heldout2,
-                               heldout3=args.heldout3, heldout4=args.heldout4)
+        which = next((name for name in ("heldout", "heldout2", "heldout3", "heldout4") if getattr(args, name)), "dev")
+        result = run_crossform(only=args.only, which=which)
         s = result["summary"]
         print(s["confusion"])
         print(f"right effect named (explained or partial): {s['named_right']} of {s['n_effect_cases']}; "

@@ -313,6 +313,17 @@ PIEZO_HELDOUT4 = [
      {"wide_in": 3.25, "v_max": 135.0}),
 ]
 
+# Each set: its DC and piezo tables and the seed offset of its campaigns
+# (other noise and misstatements per set).
+SETS = {
+    "dev": (DC, PIEZO, 0),
+    "heldout": (DC_HELDOUT, PIEZO_HELDOUT, 5000),
+    "heldout2": (DC_HELDOUT2, PIEZO_HELDOUT2, 9000),
+    "heldout3": (DC_HELDOUT3, PIEZO_HELDOUT3, 13000),
+    "heldout4": (DC_HELDOUT4, PIEZO_HELDOUT4, 17000),
+}
+
+
 def generate(case, seed: int, technology: str):
     """(rig.toml, runs, holdout run) of one case."""
     from . import dc, piezo

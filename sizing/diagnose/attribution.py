@@ -181,11 +181,12 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
     effects = [e for e in library(bench.kind) if e.applicable(bench.rig, bench.model)]
     base_train = float(np.sqrt(np.mean(fitting.run_nrmse(
         bench, [y[None] for y in (bench.nominal_channels()[i] for i in bench.train)], bench.train) ** 2)))
-    joint = getattr(bench, "nuisance", None)      # (effect, z) re-fitted with every effect
+    # the re-calibrated parameters: re-fitted with every effect, screened
+    # from their stated and their re-calibrated values
+    joint = bench.nuisance
     head, z_head = ((joint[0],), joint[1]) if joint else ((), np.zeros(0))
     effects = [e for e in effects if e.observable(bench, head, z_head)]
-    z_recal = getattr(bench, "nuisance_recalibrated", None)
-    z_heads = (z_head,) if z_recal is None or not joint else (z_head, z_recal)
+    z_heads = (z_head, joint[2]) if joint else (z_head,)
     screened = [(e, *screen(bench, e, seed, head, z_heads)) for e in effects]
     screened.sort(key=lambda s: s[2])
     fits = []

@@ -75,6 +75,10 @@ def treat_input(kind: str, t: np.ndarray, u: np.ndarray) -> tuple[np.ndarray, st
 class Bench:
     """Nominal model + prepared runs; simulates many parameter sets at once."""
 
+    # (re-calibration effect, stated z, re-calibrated z) when the diagnosis
+    # re-calibrates the nominal (diagnosis.diagnose_runs); None otherwise
+    nuisance = None
+
     def __init__(self, kind: str, rig, runs, holdout: list[str], model=None):
         self.kind = kind
         self.rig = rig

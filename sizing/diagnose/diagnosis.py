@@ -110,12 +110,12 @@ def diagnose_runs(kind: str, rig, runs, holdout: list[str], recalibrate: list[st
         bench = bench.with_model(model)
         # effects are screened and fitted with the re-calibrated parameters
         # free, starting from their stated values (an effect the stated
-        # nominal lacks is not hidden by a re-calibration that absorbed it)
-        bench.nuisance = (effect, effect.unit({n: recal_info["nominal"][n] for n in names}))
+        # nominal lacks is not hidden by a re-calibration that absorbed it);
         # a second screening start: the re-calibrated values (an effect the
         # stated values would make the screen over-size, e.g. friction that
         # offsets a mis-stated d33, is screened where the nominal fits best)
-        bench.nuisance_recalibrated = effect.unit(recal_info["recalibrated"])
+        bench.nuisance = (effect, effect.unit({n: recal_info["nominal"][n] for n in names}),
+                          effect.unit(recal_info["recalibrated"]))
     sims = bench.nominal()
     nominal = bench.nominal_channels()
     all_runs = list(range(len(bench.runs)))

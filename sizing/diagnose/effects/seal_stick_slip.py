@@ -40,11 +40,9 @@ class SealStribeck(Effect):
                 "narrow_stribeck_velocity": values["stribeck_velocity_m_s"]}
 
 
-class SealLuGre(Effect):
+class SealLuGre(SealStribeck):
     def model_changes(self, model, values):
-        return {"narrow_friction": values["narrow_friction_N"], "narrow_breakaway": values["breakaway_ratio"],
-                "narrow_stribeck_velocity": values["stribeck_velocity_m_s"],
-                "narrow_presliding": values["presliding_m"]}
+        return {**super().model_changes(model, values), "narrow_presliding": values["presliding_m"]}
 
 
 class SealStickSlip(Effect):

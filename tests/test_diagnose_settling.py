@@ -67,3 +67,16 @@ def test_the_line_rule_acts_between_the_noise_and_the_model_form_floor(baseline,
         assert v["line"]["judged_on"] and v["explained_gap_energy"] == pytest.approx(0.9)
     else:
         assert v["effect"] is None
+
+
+@pytest.mark.parametrize("best,status", [
+    (0.0030, "unexplained"),   # removes 0.0034^2 - 0.0030^2 = 2.6e-6 < floor^2 = 5e-6: could be model-form error
+    (0.0020, "explained"),     # removes 7.6e-6 >= 5e-6
+])
+def test_an_effect_must_remove_more_than_the_model_form_floor(best, status):
+    # baseline 0.0034 just above 1.5 x the floor sqrt(0.001^2 + 0.002^2) = 0.00224 (0.00335);
+    # the best candidate is significant against the baseline and its runner-up
+    fits = _fits(0.5)
+    fits[0].nrmse_holdout = best
+    v = attribution.verdict(0.0034, 0.001, fits, np.full(40, 10.0), run_length=2.0)
+    assert v["status"] == status, v["reason"]

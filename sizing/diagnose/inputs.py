@@ -7,6 +7,10 @@ the hysteresis state and creates a gap that is not in the hardware. A plain
 low-pass is not enough (any wiggle left is a reversal), and a sharp one
 rings at the edges of voltage steps. The treatment, stated in every report:
 
+0. when the log is piecewise linear to within its noise (holds, ramps and
+   steps: piecewise.py), its continuous piecewise-linear least-squares fit
+   with free knots, which keeps the corners of ramps that any low-pass
+   rounds; otherwise
 1. a zero-phase Gaussian low-pass (symmetric kernel: no delay, no overshoot
    at steps) of standard deviation SMOOTH_SAMPLES samples, on each stretch
    between jumps (a sample-to-sample change above JUMP_SIGMAS x the noise)
@@ -24,6 +28,8 @@ from __future__ import annotations
 import numpy as np
 from scipy.ndimage import gaussian_filter1d
 from scipy.optimize import isotonic_regression
+
+from .piecewise import piecewise_linear
 
 SMOOTH_SAMPLES = 4.0
 REVERSAL_SIGMAS = 6.0
@@ -90,12 +96,14 @@ def treat_voltage(v: np.ndarray) -> np.ndarray:
     if len(v) < 8:
         return v.copy()
     sigma = noise_sigma(v)
-    # steps: jumps between two samples far above the noise are kept sharp by
-    # smoothing each stretch between jumps on its own
-    jumps = np.flatnonzero(np.abs(np.diff(v)) > JUMP_SIGMAS * max(sigma, 1e-12)) + 1
-    smooth = np.empty_like(v)
-    for a, b in zip(np.r_[0, jumps], np.r_[jumps, len(v)]):
-        smooth[a:b] = smooth_piece(v[a:b])
+    jumps = np.flatnonzero(np.abs(np.diff(v)) > JUMP_SIGMAS * max(sigma, 1e-12))
+    smooth = piecewise_linear(v, sigma)
+    if smooth is None:
+        # steps: jumps between two samples far above the noise are kept
+        # sharp by smoothing each stretch between jumps on its own
+        smooth = np.empty_like(v)
+        for a, b in zip(np.r_[0, jumps + 1], np.r_[jumps + 1, len(v)]):
+            smooth[a:b] = smooth_piece(v[a:b])
     threshold = max(REVERSAL_SIGMAS * sigma, 0.005 * float(np.ptp(v)), 1e-12)
     pivots = reversals(smooth, threshold)
     out = smooth.copy()
@@ -107,5 +115,6 @@ def treat_voltage(v: np.ndarray) -> np.ndarray:
 
 
 def describe() -> str:
-    return (f"voltage: zero-phase Gaussian low-pass (sigma {SMOOTH_SAMPLES:g} samples), then monotone "
+    return (f"voltage: piecewise-linear fit with free knots when the log is piecewise linear within its noise, "
+            f"else zero-phase Gaussian low-pass (sigma {SMOOTH_SAMPLES:g} samples), then monotone "
             f"(isotonic) between reversals larger than {REVERSAL_SIGMAS:g} x the voltage noise")

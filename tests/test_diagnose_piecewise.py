@@ -1,0 +1,61 @@
+"""The piecewise-linear reading of a logged command (sizing/diagnose/piecewise.py)
+against the clean signals it was made from."""
+import numpy as np
+
+from sizing.diagnose.inputs import noise_sigma, treat_voltage
+from sizing.diagnose.piecewise import hat_fit, kink_candidates, piecewise_linear
+
+T = np.arange(0.0, 2.0, 1e-3)
+
+
+def _staircase():
+    """Levels held 0.25 s, each step commanded as a 40 ms ramp (up to 2.25 V a sample)."""
+    levels = np.array([0, 0.4, 0.9, 0.6, 0.1, 0.75, 0.3, 0.0]) * 150.0
+    edges = np.arange(1, 8) * 0.25
+    knots_t = np.ravel([[e, e + 0.04] for e in edges])
+    knots_v = np.ravel([[a, b] for a, b in zip(levels[:-1], levels[1:])])
+    return np.interp(T, np.r_[0.0, knots_t], np.r_[0.0, knots_v]), np.round(knots_t * 1000).astype(int)
+
+
+def test_hat_fit_is_exact_on_its_own_knots():
+    # a piecewise-linear signal with corners at 300 and 700 is reproduced exactly
+    v = np.interp(np.arange(1000), [0, 300, 700, 999], [1.0, 4.0, -2.0, -2.5])
+    fit = hat_fit(v, np.array([0, 300, 700, 999]))
+    assert np.max(np.abs(fit - v)) < 1e-9
+    # and a line through one knot fewer is the least-squares line: residual orthogonal to 1 and t
+    fit = hat_fit(v, np.array([0, 999]))
+    r = v - fit
+    assert abs(r.sum()) < 1e-6 * len(v) and abs((r * np.arange(1000)).sum()) < 1e-3 * len(v) ** 2
+
+
+def test_corners_of_a_ramped_staircase_are_found_to_two_samples():
+    clean, corners = _staircase()
+    noisy = clean + np.random.default_rng(1).normal(0.0, 0.3, T.size)
+    found = np.array(kink_candidates(noisy, noise_sigma(noisy)))
+    nearest = np.abs(found[:, None] - corners[None, :]).min(axis=0)
+    assert np.all(nearest <= 2), nearest
+
+
+def test_staircase_error_is_ten_times_below_the_noise():
+    """A 4-sample Gaussian rounds each ramp corner by up to 2 V; the
+    piecewise-linear fit leaves less than a tenth of the 0.3 V noise."""
+    clean, _ = _staircase()
+    noisy = clean + np.random.default_rng(2).normal(0.0, 0.3, T.size)
+    fit = piecewise_linear(noisy, noise_sigma(noisy))
+    assert fit is not None
+    assert np.sqrt(np.mean((fit - clean) ** 2)) < 0.03
+    assert np.sqrt(np.mean((treat_voltage(noisy) - clean) ** 2)) < 0.03
+
+
+def test_a_sine_is_not_read_as_piecewise_linear():
+    v = 75.0 + 75.0 * np.sin(2 * np.pi * 3 * T) + np.random.default_rng(3).normal(0.0, 0.3, T.size)
+    assert piecewise_linear(v, noise_sigma(v)) is None
+    # and the treatment still follows it (the Gaussian path) within the noise
+    assert np.sqrt(np.mean((treat_voltage(v) - (75.0 + 75.0 * np.sin(2 * np.pi * 3 * T))) ** 2)) < 0.3
+
+
+def test_noise_alone_gives_a_line():
+    v = 5.0 + np.random.default_rng(4).normal(0.0, 0.3, T.size)
+    fit = piecewise_linear(v, noise_sigma(v))
+    assert fit is not None
+    assert np.allclose(np.diff(fit, 2), 0.0, atol=1e-9)       # one straight line: no knot paid its penalty

@@ -34,7 +34,8 @@
      judged on the share of the lines' energy it removes (line rule);
    - "explained": the best removes >= EXPLAINED of the gap energy above the
      floor (and, unless judged on lines, at least the floor's own energy:
-     base^2 - best^2 >= floor^2, so that it is not fitting model-form error), leaves <= RESIDUAL_FACTOR x floor, is significantly better
+     base^2 - best^2 >= floor^2, so that it is not fitting model-form
+     error), leaves <= RESIDUAL_FACTOR x floor, is significantly better
      than the baseline and separated from the runner-up (the best
      candidate that is a different explanation: neither a subset nor a
      superset of its effects);

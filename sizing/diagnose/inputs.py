@@ -29,11 +29,10 @@ import numpy as np
 from scipy.ndimage import gaussian_filter1d
 from scipy.optimize import isotonic_regression
 
-from .piecewise import piecewise_linear
+from .piecewise import JUMP_SIGMAS, piecewise_linear
 
 SMOOTH_SAMPLES = 4.0
 REVERSAL_SIGMAS = 6.0
-JUMP_SIGMAS = 8.0
 
 
 def noise_sigma(x: np.ndarray) -> float:
@@ -96,9 +95,9 @@ def treat_voltage(v: np.ndarray) -> np.ndarray:
     if len(v) < 8:
         return v.copy()
     sigma = noise_sigma(v)
-    jumps = np.flatnonzero(np.abs(np.diff(v)) > JUMP_SIGMAS * max(sigma, 1e-12))
     smooth = piecewise_linear(v, sigma)
     if smooth is None:
+        jumps = np.flatnonzero(np.abs(np.diff(v)) > JUMP_SIGMAS * max(sigma, 1e-12))
         # steps: jumps between two samples far above the noise are kept
         # sharp by smoothing each stretch between jumps on its own
         smooth = np.empty_like(v)

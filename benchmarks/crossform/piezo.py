@@ -191,11 +191,11 @@ def simulate(t: np.ndarray, V: np.ndarray, tr: dict, eff: dict) -> np.ndarray:
                 # to DT / EVENT_SUBSTEPS (deciding once per DT left a first-
                 # order error that piled up over a staircase's holds: 0.3-0.4 %
                 # of the span against DT / 4)
-                t_step = tt
-                for _ in range(EVENT_SUBSTEPS):
+                t_step, h = tt, DT / EVENT_SUBSTEPS
+                for j in range(EVENT_SUBSTEPS):
+                    tt = t_step + j * h
                     direction, s = decide(s, direction)
-                    s, z = advance(s, z, direction, DT / EVENT_SUBSTEPS)
-                    tt += DT / EVENT_SUBSTEPS
+                    s, z = advance(s, z, direction, h)
                 tt = t_step
             else:
                 s, z = s1, z1

@@ -367,13 +367,14 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
     # floor, was named after removing 0.48 floor^2); not asked of the line
     # rule, whose lines the broadband floor does not cover
     removed = baseline_holdout ** 2 - best.nrmse_holdout ** 2
-    substantial = removed >= floor ** 2 or out.get("line", {}).get("judged_on", False)
+    on_lines = out.get("line", {}).get("judged_on", False)
+    substantial = removed >= floor ** 2 or on_lines
     significant = shrink > 0 and p_base < ALPHA and substantial
     separated = p_second < ALPHA
     leaves = best.nrmse_holdout <= RESIDUAL_FACTOR * floor
     slow = unsettled(best, run_length)
     if significant and share >= EXPLAINED and separated and leaves and not slow:
-        what = "of the energy of the gap's spectral lines" if out.get("line", {}).get("judged_on") else "of the holdout gap energy above the floor"
+        what = "of the energy of the gap's spectral lines" if on_lines else "of the holdout gap energy above the floor"
         out.update(effect=best.name, form=best.form, status="explained",
                    reason=f"{best.name} removes {100 * share:.0f} % {what}, "
                           f"separated from {second.name if second else 'every other effect'} (p = {p_second:.3f})")

@@ -11,9 +11,10 @@ noise and keeps the corners:
 
 1. kink candidates: peaks of the Gaussian second-derivative response at
    KINK_SCALES samples above KINK_SIGMAS x that response's own noise
-   (sigma ||g''||), each placed by the best single hinge near it; jumps
-   (a sample-to-sample change above the jump threshold) add a knot on both
-   of their samples;
+   (sigma ||g''||), each placed by the best single hinge near it; steps
+   (a sample-to-sample change JUMP_SIGMAS x the noise away from the local
+   slope, so a steep ramp's noisy samples are not steps) add a knot on
+   both of their samples;
 2. the least-squares continuous piecewise-linear fit on those knots (hat
    basis: a tridiagonal solve);
 3. backward pruning: knots whose removal raises the residual sum of squares

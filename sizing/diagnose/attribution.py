@@ -240,9 +240,46 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
             f = fit_with(ea + eb, np.concatenate([za, zb]))
             holdout_score(bench, f)
             fits.append(f)
+        for ea, eb, za, zb in stepwise_pairs(bench, best, effects, head, seed, fits):
+            fits.append(fit_with(ea + eb, np.concatenate([za, zb]), best.z[:len(z_head)]))
+            holdout_score(bench, fits[-1])
         fits.sort(key=lambda f: f.nrmse_holdout)
         refit_singles(bench, fits, head, len(z_head))
     return fits
+
+
+STEP_PAIRS = 2   # families fitted as the second effect of a pair from a screen given the best single
+
+
+def stepwise_pairs(bench, best, effects, head, seed: int, fits):
+    """Forward selection's second step: every other family screened with the
+    best single held at its fit, and the best STEP_PAIRS families not yet
+    paired with it returned as (effects a, effects b, z a, z b) pair starts,
+    model effects first. A dominant effect masks a second one in the
+    screen against the nominal (a 12 ms delay over a seal, or over a leak:
+    the second family ranked below the top TOP_PAIRS and was never paired);
+    given the dominant one, the second is screened on what it leaves."""
+    lead = tuple(head) + best.named
+    n_best = sum(len(e.params) for e in best.named)
+    paired = [{e.name for e in f.named} for f in fits if len(f.named) == 2]
+    ranked = []
+    for effect in effects:
+        if effect.name == best.name or {best.name, effect.name} in paired:
+            continue
+        z0, score, _ = screen(bench, effect, seed, lead, (best.z,))
+        ranked.append((score, effect.name, effect, z0))
+    out, families = [], set()
+    for score, name, effect, z0 in sorted(ranked, key=lambda r: r[0]):
+        if name in families:
+            continue                                      # the best-screened form of each family
+        families.add(name)
+        ea, eb, za, zb = best.named, (effect,), best.z[len(best.z) - n_best:], z0
+        if ea[0].post and not effect.post:
+            ea, eb, za, zb = eb, ea, zb, za              # model effects first, measurement effects after
+        out.append((ea, eb, za, zb))
+        if len(out) == STEP_PAIRS:
+            break
+    return out
 
 
 def refit_singles(bench, fits, head, n_head: int) -> None:

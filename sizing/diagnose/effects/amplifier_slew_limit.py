@@ -12,8 +12,20 @@ driving a capacitive load is a first-order low-pass of bandwidth w_a
 "Piezo amplifier bandwidth and slew rate"; Fleming and Leang, Design,
 Modeling and Control of Nanopositioning Systems (2014) ch. 13). Sizes:
 w_a = 2 pi 100 Hz with 1000 V/s and 2 pi 30 Hz with 300 V/s.
+
+The bandwidth is fitted down to 2 pi 20 Hz, not lower. A linear piezo
+amplifier's small-signal bandwidth into a capacitive load C is 1 / (R_o C)
+with an output impedance R_o of ohms to tens of ohms: the PiezoDrive PD200
+is 6.4 kHz into 10 uF, 2.4 kHz into 30 uF and 940 Hz into 110 uF (PD200
+manual, table 6), against the 10-30 uF of a few stacks here. What makes an
+amplifier slow on large signals is its current limit, which the slew rate
+holds. A lag of a few hertz is the output's (viscous damping against the
+output stiffness, a first-order lag of time constant c R^2 / (n k_s)), and
+a bandwidth bound that low would let this form stand in for it.
 """
 from __future__ import annotations
+
+import numpy as np
 
 from .base import Effect, Param
 
@@ -30,7 +42,7 @@ EFFECT = Effect(
 BANDWIDTH = Effect(
     name="amplifier_slew_limit", technology="piezohydraulic", form="bandwidth",
     params=(Param("slew_rate_V_s", 20.0, 2e5, log=True, doc="largest dV/dt the amplifier delivers"),
-            Param("bandwidth_rad_s", 10.0, 2e4, log=True, doc="small-signal bandwidth of the amplifier")),
+            Param("bandwidth_rad_s", 2 * np.pi * 20.0, 2e4, log=True, doc="small-signal bandwidth of the amplifier")),
     sizes=({"slew_rate_V_s": 1000.0, "bandwidth_rad_s": 628.0}, {"slew_rate_V_s": 300.0, "bandwidth_rad_s": 188.0}),
     fields={"slew_rate_V_s": "slew_rate", "bandwidth_rad_s": "amp_bandwidth"},
     source="first-order amplifier with slew limit (Fleming and Leang 2014, ch. 13)")

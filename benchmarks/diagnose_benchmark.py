@@ -12,7 +12,7 @@ case names an effect in <= 5 %, median holdout shrink of the correctly
 named cases >= 70 %, under a minute per campaign.
 
     python benchmarks/diagnose_benchmark.py [--quick] [--json FILE]
-    python benchmarks/diagnose_benchmark.py --crossform [--heldout | --heldout2 | --heldout3 | --heldout4] [--json FILE]
+    python benchmarks/diagnose_benchmark.py --crossform [--heldout | --heldout2 | --heldout3 | --heldout4 | --heldout5] [--json FILE]
 
 --crossform runs the campaigns of the second generator (benchmarks/crossform:
 its own integrator and its own forms of the effects, a mis-stated nominal,
@@ -29,7 +29,10 @@ after the second was run and before any change made in response to it was
 measured on this one), --heldout4 the fourth, blind one (DC_HELDOUT4,
 PIEZO_HELDOUT4: written 2026-11-23 at the end of session 4 and reserved for
 the next session's final measurement; not to be run while changing the
-diagnosis), each with its own noise seeds.
+diagnosis), --heldout5 the fifth, blind one, reserved (DC_HELDOUT5,
+PIEZO_HELDOUT5: written 2026-11-23 at the start of session 6, before that
+session's changes, and reserved for its final measurement; not to be run
+while changing the diagnosis), each with its own noise seeds.
 
 Leakage needs a pressurised oil column; on the unloaded seed prototype it
 is not observable (the withheld-effect check shows it), so that rig is run
@@ -271,10 +274,14 @@ def main(argv=None) -> int:
     sets.add_argument("--heldout4", action="store_true",
                       help="with --crossform: the fourth, blind held-out set, reserved for a final measurement "
                            "(other sizes, rigs, pairs and seeds)")
+    sets.add_argument("--heldout5", action="store_true",
+                      help="with --crossform: the fifth, blind held-out set, reserved for a final measurement "
+                           "(other sizes, rigs, pairs and seeds)")
     args = parser.parse_args(argv)
     start = time.perf_counter()
     if args.crossform:
-        which = next((name for name in ("heldout", "heldout2", "heldout3", "heldout4") if getattr(args, name)), "dev")
+        which = next((name for name in ("heldout", "heldout2", "heldout3", "heldout4", "heldout5")
+                      if getattr(args, name)), "dev")
         result = run_crossform(only=args.only, which=which)
         s = result["summary"]
         print(s["confusion"])

@@ -194,7 +194,7 @@ def catalog_add(kind: str = typer.Argument(..., help="Part kind: stack, fluid, s
 def diagnose(campaign: Path = typer.Argument(..., help="Campaign folder: rig.toml and runs/NAME.csv (CONTRACTS.md)."),
              holdout: Optional[List[str]] = typer.Option(None, "--holdout", help="Run (CSV name without .csv) never used for fitting; repeatable. Required unless --check."),
              out: Path = typer.Option(Path("diagnose-out"), "--out", help="Folder for diagnosis.json and diagnosis.html."),
-             recalibrate: Optional[List[str]] = typer.Option(None, "--recalibrate", help="Re-fit this nominal parameter on the training runs first, and jointly with every effect (piezo: d33, wide_friction, narrow_friction; DC: c1, c2); repeatable. Default: d33 and wide_friction (piezo), c1 and c2 (DC)."),
+             recalibrate: Optional[List[str]] = typer.Option(None, "--recalibrate", help="Re-fit this nominal parameter on the training runs first, and jointly with every effect (piezo: d33, wide_friction, narrow_friction; DC: c1, c2); repeatable. Default: d33 (piezo), c1 and c2 (DC)."),
              no_recalibrate: bool = typer.Option(False, "--no-recalibrate", help="Judge the effects against the stated nominal, without re-calibration."),
              check: bool = typer.Option(False, "--check", help="Inject each library effect into the campaign's own excitations, diagnose blind and print the confusion matrix."),
              seed: int = number_option(0, "--seed", "Seed of the screening and of --check's noise.", low=0, high=SEED_MAX),

@@ -18,15 +18,14 @@ RECALIBRATABLE = {
     "dc_motor": {"c1": ("c1", 0.5, 2.0), "c2": ("c2", 0.5, 2.0)},
 }
 # re-fitted by default (``--recalibrate`` not given): the parameters a bench
-# campaign pins down without standing in for an effect of the library. The
-# output seal's friction would absorb seal_stick_slip (it is that effect's
-# running force), so it is not re-fitted unasked. The wide seal's running
-# friction is: a rig states it from a datasheet or a guess (the generators
-# state it up to 12-20 % off), it sets the dead band at every reversal, and
-# seal_stick_slip changes only its breakaway ratio. Left stated, a two-stack
-# 3 in rig with the wide seal 12 % off left 2.5 x the model-form floor and
-# viscous damping + leakage were named on a null case (pz-h4-null-2stacks-3in).
-DEFAULT = {"piezohydraulic": ["d33", "wide_friction"], "dc_motor": ["c1", "c2"]}
+# campaign pins down without standing in for an effect of the library
+# (seal friction would absorb seal_stick_slip, so it is not re-fitted unasked).
+# The wide seal's friction was tried as a default in session 6: it removed a
+# named null on a two-stack 3 in rig whose wide seal is stated 12 % low, but
+# a single slow training ramp does not pin it down (on a same-form noise-only
+# campaign it went from 10 N to 15 N, taking up the input treatment's error
+# at the reversals, and doubled the holdout gap), so it stays opt-in.
+DEFAULT = {"piezohydraulic": ["d33"], "dc_motor": ["c1", "c2"]}
 
 
 def nuisance(kind: str, model, names: list[str]):

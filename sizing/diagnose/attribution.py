@@ -240,8 +240,10 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
             f = fit_with(ea + eb, np.concatenate([za, zb]))
             holdout_score(bench, f)
             fits.append(f)
-        for ea, eb, za, zb in stepwise_pairs(bench, best, effects, head, seed, fits):
-            fits.append(fit_with(ea + eb, np.concatenate([za, zb]), best.z[:len(z_head)]))
+        # a best that was only screened carries no re-calibrated parameters
+        start = best.z[:len(z_head)] if len(best.effects) > len(best.named) else z_head
+        for ea, eb, za, zb in stepwise_pairs(bench, best, effects, seed, fits):
+            fits.append(fit_with(ea + eb, np.concatenate([za, zb]), start))
             holdout_score(bench, fits[-1])
         fits.sort(key=lambda f: f.nrmse_holdout)
         refit_singles(bench, fits, head, len(z_head))
@@ -251,7 +253,7 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
 STEP_PAIRS = 2   # families fitted as the second effect of a pair from a screen given the best single
 
 
-def stepwise_pairs(bench, best, effects, head, seed: int, fits):
+def stepwise_pairs(bench, best, effects, seed: int, fits):
     """Forward selection's second step: every other family screened with the
     best single held at its fit, and the best STEP_PAIRS families not yet
     paired with it returned as (effects a, effects b, z a, z b) pair starts,
@@ -259,7 +261,7 @@ def stepwise_pairs(bench, best, effects, head, seed: int, fits):
     screen against the nominal (a 12 ms delay over a seal, or over a leak:
     the second family ranked below the top TOP_PAIRS and was never paired);
     given the dominant one, the second is screened on what it leaves."""
-    lead = tuple(head) + best.named
+    lead = tuple(best.effects)                            # with the re-calibrated parameters it was fitted with
     n_best = sum(len(e.params) for e in best.named)
     paired = [{e.name for e in f.named} for f in fits if len(f.named) == 2]
     ranked = []

@@ -263,10 +263,14 @@ def stepwise_pairs(bench, best, effects, seed: int, fits):
     given the dominant one, the second is screened on what it leaves."""
     lead = tuple(best.effects)                            # with the re-calibrated parameters it was fitted with
     n_best = sum(len(e.params) for e in best.named)
-    paired = [{e.name for e in f.named} for f in fits if len(f.named) == 2]
+    # a pair of forms already fitted is not fitted again; another form of
+    # the same family may be (the top families' pairs take each family's
+    # best form against the nominal: a sinusoid, where given friction the
+    # residual rings like a mount)
+    paired = [{(e.name, e.form) for e in f.named} for f in fits if len(f.named) == 2]
     ranked = []
     for effect in effects:
-        if effect.name == best.name or {best.name, effect.name} in paired:
+        if effect.name == best.name or {(best.name, best.form), (effect.name, effect.form)} in paired:
             continue
         z0, score, _ = screen(bench, effect, seed, lead, (best.z,))
         ranked.append((score, effect.name, effect, z0))

@@ -255,9 +255,9 @@ STEP_PAIRS = 2   # families fitted as the second effect of a pair from a screen 
 
 def stepwise_pairs(bench, best, effects, seed: int, fits):
     """Forward selection's second step: every other family screened with the
-    best single held at its fit, and the best STEP_PAIRS families not yet
-    paired with it returned as (effects a, effects b, z a, z b) pair starts,
-    model effects first. A dominant effect masks a second one in the
+    best single held at its fit, and the best-screened form of each of the
+    best STEP_PAIRS families (forms not yet paired with it) returned as
+    (effects a, effects b, z a, z b) pair starts, model effects first. A dominant effect masks a second one in the
     screen against the nominal (a 12 ms delay over a seal, or over a leak:
     the second family ranked below the top TOP_PAIRS and was never paired);
     given the dominant one, the second is screened on what it leaves."""

@@ -21,7 +21,8 @@ RECALIBRATABLE = {
 # campaign pins down without standing in for an effect of the library
 # (seal friction would absorb seal_stick_slip, so it is not re-fitted unasked).
 # The wide seal's friction was tried as a default in session 6: it removed a
-# named null on a two-stack 3 in rig whose wide seal is stated 12 % low, but
+# named null on a two-stack 3 in rig whose wide seal is stated 10 N against
+# 11.9 N, but
 # a single slow training ramp does not pin it down (on a same-form noise-only
 # campaign it went from 10 N to 15 N, taking up the input treatment's error
 # at the reversals, and doubled the holdout gap), so it stays opt-in.

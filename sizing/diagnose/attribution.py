@@ -234,9 +234,7 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
             ea, eb = a.named, b.named
             if {e.name for e in ea} & {e.name for e in eb}:
                 continue                                  # two forms of one family are alternatives, not a pair
-            za, zb = a.z[len(a.z) - sum(len(e.params) for e in ea):], b.z[len(b.z) - sum(len(e.params) for e in eb):]
-            if ea[0].post and eb[0].post is False:
-                ea, eb, za, zb = eb, ea, zb, za          # model effects first, measurement effects after
+            ea, eb, za, zb = _model_first(ea, eb, _named_z(a), _named_z(b))
             f = fit_with(ea + eb, np.concatenate([za, zb]))
             holdout_score(bench, f)
             fits.append(f)
@@ -250,6 +248,19 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
     return fits
 
 
+def _named_z(fit) -> np.ndarray:
+    """The unit coordinates of a fit's named effects (without the re-calibrated parameters before them)."""
+    return fit.z[len(fit.z) - sum(len(e.params) for e in fit.named):]
+
+
+def _model_first(ea, eb, za, zb):
+    """A pair's two effect tuples and coordinates, model effects first and
+    measurement effects after."""
+    if ea[0].post and not eb[0].post:
+        return eb, ea, zb, za
+    return ea, eb, za, zb
+
+
 STEP_PAIRS = 2   # families fitted as the second effect of a pair from a screen given the best single
 
 
@@ -257,12 +268,12 @@ def stepwise_pairs(bench, best, effects, seed: int, fits):
     """Forward selection's second step: every other family screened with the
     best single held at its fit, and the best-screened form of each of the
     best STEP_PAIRS families (forms not yet paired with it) returned as
-    (effects a, effects b, z a, z b) pair starts, model effects first. A dominant effect masks a second one in the
-    screen against the nominal (a 12 ms delay over a seal, or over a leak:
-    the second family ranked below the top TOP_PAIRS and was never paired);
-    given the dominant one, the second is screened on what it leaves."""
+    (effects a, effects b, z a, z b) pair starts, model effects first. A
+    dominant effect masks a second one in the screen against the nominal
+    (a 12 ms delay over a seal, or over a leak: the second family ranked
+    below the top TOP_PAIRS and was never paired); given the dominant one,
+    the second is screened on what it leaves."""
     lead = tuple(best.effects)                            # with the re-calibrated parameters it was fitted with
-    n_best = sum(len(e.params) for e in best.named)
     # a pair of forms already fitted is not fitted again; another form of
     # the same family may be (the top families' pairs take each family's
     # best form against the nominal: a sinusoid, where given friction the
@@ -279,10 +290,7 @@ def stepwise_pairs(bench, best, effects, seed: int, fits):
         if name in families:
             continue                                      # the best-screened form of each family
         families.add(name)
-        ea, eb, za, zb = best.named, (effect,), best.z[len(best.z) - n_best:], z0
-        if ea[0].post and not effect.post:
-            ea, eb, za, zb = eb, ea, zb, za              # model effects first, measurement effects after
-        out.append((ea, eb, za, zb))
+        out.append(_model_first(best.named, (effect,), _named_z(best), z0))
         if len(out) == STEP_PAIRS:
             break
     return out

@@ -1,10 +1,11 @@
 """The settling rule of the verdict: an effect whose fitted time constant is
 longer than the shortest training run cannot be told from a slow drift, so
-it is at most "partial" (sizing/diagnose/attribution.py)."""
+it is at most "partial" (sizing/diagnose/judge.py)."""
 import numpy as np
 import pytest
 
-from sizing.diagnose import attribution
+from sizing.diagnose import judge
+from sizing.diagnose.floor import total_floor
 from sizing.diagnose.effects import get
 from sizing.diagnose.fitting import EffectFit
 
@@ -20,10 +21,10 @@ def _fits(creep_time_s):
 
 def test_unsettled_lists_time_constants_longer_than_the_run():
     best = _fits(5.0)[0]
-    assert attribution.unsettled(best, 2.0) == {"creep_time_s": pytest.approx(5.0)}
-    assert attribution.unsettled(best, 6.0) == {}
-    assert attribution.unsettled(best, None) == {}
-    assert attribution.unsettled(_fits(0.5)[0], 2.0) == {}
+    assert judge.unsettled(best, 2.0) == {"creep_time_s": pytest.approx(5.0)}
+    assert judge.unsettled(best, 6.0) == {}
+    assert judge.unsettled(best, None) == {}
+    assert judge.unsettled(_fits(0.5)[0], 2.0) == {}
 
 
 @pytest.mark.parametrize("creep_time_s,run_length,status", [
@@ -35,7 +36,7 @@ def test_verdict_caps_an_unsettled_effect_at_partial(creep_time_s, run_length, s
     # baseline 0.02, noise floor 0.001 -> floor sqrt(0.001^2 + 0.002^2) = 0.00224;
     # the best leaves 0.004 <= 2.5 x floor and removes
     # 1 - (0.004^2 - 0.00224^2) / (0.02^2 - 0.00224^2) = 97 % of the gap energy above it
-    v = attribution.verdict(0.02, 0.001, _fits(creep_time_s), np.full(40, 10.0), run_length=run_length)
+    v = judge.verdict(0.02, 0.001, _fits(creep_time_s), np.full(40, 10.0), run_length=run_length)
     assert v["explained_gap_energy"] == pytest.approx(1 - (0.004 ** 2 - 5e-6) / (0.02 ** 2 - 5e-6))
     assert v["status"] == status and v["effect"] == "stack_creep"
     if status == "partial":
@@ -61,7 +62,7 @@ def test_the_line_rule_acts_between_the_noise_and_the_model_form_floor(baseline,
     candidate removes."""
     fits = _fits(0.5)
     fits[0].nrmse_holdout, fits[1].nrmse_holdout = 0.0009, 0.0011    # the best brings the holdout to the noise
-    v = attribution.verdict(baseline, 0.001, fits, np.full(40, 10.0), run_length=2.0, line=line)
+    v = judge.verdict(baseline, 0.001, fits, np.full(40, 10.0), run_length=2.0, line=line)
     assert v["status"] == status
     if status == "explained":
         assert v["line"]["judged_on"] and v["explained_gap_energy"] == pytest.approx(0.9)
@@ -78,7 +79,7 @@ def test_an_effect_must_remove_more_than_the_model_form_floor(best, status):
     # the best candidate is significant against the baseline and its runner-up
     fits = _fits(0.5)
     fits[0].nrmse_holdout = best
-    v = attribution.verdict(0.0034, 0.001, fits, np.full(40, 10.0), run_length=2.0)
+    v = judge.verdict(0.0034, 0.001, fits, np.full(40, 10.0), run_length=2.0)
     assert v["status"] == status, v["reason"]
 
 
@@ -94,4 +95,4 @@ def test_a_pair_that_fits_training_worse_than_its_single_is_not_taken(pair_train
     single = EffectFit((creep,), z_creep, 0.0045, nrmse_holdout=0.006, residual_blocks=np.full(40, 4.0))
     pair = EffectFit((creep, delay), np.concatenate([z_creep, delay.unit({"delay_s": 0.005})]), pair_train,
                      nrmse_holdout=0.003, residual_blocks=np.full(40, 1.0))
-    assert attribution.pick([pair, single], floor=attribution.total_floor(0.001)).name == chosen
+    assert judge.pick([pair, single], floor=total_floor(0.001)).name == chosen

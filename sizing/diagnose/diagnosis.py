@@ -12,7 +12,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import InputError
-from . import attribution, spectrum, where
+from . import attribution, judge, spectrum, where
+from .floor import noise_floor, total_floor
 from .bench import Bench
 from .effects import library
 from .recalibrate import DEFAULT, nuisance, recalibrate as recalibrate_model
@@ -124,16 +125,16 @@ def diagnose_runs(kind: str, rig, runs, holdout: list[str], recalibrate: list[st
     base_ho = float(np.mean([base[bench.runs[i].name] for i in bench.holdout]))
     E = bench.channel_nrmse([nominal[i][None] for i in bench.holdout], bench.holdout)[0]
     base_channels = {c: float(np.mean(E[:, k])) for k, c in enumerate(bench.channels)}
-    floor = attribution.noise_floor(bench)
+    floor = noise_floor(bench)
     floor_ho = float(np.mean(floor[bench.holdout]))
     fits = attribution.attribute(bench, base_ho, floor_ho, seed=seed, pairs=pairs)
-    base_blocks = attribution.block_energy(bench, [nominal[i] for i in bench.holdout], bench.holdout)
+    base_blocks = judge.block_energy(bench, [nominal[i] for i in bench.holdout], bench.holdout)
     shortest = min((float(bench.runs[i].t[-1] - bench.runs[i].t[0]) for i in bench.train), default=None)
-    chosen = attribution.pick(fits, seed, attribution.total_floor(floor_ho))
+    chosen = judge.pick(fits, seed, total_floor(floor_ho))
     best_sim = [y[0] for y in bench.simulate_channels(chosen.effects, chosen.z[None, :])] if chosen else None
     line = spectrum.gap_lines(bench, [nominal[i][0] for i in bench.holdout],
                               None if best_sim is None else [best_sim[i][0] for i in bench.holdout])
-    verdict = attribution.verdict(base_ho, floor_ho, fits, base_blocks, seed=seed, run_length=shortest, line=line)
+    verdict = judge.verdict(base_ho, floor_ho, fits, base_blocks, seed=seed, run_length=shortest, line=line)
     if verdict["status"] in ("explained", "partial") and best_sim is not None:
         verdict["remaining"] = [{k: e[k] for k in ("run", "label", "share", "t_start_s", "t_end_s", "channel")}
                                 for e in where.gap_map(bench, best_sim, max_entries=5)]

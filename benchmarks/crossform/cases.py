@@ -481,6 +481,96 @@ PIEZO_HELDOUT6 = [
      {"n_stacks": 4, "v_max": 138.0}),
 ]
 
+# The seventh held-out set: written 2026-11-24, blind, and reserved for the
+# final measurement of session 7: it is not to be run while changing the
+# diagnosis. None of these cases was run through the diagnosis while
+# writing them (only checked to generate finite runs without warnings).
+# Other sizes of every effect, other rigs (8.8-19.5 mm DC strokes, 55-255 N
+# DC loads, DC misstatements of 1.4-4.2 %, 3, 3.25, 3.5 and 3.75 in
+# pistons, two, three and four stacks, 112-150 V drives, other springs and
+# preloads, piezo misstatements of 1.4-4.2 %), a noisier sensor of each
+# kind, DC pairs used only once in a held-out set before
+# (coulomb_friction+current_saturation, sensor_vibration+current_saturation,
+# current_saturation+sensor_delay), piezo pairs not used before
+# (seal_stick_slip+viscous_damping, stack_creep+leakage,
+# fluid_compressibility+amplifier_slew_limit), every outside form but DC
+# drift (DC cogging at a finer pitch, force pulses on both rigs, DC
+# amplifier asymmetry, piezo drift and amplifier compression) and other
+# seeds (``--heldout7`` in benchmarks/diagnose_benchmark.py). Viscous
+# damping stays below about 550 N s/m (see the second set).
+NOISY7_DC = {"white": 1.45e-3, "flicker": 3.7e-4}
+NOISY7_PZ = {"white": 1.36e-3, "flicker": 3.75e-4, "volt_white": 0.47}
+DC_HELDOUT7 = [
+    ("dc-h7-null-mid", "none", {}, {"stroke": 0.0118, "misstate": 0.034}),
+    ("dc-h7-null-load", "none", {}, {"load": 235.0, "stroke": 0.0172, "misstate": 0.016}),
+    ("dc-h7-null-noisy", "none", {}, {"stroke": 0.0098, "load": 75.0, "misstate": 0.026, "sensor": NOISY7_DC}),
+    ("dc-h7-lugre-large", "coulomb_friction",
+     {"friction": dict(fc=52.0, fs=69.0, vs=0.0024, sigma0=3.9e6, sigma1=2.45e3, sigma2=290.0)},
+     {"stroke": 0.0152, "misstate": 0.024}),
+    ("dc-h7-lugre-small", "coulomb_friction",
+     {"friction": dict(fc=21.0, fs=34.0, vs=0.0062, sigma0=1.25e6, sigma1=1.25e3, sigma2=110.0)}, {"load": 195.0}),
+    ("dc-h7-backlash-tight", "backlash",
+     {"backlash": dict(gap_m=1.25e-4, k_N_m=7.5e6, zeta=0.16, m_kg=0.65, c_ground=235.0)}, {"stroke": 0.0162}),
+    ("dc-h7-backlash-loose", "backlash",
+     {"backlash": dict(gap_m=3.4e-4, k_N_m=1.6e6, zeta=0.34, m_kg=2.4, c_ground=430.0)},
+     {"load": 105.0, "misstate": 0.042}),
+    ("dc-h7-mount-high", "sensor_vibration", {"mount": dict(f_Hz=51.0, zeta=0.013, gain=0.145)},
+     {"stroke": 0.0126, "load": 145.0}),
+    ("dc-h7-mount-low", "sensor_vibration", {"mount": dict(f_Hz=11.0, zeta=0.042, gain=0.29)},
+     {"misstate": 0.014, "sensor": NOISY7_DC}),
+    ("dc-h7-pade-short", "sensor_delay", {"delay_s": 0.0042}, {"stroke": 0.0182}),
+    ("dc-h7-pade-long", "sensor_delay", {"delay_s": 0.0145}, {"load": 175.0, "misstate": 0.036}),
+    ("dc-h7-ilimit", "current_saturation", {"current_limit": 3.7}, {"load": 55.0, "stroke": 0.0142}),
+    ("dc-h7-lugre+ilimit", "coulomb_friction+current_saturation",
+     {"friction": dict(fc=36.0, fs=53.0, vs=0.0036, sigma0=2.7e6, sigma1=1.85e3, sigma2=190.0), "current_limit": 5.0},
+     {"stroke": 0.0134}),
+    ("dc-h7-mount+ilimit", "sensor_vibration+current_saturation",
+     {"mount": dict(f_Hz=33.0, zeta=0.027, gain=0.185), "current_limit": 6.2}, {"load": 115.0}),
+    ("dc-h7-ilimit+pade", "current_saturation+sensor_delay", {"current_limit": 4.5, "delay_s": 0.0065},
+     {"stroke": 0.0112, "misstate": 0.016}),
+    ("dc-h7-cogging", "outside:cogging", {"cogging": dict(amp_N=38.0, pitch_m=2e-3 / 14)},
+     {"stroke": 0.0195, "misstate": 0.024}),
+    ("dc-h7-pulses", "outside:force_pulses", {"pulses": [(0.45, 0.022, -400.0), (1.3, 0.032, 310.0)]},
+     {"load": 255.0}),
+    ("dc-h7-amp-asym", "outside:amplifier_nonlinearity", {"amp_asymmetry": 0.77},
+     {"stroke": 0.0088, "misstate": 0.026}),
+]
+PIEZO_HELDOUT7 = [
+    ("pz-h7-null-3stacks-3in", "none", {}, {"wide_in": 3.0, "v_max": 136.0, "misstate": 0.032}),
+    ("pz-h7-null-4stacks-spring", "none", {}, {"n_stacks": 4, "load": (6.2, 1650.0), "v_max": 116.0,
+                                               "misstate": 0.024}),
+    ("pz-h7-null-noisy", "none", {}, {"n_stacks": 2, "wide_in": 3.25, "v_max": 144.0, "load": (4.2, 2050.0),
+                                      "misstate": 0.036, "sensor": NOISY7_PZ}),
+    ("pz-h7-seal-small", "seal_stick_slip", {"seal": dict(fc=1.15, fs=2.3, vs=3.4e-3, sigma2=0.0)},
+     {"n_stacks": 4, "wide_in": 3.5, "v_max": 127.0}),
+    ("pz-h7-seal-large", "seal_stick_slip", {"seal": dict(fc=3.6, fs=5.6, vs=1.25e-3, sigma2=0.0)},
+     {"load": (9.8, 1550.0), "misstate": 0.014}),
+    ("pz-h7-logcreep-small", "stack_creep", {"creep": 0.017}, {"wide_in": 3.25, "v_max": 112.0}),
+    ("pz-h7-logcreep-large", "stack_creep", {"creep": 0.036}, {"n_stacks": 2, "misstate": 0.042}),
+    ("pz-h7-air-small", "fluid_compressibility", {"air": dict(eps0=0.013, kappa=1.28)},
+     {"load": (11.2, 1020.0), "wide_in": 3.5}),
+    ("pz-h7-air-large", "fluid_compressibility", {"air": dict(eps0=0.036, kappa=1.12)},
+     {"load": (3.2, 2750.0), "n_stacks": 4, "v_max": 134.0}),
+    ("pz-h7-pade", "sensor_delay", {"delay_s": 0.0135}, {"wide_in": 3.0, "v_max": 146.0}),
+    ("pz-h7-bandwidth", "amplifier_slew_limit", {"bandwidth": dict(omega=260.0, slew=720.0)},
+     {"n_stacks": 4, "misstate": 0.026}),
+    ("pz-h7-viscous", "viscous_damping", {"viscous": 330.0}, {"wide_in": 3.25, "v_max": 124.0}),
+    ("pz-h7-leak", "leakage", {"leak": dict(G=2.8e-14, area_m2=2.6e-10, cd=0.63)},
+     {"load": (7.2, 1380.0), "n_stacks": 2}),
+    ("pz-h7-seal+viscous", "seal_stick_slip+viscous_damping",
+     {"seal": dict(fc=1.9, fs=3.4, vs=2.7e-3, sigma2=0.0), "viscous": 240.0}, {"wide_in": 3.5, "misstate": 0.024}),
+    ("pz-h7-creep+leak", "stack_creep+leakage",
+     {"creep": 0.027, "leak": dict(G=4.2e-14, area_m2=1.9e-10, cd=0.61)}, {"load": (13.0, 1180.0), "wide_in": 3.25}),
+    ("pz-h7-air+bandwidth", "fluid_compressibility+amplifier_slew_limit",
+     {"air": dict(eps0=0.021, kappa=1.38), "bandwidth": dict(omega=470.0, slew=560.0)},
+     {"load": (5.8, 2450.0), "n_stacks": 2, "v_max": 136.0}),
+    ("pz-h7-pulses", "outside:force_pulses", {"pulses": [(0.65, 0.03, -3.3), (1.5, 0.022, 4.2)]},
+     {"n_stacks": 2, "wide_in": 3.5, "misstate": 0.036}),
+    ("pz-h7-drift", "outside:thermal_drift", {"drift": 0.037}, {"n_stacks": 4, "wide_in": 3.25, "misstate": 0.014}),
+    ("pz-h7-amp-compression", "outside:amplifier_nonlinearity", {"amp_compression": 0.16},
+     {"wide_in": 3.0, "v_max": 144.0}),
+]
+
 # Each set: its DC and piezo tables and the seed offset of its campaigns
 # (other noise and misstatements per set).
 SETS = {
@@ -491,6 +581,7 @@ SETS = {
     "heldout4": (DC_HELDOUT4, PIEZO_HELDOUT4, 17000),
     "heldout5": (DC_HELDOUT5, PIEZO_HELDOUT5, 21000),
     "heldout6": (DC_HELDOUT6, PIEZO_HELDOUT6, 25000),
+    "heldout7": (DC_HELDOUT7, PIEZO_HELDOUT7, 29000),
 }
 
 

@@ -46,6 +46,7 @@ RESIDUAL_FACTOR = 2.5  # an explaining effect leaves at most this times the floo
 BLOCK_S = 0.1
 N_BOOT = 1000
 ALPHA = 0.05
+NOISE_MATCH = 1.2  # within the band, a candidate leaving at most this times the noise floor is judged on it
 PAIR_GAIN = 0.25   # a pair must remove this share of what its best single leaves above the floor
 
 
@@ -86,8 +87,9 @@ def pick(fits, seed: int = 0, floor: float = 0.0):
     """The candidate the verdict judges: fits[0], except that a pair is
     taken only when it is significantly better on the holdout (block
     bootstrap) than the best single of its two effects, removes at least
-    PAIR_GAIN of the gap energy that single leaves above the floor, and
-    fits the training runs at least as well as it; otherwise that single is
+    PAIR_GAIN of the gap energy that single leaves above the floor, fits
+    the training runs at least as well as it and names a partner no other
+    family replaces (``partner_identified``); otherwise that single is
     (parsimony). The pair holds the single (its partner at no size), so a
     pair that fits the training runs worse is a fit stuck short of its
     optimum, and its better holdout is chance or form error taken up
@@ -104,9 +106,24 @@ def pick(fits, seed: int = 0, floor: float = 0.0):
         single = singles[0]
         gain = explained(single.nrmse_holdout, best.nrmse_holdout, floor)
         if (bootstrap_p(best.residual_blocks, single.residual_blocks, seed) >= ALPHA or gain < PAIR_GAIN
-                or best.nrmse_train > single.nrmse_train):
+                or best.nrmse_train > single.nrmse_train
+                or not partner_identified(fits, best, single, seed)):
             return single
     return best
+
+
+def partner_identified(fits, pair, single, seed: int = 0) -> bool:
+    """Whether ``pair`` is significantly better on the holdout than every
+    other pair built on the same ``single`` with another family: when a
+    different partner does as well, the data say "this single and
+    something", not which (pz-h5-pade: a 9.5 ms delay with a laminar leak
+    or with a 9 Hz mount, p = 0.17 between them; the delay alone is the
+    truth)."""
+    lead = single.named[0].name
+    partner = {e.name for e in pair.named} - {lead}
+    rivals = [f for f in fits if len(f.named) == 2 and lead in {e.name for e in f.named}
+              and not partner & {e.name for e in f.named}]
+    return all(bootstrap_p(pair.residual_blocks, f.residual_blocks, seed) < ALPHA for f in rivals[:1])
 
 
 def runner_up(fits, best):
@@ -129,6 +146,20 @@ def unsettled(fit, run_length: float | None) -> dict:
         return {}
     return {k: v for k, v in fit.params.items()
             if k.endswith("time_s") and not k.startswith("recalibration.") and v > run_length}
+
+
+def noise_matched(best, noise_floor: float, p_second: float) -> bool:
+    """Within the model-form floor, a candidate that leaves no more than
+    NOISE_MATCH x the noise floor on the holdout runs, separated from the
+    runner-up, is judged against the noise floor alone: nominal and effect
+    then leave nothing but measurement noise on runs they were not fitted
+    to, so this campaign shows no model-form error to allow for. (Above
+    the band the ordinary rules ask less: an effect may leave up to
+    RESIDUAL_FACTOR x the floor.) A small backlash in a stiff DC loop,
+    0.2-0.3 % of the span against a 0.08 % noise floor, was left at
+    0.88-0.93 x the noise and refused in four held-out sets; a null piezo
+    campaign within the band left 1.5 x."""
+    return best.nrmse_holdout <= NOISE_MATCH * noise_floor and p_second < ALPHA
 
 
 def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks=None, seed: int = 0,
@@ -172,6 +203,10 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
         share = float(line["removed"])
         out["explained_gap_energy"] = share
         out["line"]["judged_on"] = True          # within the model-form floor: judged on the lines
+    elif baseline_holdout <= GAP_FACTOR * floor and noise_matched(best, floor_holdout, p_second):
+        floor = floor_holdout                    # no model-form error left to allow for
+        share = explained(baseline_holdout, best.nrmse_holdout, floor)
+        out.update(explained_gap_energy=share, floor_holdout=floor, judged_on_noise_floor=True)
     elif baseline_holdout <= GAP_FACTOR * floor:
         out.update(effect=None, shrink_holdout=0.0, status="unexplained",
                    reason=f"the gap ({baseline_holdout:.4f}) is above the noise floor but within {GAP_FACTOR:g} x "

@@ -157,8 +157,8 @@ def noise_matched(best, noise_floor: float, p_second: float) -> bool:
     the band the ordinary rules ask less: an effect may leave up to
     RESIDUAL_FACTOR x the floor.) A small backlash in a stiff DC loop,
     0.2-0.3 % of the span against a 0.08 % noise floor, was left at
-    0.88-0.93 x the noise and refused in four held-out sets; a null piezo
-    campaign within the band left 1.5 x."""
+    0.88-0.93 x the noise and refused in five held-out sets; the piezo null
+    campaigns within the band left 1.37-2.45 x."""
     return best.nrmse_holdout <= NOISE_MATCH * noise_floor and p_second < ALPHA
 
 

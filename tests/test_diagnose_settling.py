@@ -132,3 +132,15 @@ def test_a_pair_whose_partner_another_family_replaces_is_not_taken(rival_blocks,
     rival = EffectFit((delay, mount), np.concatenate([z_delay, z_mount]), 0.004, nrmse_holdout=0.0031,
                       residual_blocks=blocks)
     assert judge.pick([pair, rival, single], floor=total_floor(0.001)).name == chosen
+
+
+def test_a_candidate_only_screened_is_never_taken():
+    """A screened point (not fitted: not promising on the training runs)
+    that happens to rank first on the holdout is passed over for the best
+    fitted candidate; with nothing fitted there is nothing to judge."""
+    screened, fitted = _fits(0.5)
+    screened.message = "screened only"
+    assert judge.pick([screened, fitted]) is fitted
+    assert judge.pick([screened]) is None
+    v = judge.verdict(0.02, 0.001, [screened], np.full(40, 10.0), run_length=2.0)
+    assert v["status"] == "unexplained" and v["effect"] is None

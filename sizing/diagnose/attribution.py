@@ -4,8 +4,9 @@ The candidates of the verdict (judge.py), judged against the floor of
 floor.py:
 
 1. Screen: every effect of the library at its two realistic sizes and a
-   seeded Latin-hypercube of parameter sets, one simulator batch per
-   effect, scored on the training runs.
+   seeded Latin-hypercube of parameter sets (N_SCREEN per parameter, at
+   least MIN_SCREEN), one simulator batch per effect, scored on the
+   training runs.
 2. Fit the promising effects (least squares on the training runs, from the
    best screened point): the best-screened form of each of the TOP_FIT best
    families, and any form that screens at < 0.9 x the baseline; judge every
@@ -30,6 +31,9 @@ from .floor import total_floor
 from .judge import EXPLAINED, RESIDUAL_FACTOR, block_energy, explained
 
 N_SCREEN = 10          # screened parameter sets per effect parameter
+MIN_SCREEN = 30        # and at least this many: a one-parameter effect's valley can be narrow (a
+                       # 4.5 A current limit behind an unmodelled delay: 0.035, 0.0195, 0.024 at 3, 4,
+                       # 5 A), and ten points over 0.05-20 A (a factor 1.8 apart) missed it
 TOP_FIT = 4            # effects fitted at least
 TOP_PAIRS = 3          # singles combined into pairs
 
@@ -52,7 +56,7 @@ def screen(bench, effect, seed: int = 0, head=(), z_heads=(np.zeros(0),)) -> tup
         return np.zeros(0), float(np.sqrt(scores[k])), z_heads[k]
     sizes = [effect.unit(s) for s in effect.sizes_for(bench.rig, bench.model) if s]
     sizes += list(effect.starts(bench, head, z_heads[0]))   # from the data (e.g. residual spectrum lines)
-    n = N_SCREEN * d * (4 if effect.post else 1)
+    n = max(N_SCREEN * d, MIN_SCREEN) * (4 if effect.post else 1)
     Z = np.vstack(sizes + [_lhs(n, d, seed)]) if sizes else _lhs(n, d, seed)
     Z = np.clip(Z, 0.0, 1.0)
     best = None

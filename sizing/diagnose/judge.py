@@ -84,21 +84,22 @@ def explained(base: float, after: float, floor: float) -> float:
 
 
 def pick(fits, seed: int = 0, floor: float = 0.0):
-    """The candidate the verdict judges: fits[0], except that a pair is
-    taken only when it is significantly better on the holdout (block
-    bootstrap) than the best single of its two effects, removes at least
-    PAIR_GAIN of the gap energy that single leaves above the floor, fits
-    the training runs at least as well as it and names a partner no other
-    family replaces (``partner_identified``); otherwise that single is
-    (parsimony). A candidate only screened, not fitted (not promising on
-    the training runs), is never taken, whatever its holdout: on a null
-    piezo campaign a screened 1.2 % creep with a 2.9 s time constant
-    fitted the training runs worse than every fitted candidate (0.0050
-    against 0.0041) and ranked first on the holdout by chance. The pair holds the single (its partner at no size), so a
-    pair that fits the training runs worse is a fit stuck short of its
-    optimum, and its better holdout is chance or form error taken up
-    elsewhere (pz-h5-pade: a 9.5 ms Pade delay as delay + amplifier, worse
-    than the delay alone on training, 0.0059 against 0.0045)."""
+    """The candidate the verdict judges: the best fitted candidate, except
+    that a pair is taken only when it is significantly better on the
+    holdout (block bootstrap) than the best single of its two effects,
+    removes at least PAIR_GAIN of the gap energy that single leaves above
+    the floor, fits the training runs at least as well as it and names a
+    partner no other family replaces (``partner_identified``); otherwise
+    that single is (parsimony). The pair holds the single (its partner at
+    no size), so a pair that fits the training runs worse is a fit stuck
+    short of its optimum, and its better holdout is chance or form error
+    taken up elsewhere (pz-h5-pade: a 9.5 ms Pade delay as delay +
+    amplifier, worse than the delay alone on training, 0.0059 against
+    0.0045). A candidate only screened, not fitted (not promising on the
+    training runs), is never taken, whatever its holdout: on a null piezo
+    campaign a screened 1.2 % creep with a 2.9 s time constant fitted the
+    training runs worse than every fitted candidate (0.0050 against
+    0.0041) and ranked first on the holdout by chance."""
     fitted = [f for f in fits if f.message != "screened only"]
     if not fitted:
         return None
@@ -106,7 +107,7 @@ def pick(fits, seed: int = 0, floor: float = 0.0):
     if len(best.named) < 2:
         return best
     names = {e.name for e in best.named}
-    singles = [f for f in fits if len(f.named) == 1 and f.named[0].name in names]
+    singles = [f for f in fitted if len(f.named) == 1 and f.named[0].name in names]
     if singles:
         single = singles[0]
         gain = explained(single.nrmse_holdout, best.nrmse_holdout, floor)
@@ -118,8 +119,8 @@ def pick(fits, seed: int = 0, floor: float = 0.0):
 
 
 def partner_identified(fits, pair, single, seed: int = 0) -> bool:
-    """Whether ``pair`` is significantly better on the holdout than every
-    other pair built on the same ``single`` with another family: when a
+    """Whether ``pair`` is significantly better on the holdout than the
+    best other pair built on the same ``single`` with another family: when a
     different partner does as well, the data say "this single and
     something", not which (pz-h5-pade: a 9.5 ms delay with a laminar leak
     or with a 9 Hz mount, p = 0.17 between them; the delay alone is the
@@ -128,7 +129,7 @@ def partner_identified(fits, pair, single, seed: int = 0) -> bool:
     partner = {e.name for e in pair.named} - {lead}
     rivals = [f for f in fits if len(f.named) == 2 and lead in {e.name for e in f.named}
               and not partner & {e.name for e in f.named}]
-    return all(bootstrap_p(pair.residual_blocks, f.residual_blocks, seed) < ALPHA for f in rivals[:1])
+    return not rivals or bootstrap_p(pair.residual_blocks, rivals[0].residual_blocks, seed) < ALPHA
 
 
 def runner_up(fits, best):

@@ -12,7 +12,7 @@ case names an effect in <= 5 %, median holdout shrink of the correctly
 named cases >= 70 %, under a minute per campaign.
 
     python benchmarks/diagnose_benchmark.py [--quick] [--json FILE]
-    python benchmarks/diagnose_benchmark.py --crossform [--heldout | --heldout2 | --heldout3 | --heldout4 | --heldout5 | --heldout6 | --heldout7] [--json FILE]
+    python benchmarks/diagnose_benchmark.py --crossform [--heldout | --heldout2 | --heldout3 | --heldout4 | --heldout5 | --heldout6 | --heldout7 | --heldout8] [--json FILE]
 
 --crossform runs the campaigns of the second generator (benchmarks/crossform:
 its own integrator and its own forms of the effects, a mis-stated nominal,
@@ -38,7 +38,10 @@ that session's later changes, and reserved for their final measurement;
 not to be run while changing the diagnosis), --heldout7 the seventh, blind
 one, reserved (DC_HELDOUT7, PIEZO_HELDOUT7: written 2026-11-24 and reserved
 for the final measurement of session 7; not to be run while changing the
-diagnosis), each with its own noise seeds.
+diagnosis), --heldout8 the eighth, blind one, reserved (DC_HELDOUT8,
+PIEZO_HELDOUT8: written 2026-11-24 at the end of session 7 and reserved for
+the final measurement of that session's final code; not to be run while
+changing the diagnosis), each with its own noise seeds.
 
 Leakage needs a pressurised oil column; on the unloaded seed prototype it
 is not observable (the withheld-effect check shows it), so that rig is run
@@ -289,11 +292,14 @@ def main(argv=None) -> int:
     sets.add_argument("--heldout7", action="store_true",
                       help="with --crossform: the seventh, blind held-out set, reserved for a final measurement "
                            "(other sizes, rigs, pairs and seeds)")
+    sets.add_argument("--heldout8", action="store_true",
+                      help="with --crossform: the eighth, blind held-out set, reserved for a final measurement "
+                           "(other sizes, rigs, pairs and seeds)")
     args = parser.parse_args(argv)
     start = time.perf_counter()
     if args.crossform:
         which = next((name for name in ("heldout", "heldout2", "heldout3", "heldout4", "heldout5", "heldout6",
-                                        "heldout7")
+                                        "heldout7", "heldout8")
                       if getattr(args, name)), "dev")
         result = run_crossform(only=args.only, which=which)
         s = result["summary"]

@@ -265,6 +265,20 @@ def crossform_table(rows) -> str:
     return "\n".join(lines)
 
 
+RESERVED = "blind held-out set, reserved for a final measurement (other sizes, rigs, pairs and seeds)"
+# --crossform sets other than the development set: flag name -> what it holds
+HELDOUT_SETS = {
+    "heldout": "the held-out set (other sizes, rigs, noise and seeds)",
+    "heldout2": "the second, blind held-out set (other sizes, rigs, pairs and seeds)",
+    "heldout3": "the third, blind held-out set (other sizes, rigs, pairs and seeds)",
+    "heldout4": "the fourth, " + RESERVED,
+    "heldout5": "the fifth, " + RESERVED,
+    "heldout6": "the sixth, " + RESERVED,
+    "heldout7": "the seventh, " + RESERVED,
+    "heldout8": "the eighth, " + RESERVED,
+}
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="one size per effect, one null per rig")
@@ -274,33 +288,12 @@ def main(argv=None) -> int:
     parser.add_argument("--crossform", action="store_true", help="the second generator's campaigns instead")
     parser.add_argument("--only", default="", help="with --crossform: only the cases whose name contains this")
     sets = parser.add_mutually_exclusive_group()
-    sets.add_argument("--heldout", action="store_true",
-                      help="with --crossform: the held-out set (other sizes, rigs, noise and seeds)")
-    sets.add_argument("--heldout2", action="store_true",
-                      help="with --crossform: the second, blind held-out set (other sizes, rigs, pairs and seeds)")
-    sets.add_argument("--heldout3", action="store_true",
-                      help="with --crossform: the third, blind held-out set (other sizes, rigs, pairs and seeds)")
-    sets.add_argument("--heldout4", action="store_true",
-                      help="with --crossform: the fourth, blind held-out set, reserved for a final measurement "
-                           "(other sizes, rigs, pairs and seeds)")
-    sets.add_argument("--heldout5", action="store_true",
-                      help="with --crossform: the fifth, blind held-out set, reserved for a final measurement "
-                           "(other sizes, rigs, pairs and seeds)")
-    sets.add_argument("--heldout6", action="store_true",
-                      help="with --crossform: the sixth, blind held-out set, reserved for a final measurement "
-                           "(other sizes, rigs, pairs and seeds)")
-    sets.add_argument("--heldout7", action="store_true",
-                      help="with --crossform: the seventh, blind held-out set, reserved for a final measurement "
-                           "(other sizes, rigs, pairs and seeds)")
-    sets.add_argument("--heldout8", action="store_true",
-                      help="with --crossform: the eighth, blind held-out set, reserved for a final measurement "
-                           "(other sizes, rigs, pairs and seeds)")
+    for name, what in HELDOUT_SETS.items():
+        sets.add_argument(f"--{name}", action="store_true", help=f"with --crossform: {what}")
     args = parser.parse_args(argv)
     start = time.perf_counter()
     if args.crossform:
-        which = next((name for name in ("heldout", "heldout2", "heldout3", "heldout4", "heldout5", "heldout6",
-                                        "heldout7", "heldout8")
-                      if getattr(args, name)), "dev")
+        which = next((name for name in HELDOUT_SETS if getattr(args, name)), "dev")
         result = run_crossform(only=args.only, which=which)
         s = result["summary"]
         print(s["confusion"])

@@ -206,15 +206,16 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
     on_line = line is not None and line.get("removed", 0.0) >= PARTIAL
     if line is not None:
         out["line"] = dict(line, judged_on=False)
-    if on_line and baseline_holdout <= GAP_FACTOR * floor:
+    in_band = baseline_holdout <= GAP_FACTOR * floor     # above the noise, within the model-form floor
+    if on_line and in_band:
         share = float(line["removed"])
         out["explained_gap_energy"] = share
         out["line"]["judged_on"] = True          # within the model-form floor: judged on the lines
-    elif baseline_holdout <= GAP_FACTOR * floor and noise_matched(best, floor_holdout, p_second):
+    elif in_band and noise_matched(best, floor_holdout, p_second):
         floor = floor_holdout                    # no model-form error left to allow for
         share = explained(baseline_holdout, best.nrmse_holdout, floor)
         out.update(explained_gap_energy=share, floor_holdout=floor, judged_on_noise_floor=True)
-    elif baseline_holdout <= GAP_FACTOR * floor:
+    elif in_band:
         out.update(effect=None, shrink_holdout=0.0, status="unexplained",
                    reason=f"the gap ({baseline_holdout:.4f}) is above the noise floor but within {GAP_FACTOR:g} x "
                           f"the model-form floor {floor:.4f}: no effect is blamed for what a nominal of "

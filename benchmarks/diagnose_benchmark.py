@@ -12,7 +12,7 @@ case names an effect in <= 5 %, median holdout shrink of the correctly
 named cases >= 70 %, under a minute per campaign.
 
     python benchmarks/diagnose_benchmark.py [--quick] [--json FILE]
-    python benchmarks/diagnose_benchmark.py --crossform [--heldout | --heldout2 | --heldout3 | --heldout4 | --heldout5 | --heldout6 | --heldout7 | --heldout8] [--json FILE]
+    python benchmarks/diagnose_benchmark.py --crossform [--heldout | --heldout2 | --heldout3 | --heldout4 | --heldout5 | --heldout6 | --heldout7 | --heldout8 | --heldout9] [--json FILE]
 
 --crossform runs the campaigns of the second generator (benchmarks/crossform:
 its own integrator and its own forms of the effects, a mis-stated nominal,
@@ -41,6 +41,9 @@ for the final measurement of session 7; not to be run while changing the
 diagnosis), --heldout8 the eighth, blind one, reserved (DC_HELDOUT8,
 PIEZO_HELDOUT8: written 2026-11-24 at the end of session 7 and reserved for
 the final measurement of that session's final code; not to be run while
+changing the diagnosis), --heldout9 the ninth, blind one, reserved
+(DC_HELDOUT9, PIEZO_HELDOUT9: written 2026-11-25 at the start of session 8
+and reserved for that session's final measurement; not to be run while
 changing the diagnosis), each with its own noise seeds.
 
 Leakage needs a pressurised oil column; on the unloaded seed prototype it
@@ -276,6 +279,7 @@ HELDOUT_SETS = {
     "heldout6": "the sixth, " + RESERVED,
     "heldout7": "the seventh, " + RESERVED,
     "heldout8": "the eighth, " + RESERVED,
+    "heldout9": "the ninth, " + RESERVED,
 }
 
 

@@ -144,3 +144,28 @@ def test_a_candidate_only_screened_is_never_taken():
     assert judge.pick([screened]) is None
     v = judge.verdict(0.02, 0.001, [screened], np.full(40, 10.0), run_length=2.0)
     assert v["status"] == "unexplained" and v["effect"] is None
+
+
+@pytest.mark.parametrize("best,runner_up_blocks,status", [
+    (0.0045, "same", "unexplained"),  # removes 51 % and tied with the runner-up: names nothing
+    (0.0045, 5.0, "partial"),         # removes 51 %, separated: partial
+    (0.0030, "same", "partial"),      # removes 87 %, tied: partial (not separated)
+    (0.0030, 5.0, "explained"),
+])
+def test_a_partial_candidate_tied_with_another_family_names_nothing(best, runner_up_blocks, status):
+    """Baseline 0.006, noise floor 0.001, floor^2 = 5e-6: the best removes
+    1 - (0.0045^2 - 5e-6) / (0.006^2 - 5e-6) = 51 % of the gap energy above
+    the floor (0.0030: 87 %), is significant against the baseline (blocks
+    1 against 10) and leaves less than 2.5 x the floor. A runner-up with
+    the very same blocks is not separated from it (p = 1)."""
+    fits = _fits(0.5)
+    fits[0].nrmse_holdout = best
+    fits[1].residual_blocks = fits[0].residual_blocks.copy() if runner_up_blocks == "same" \
+        else np.full(40, runner_up_blocks)
+    v = judge.verdict(0.006, 0.001, fits, np.full(40, 10.0), run_length=2.0)
+    share = 1 - (best ** 2 - 5e-6) / (0.006 ** 2 - 5e-6)
+    assert v["explained_gap_energy"] == pytest.approx(share)
+    assert v["status"] == status, v["reason"]
+    assert (v["effect"] is None) == (status == "unexplained")
+    if status == "unexplained":
+        assert "not separated from viscous_damping" in v["reason"] and "do not say which" in v["reason"]

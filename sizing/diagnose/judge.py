@@ -23,6 +23,9 @@ Verdict (all measures are the combined measure of bench.py, holdout runs):
 - "partial": the best removes >= PARTIAL of the gap energy above the
   floor and is significantly better than the baseline, but one of the
   other conditions fails; ``remaining`` says where its residual is;
+  it must remove most of the gap (>= EXPLAINED) or be separated from
+  the runner-up: an effect that removes less than most of the gap and
+  that another explanation matches names nothing (``tied``);
   an effect whose fitted time constant (a ``*time_s`` parameter) is
   longer than the shortest training run does not settle within a run,
   so it cannot be told from a slow drift: it is at most "partial";
@@ -168,6 +171,19 @@ def noise_matched(best, noise_floor: float, p_second: float) -> bool:
     return best.nrmse_holdout <= NOISE_MATCH * noise_floor and p_second < ALPHA
 
 
+def tied(share: float, separated: bool) -> bool:
+    """Whether a candidate is too weak on two counts to be named even as
+    partial: it removes less than most (EXPLAINED) of the gap energy above
+    the floor and is not separated from the runner-up, another
+    explanation. Either alone still names it "partial"; both together
+    mean the data neither pin the gap on it nor prefer it to another
+    family. A null piezo campaign of the second generator (pz-h8-null-
+    3stacks-3.5in: the nominal's model-form error 2.0 x the floor) was
+    named leakage, partial, removing 43 % and tied with fluid
+    compressibility at p = 0.22."""
+    return share < EXPLAINED and not separated
+
+
 def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks=None, seed: int = 0,
             run_length: float | None = None, line: dict | None = None) -> dict:
     """``run_length``: the shortest training run (s), for the settling rule.
@@ -240,7 +256,7 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
                    reason=f"{best.name} removes {100 * share:.0f} % {what}, "
                           f"separated from {second.name if second else 'every other effect'} (p = {p_second:.3f})")
         return out
-    if significant and share >= PARTIAL:
+    if significant and share >= PARTIAL and not tied(share, separated):
         why = []
         if share < EXPLAINED:
             why.append(f"it removes {100 * share:.0f} % < {100 * EXPLAINED:.0f} % of the gap energy above the floor")
@@ -256,6 +272,9 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
         return out
     small = "" if substantial else (f"; it removes {removed:.3g} of gap energy, less than the model-form floor's "
                                     f"own {floor ** 2:.3g}")
+    if significant and share >= PARTIAL:
+        small += (f"; it is not separated from {second.name} (p = {p_second:.3f}) and removes less than "
+                  f"{100 * EXPLAINED:.0f} %: the data do not say which")
     out.update(effect=None, shrink_holdout=0.0, status="unexplained",
                reason=f"no effect of the library removes a significant part ({100 * PARTIAL:.0f} %) of the holdout "
                       f"gap energy above the floor (best: {best.name}, {100 * share:.0f} %, p vs baseline "

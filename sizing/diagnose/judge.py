@@ -270,11 +270,14 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
         out.update(effect=best.name, form=best.form, status="partial",
                    reason=f"{best.name} explains part of the gap: " + "; ".join(why))
         return out
+    if significant and share >= PARTIAL:        # tied: another family matches what little it explains
+        out.update(effect=None, shrink_holdout=0.0, status="unexplained",
+                   reason=f"{best.name} removes {100 * share:.0f} % < {100 * EXPLAINED:.0f} % of the holdout gap "
+                          f"energy above the floor and is not separated from {second.name} (p = {p_second:.3f}): "
+                          f"the data do not say which")
+        return out
     small = "" if substantial else (f"; it removes {removed:.3g} of gap energy, less than the model-form floor's "
                                     f"own {floor ** 2:.3g}")
-    if significant and share >= PARTIAL:
-        small += (f"; it is not separated from {second.name} (p = {p_second:.3f}) and removes less than "
-                  f"{100 * EXPLAINED:.0f} %: the data do not say which")
     out.update(effect=None, shrink_holdout=0.0, status="unexplained",
                reason=f"no effect of the library removes a significant part ({100 * PARTIAL:.0f} %) of the holdout "
                       f"gap energy above the floor (best: {best.name}, {100 * share:.0f} %, p vs baseline "

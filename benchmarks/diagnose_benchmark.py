@@ -12,7 +12,7 @@ case names an effect in <= 5 %, median holdout shrink of the correctly
 named cases >= 70 %, under a minute per campaign.
 
     python benchmarks/diagnose_benchmark.py [--quick] [--json FILE]
-    python benchmarks/diagnose_benchmark.py --crossform [--heldout | --heldout2 | --heldout3 | --heldout4 | --heldout5 | --heldout6 | --heldout7 | --heldout8 | --heldout9] [--json FILE]
+    python benchmarks/diagnose_benchmark.py --crossform [--heldout | --heldout2 | --heldout3 | --heldout4 | --heldout5 | --heldout6 | --heldout7 | --heldout8 | --heldout9 | --heldout10] [--json FILE]
 
 --crossform runs the campaigns of the second generator (benchmarks/crossform:
 its own integrator and its own forms of the effects, a mis-stated nominal,
@@ -44,6 +44,9 @@ the final measurement of that session's final code; not to be run while
 changing the diagnosis), --heldout9 the ninth, blind one, reserved
 (DC_HELDOUT9, PIEZO_HELDOUT9: written 2026-11-25 at the start of session 8
 and reserved for that session's final measurement; not to be run while
+changing the diagnosis), --heldout10 the tenth, blind one, reserved
+(DC_HELDOUT10, PIEZO_HELDOUT10: written 2026-11-25 at the end of session 8
+and reserved for the next session's final measurement; not to be run while
 changing the diagnosis), each with its own noise seeds.
 
 Leakage needs a pressurised oil column; on the unloaded seed prototype it
@@ -280,6 +283,7 @@ HELDOUT_SETS = {
     "heldout7": "the seventh, " + RESERVED,
     "heldout8": "the eighth, " + RESERVED,
     "heldout9": "the ninth, " + RESERVED,
+    "heldout10": "the tenth, " + RESERVED,
 }
 
 

@@ -256,7 +256,13 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
                    reason=f"{best.name} removes {100 * share:.0f} % {what}, "
                           f"separated from {second.name if second else 'every other effect'} (p = {p_second:.3f})")
         return out
-    if significant and share >= PARTIAL and not tied(share, separated):
+    if significant and share >= PARTIAL and tied(share, separated):    # another family matches what little it explains
+        out.update(effect=None, shrink_holdout=0.0, status="unexplained",
+                   reason=f"{best.name} removes {100 * share:.0f} % < {100 * EXPLAINED:.0f} % of the holdout gap "
+                          f"energy above the floor and is not separated from {second.name} (p = {p_second:.3f}): "
+                          f"the data do not say which")
+        return out
+    if significant and share >= PARTIAL:
         why = []
         if share < EXPLAINED:
             why.append(f"it removes {100 * share:.0f} % < {100 * EXPLAINED:.0f} % of the gap energy above the floor")
@@ -269,12 +275,6 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
                        f"it does not settle within a run and cannot be told from a slow drift")
         out.update(effect=best.name, form=best.form, status="partial",
                    reason=f"{best.name} explains part of the gap: " + "; ".join(why))
-        return out
-    if significant and share >= PARTIAL:        # tied: another family matches what little it explains
-        out.update(effect=None, shrink_holdout=0.0, status="unexplained",
-                   reason=f"{best.name} removes {100 * share:.0f} % < {100 * EXPLAINED:.0f} % of the holdout gap "
-                          f"energy above the floor and is not separated from {second.name} (p = {p_second:.3f}): "
-                          f"the data do not say which")
         return out
     small = "" if substantial else (f"; it removes {removed:.3g} of gap energy, less than the model-form floor's "
                                     f"own {floor ** 2:.3g}")

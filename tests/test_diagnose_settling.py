@@ -169,3 +169,25 @@ def test_a_partial_candidate_tied_with_another_family_names_nothing(best, runner
     assert (v["effect"] is None) == (status == "unexplained")
     if status == "unexplained":
         assert "not separated from viscous_damping" in v["reason"] and "do not say which" in v["reason"]
+
+
+@pytest.mark.parametrize("removed,best_blocks,status", [
+    (0.95, 1.0, "explained"),            # the line removed, significant against the baseline
+    (0.50, 1.0, "no_significant_gap"),   # the line halved: not a gap of its own
+    (0.95, 10.0, "no_significant_gap"),  # not better than the baseline on the holdout
+    (None, 1.0, "no_significant_gap"),   # no line
+])
+def test_a_gap_at_the_noise_counts_when_the_best_removes_its_spectral_line(removed, best_blocks, status):
+    """Baseline 0.0012 within 1.5 x the noise floor 0.001: no gap, unless
+    the holdout gap has a spectral line that the best candidate removes
+    for the most part (>= 75 %) while being significantly better than the
+    baseline (blocks 1 against 10; with 10 against 10, p = 1)."""
+    fits = _fits(0.5)
+    fits[0].nrmse_holdout = 0.001
+    fits[0].residual_blocks = np.full(40, best_blocks)
+    line = None if removed is None else {"frequencies_Hz": [38.0], "ratio": 70.0, "share": 0.2, "removed": removed}
+    v = judge.verdict(0.0012, 0.001, fits, np.full(40, 10.0), run_length=2.0, line=line)
+    assert v["status"] == status, v.get("reason")
+    if status == "explained":
+        assert v["effect"] == "stack_creep" and v["line"]["judged_on"]
+        assert v["explained_gap_energy"] == pytest.approx(0.95)

@@ -158,35 +158,43 @@ def excess(t, e, band, level: np.ndarray) -> float:
     return float(np.sum(np.maximum(P[band] - level[band], 0.0)))
 
 
-def gap_lines(bench, nominal: list, candidate: list | None) -> dict | None:
-    """The lines of the holdout gap and how much of them a candidate removes.
-
-    ``nominal`` and ``candidate``: simulated positions (n,) of the holdout
-    runs (bench.holdout order). A line of the gap is a common line of the
-    holdout runs' baseline residuals (measured - nominal; ``lines``, the
-    nominal's own lines excluded); its energy is the periodogram above the
-    baseline's local level over the line's band (``line_band``). Returns
-    None without a line, else {"frequencies_Hz", "ratio" (smallest peak /
-    local level), "share" (of the baseline residual power in the lines),
-    "removed" (fraction of the lines' energy the candidate removes)}."""
-    runs = [bench.runs[i] for i in bench.holdout]
-    if not runs:
+def line_removal(base: list, references: list | None, candidate: list | None) -> dict | None:
+    """The lines of the residuals ``base`` [(t, e)] (their common lines,
+    ``lines``; a line of the matching ``references`` trace, the simulated
+    output that left e, excluded) and how much of their energy the
+    residuals ``candidate`` [(t, e)] of the same runs leave. The energy of
+    a line is the periodogram above the base's local level over the line's
+    band (``line_band``). Returns None without a line, else
+    {"frequencies_Hz", "ratio" (smallest peak / local level), "share" (of
+    the base residual power in the lines), "removed" (fraction of the
+    lines' energy the candidate removes)}."""
+    if not base:
         return None
-    res = [(r.t, r.y - y) for r, y in zip(runs, nominal)]
-    found = lines(res, nominal)
+    found = lines(base, references)
     if not found:
         return None
-    base = after = total = 0.0
-    for k, ((t, e), r) in enumerate(zip(res, runs)):
+    before = after = total = 0.0
+    for k, (t, e) in enumerate(base):
         total += float(np.sum(periodogram(t, e)[1]))
         mask, level = None, None
         for freq, _ratio in found:          # the union of the lines' bands (bands may overlap)
             band, level = line_band(t, e, freq)
             mask = np.zeros(len(level), bool) if mask is None else mask
             mask[band] = True
-        base += excess(t, e, mask, level)
+        before += excess(t, e, mask, level)
         if candidate is not None:
-            after += excess(t, r.y - candidate[k], mask, level)
-    removed = 0.0 if candidate is None or base <= 0 else float(1.0 - min(after / base, 1.0))
+            after += excess(*candidate[k], mask, level)
+    removed = 0.0 if candidate is None or before <= 0 else float(1.0 - min(after / before, 1.0))
     return {"frequencies_Hz": [f for f, _ in found], "ratio": min(r for _, r in found),
-            "share": base / max(total, 1e-300), "removed": removed}
+            "share": before / max(total, 1e-300), "removed": removed}
+
+
+def gap_lines(bench, nominal: list, candidate: list | None) -> dict | None:
+    """The lines of the holdout gap and how much of them a candidate removes
+    (``line_removal`` of the baseline residuals, measured - nominal).
+    ``nominal`` and ``candidate``: simulated positions (n,) of the holdout
+    runs (bench.holdout order)."""
+    runs = [bench.runs[i] for i in bench.holdout]
+    base = [(r.t, r.y - y) for r, y in zip(runs, nominal)]
+    after = None if candidate is None else [(r.t, r.y - y) for r, y in zip(runs, candidate)]
+    return line_removal(base, nominal, after)

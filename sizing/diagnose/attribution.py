@@ -25,7 +25,7 @@ import itertools
 
 import numpy as np
 
-from . import fitting
+from . import fitting, spectrum
 from .effects import library
 from .floor import total_floor
 from .judge import EXPLAINED, RESIDUAL_FACTOR, block_energy, explained
@@ -77,6 +77,8 @@ def holdout_score(bench, fit: fitting.EffectFit) -> None:
     E = bench.channel_nrmse(Y, runs)[0]               # (n_runs, n_ch)
     fit.nrmse_channels = {c: float(np.mean(E[:, k])) for k, c in enumerate(bench.channels)}
     fit.residual_blocks = block_energy(bench, [y[0] for y in Y], runs)
+    fit.holdout_position = [y[0][0] for y in Y]
+    fit.holdout_residual = [(bench.runs[i].t, bench.runs[i].y - y[0][0]) for i, y in zip(runs, Y)]
 
 
 def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 0, pairs: bool = True):
@@ -120,9 +122,14 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
     # of the gap above the model-form floor too may still leave a second
     # effect's gap well above the noise (a 12 ms delay over a 0.2 mm
     # backlash left 4.9 x the noise; the piezo singles that explain their
-    # gap leave 0.8-2.5 x, model-form error that a second effect would absorb)
+    # gap leave 0.8-2.5 x, model-form error that a second effect would absorb);
+    # and a single that leaves next to nothing of the broadband gap energy
+    # may still leave a spectral line (a mount ringing under a current
+    # limit or a backlash whose broadband gap is far larger): pairs are
+    # tried then too
     enough = (explained(baseline_holdout, best.nrmse_holdout, total_floor(floor_holdout)) >= EXPLAINED
-              and best.nrmse_holdout <= RESIDUAL_FACTOR * floor_holdout)
+              and best.nrmse_holdout <= RESIDUAL_FACTOR * floor_holdout
+              and not spectrum.lines(best.holdout_residual, best.holdout_position))
     if pairs and not enough:
         tops = []                                         # the best fitted form of each of the top families
         for f in fits:

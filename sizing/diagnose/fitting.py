@@ -34,6 +34,8 @@ class EffectFit:
     message: str = ""
     nrmse_channels: dict = field(default_factory=dict)              # holdout NRMSE per channel
     residual_blocks: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    holdout_position: list = field(default_factory=list)     # simulated position (n,) of each holdout run
+    holdout_residual: list = field(default_factory=list)     # (t, measured - simulated position) of each
 
     @property
     def named(self) -> tuple:

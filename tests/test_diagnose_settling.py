@@ -4,7 +4,7 @@ it is at most "partial" (sizing/diagnose/judge.py)."""
 import numpy as np
 import pytest
 
-from sizing.diagnose import judge
+from sizing.diagnose import judge, spectrum
 from sizing.diagnose.floor import total_floor
 from sizing.diagnose.effects import get, library
 from sizing.diagnose.fitting import EffectFit
@@ -192,3 +192,29 @@ def test_a_gap_at_the_noise_counts_when_the_best_removes_its_spectral_line(remov
     if status == "explained":
         assert v["effect"] == "stack_creep" and v["line"]["judged_on"]
         assert v["explained_gap_energy"] == pytest.approx(0.95)
+
+
+@pytest.mark.parametrize("kept,earned", [
+    (0.0, True),    # the pair removes the whole line
+    (0.6, True),    # amplitude 0.6 left: 1 - 0.36 = 64 % of the line's energy removed >= 50 %
+    (0.8, False),   # 1 - 0.64 = 36 % < 50 %
+])
+def test_a_pair_earns_its_second_effect_by_removing_a_line_the_single_leaves(kept, earned):
+    """The single leaves a 36 Hz sinusoid of amplitude 1 over white noise of
+    0.05 (a line far above LINE_FACTOR) in two 2 s holdout runs; the pair
+    leaves the same noise and ``kept`` x that sinusoid. The share of the
+    line's energy removed is 1 - kept^2 (the noise is the same draw, so it
+    cancels); LINE_GAIN = 50 %."""
+    rng = np.random.default_rng(4)
+    t = np.arange(0, 2.0, 1e-3)
+    noise = [0.05 * rng.standard_normal(t.size) for _ in range(2)]
+    line = np.sin(2 * np.pi * 36.0 * t)
+    flat = [np.zeros_like(t)] * 2
+    single = EffectFit((), np.zeros(0), 0.0, holdout_position=flat,
+                       holdout_residual=[(t, n + line) for n in noise])
+    pair = EffectFit((), np.zeros(0), 0.0, holdout_position=flat,
+                     holdout_residual=[(t, n + kept * line) for n in noise])
+    assert judge.removes_what_is_left(single, pair) is earned
+    removed = spectrum.line_removal(single.holdout_residual, flat, pair.holdout_residual)["removed"]
+    assert removed == pytest.approx(1 - kept ** 2, abs=0.02)
+    assert not judge.removes_what_is_left(EffectFit((), np.zeros(0), 0.0), pair)   # no residuals kept: no line

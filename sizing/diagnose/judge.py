@@ -221,8 +221,9 @@ def narrowband_gap(line: dict | None, best, baseline_blocks, seed: int = 0) -> b
     significant gap" in all eight; in six its line is 31-76 x the local
     level and the fitted mount, at the true frequency, removes 92-100 % of
     it (in the other two the line stays below LINE_FACTOR and so does the
-    verdict). No null campaign of those sets has a line. The noise-only same-form campaign's 32 x "line" (the
-    input treatment's error, tests/test_diagnose.py::
+    verdict: 13 x and 19 x). No null campaign of those sets has a line.
+    The noise-only same-form campaign's 32 x "line" (the input treatment's
+    error, tests/test_diagnose.py::
     test_sensor_noise_alone_gives_no_gap) is halved by the mount form, not
     removed, and stays no gap."""
     if line is None or best is None or baseline_blocks is None:

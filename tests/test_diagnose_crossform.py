@@ -264,8 +264,8 @@ def test_a_ringing_mount_at_the_noise_is_named_from_its_spectral_line(tmp_path):
 
 
 def test_a_mount_behind_a_backlash_is_paired_from_the_line_the_backlash_leaves(tmp_path):
-    """A 0.17 mm backlash and a 36 Hz sensor mount with 2 % damping (the ninth set's
-    dc-h9-backlash+mount, its seed). Backlash alone removes all of the
+    """A 0.17 mm backlash and a 36 Hz sensor mount with 2 % damping (the
+    ninth set's dc-h9-backlash+mount, its seed). Backlash alone removes all of the
     broadband gap above the floor and leaves 1.5 x the noise, so no pair
     was tried and backlash alone was named; but it leaves the mount's
     line, of which it removes 14 %. Pairs are tried when the best single

@@ -12,7 +12,7 @@ case names an effect in <= 5 %, median holdout shrink of the correctly
 named cases >= 70 %, under a minute per campaign.
 
     python benchmarks/diagnose_benchmark.py [--quick] [--json FILE]
-    python benchmarks/diagnose_benchmark.py --crossform [--heldout | --heldout2 | --heldout3 | --heldout4 | --heldout5 | --heldout6 | --heldout7 | --heldout8 | --heldout9 | --heldout10] [--json FILE]
+    python benchmarks/diagnose_benchmark.py --crossform [--heldout | --heldout2 | --heldout3 | --heldout4 | --heldout5 | --heldout6 | --heldout7 | --heldout8 | --heldout9 | --heldout10 | --heldout11] [--json FILE]
 
 --crossform runs the campaigns of the second generator (benchmarks/crossform:
 its own integrator and its own forms of the effects, a mis-stated nominal,
@@ -47,6 +47,9 @@ and reserved for that session's final measurement; not to be run while
 changing the diagnosis), --heldout10 the tenth, blind one, reserved
 (DC_HELDOUT10, PIEZO_HELDOUT10: written 2026-11-25 at the end of session 8
 and reserved for the next session's final measurement; not to be run while
+changing the diagnosis), --heldout11 the eleventh, blind one, reserved
+(DC_HELDOUT11, PIEZO_HELDOUT11: written 2026-11-25 during session 9 and
+reserved for the next session's final measurement; not to be run while
 changing the diagnosis), each with its own noise seeds.
 
 Leakage needs a pressurised oil column; on the unloaded seed prototype it
@@ -284,6 +287,7 @@ HELDOUT_SETS = {
     "heldout8": "the eighth, " + RESERVED,
     "heldout9": "the ninth, " + RESERVED,
     "heldout10": "the tenth, " + RESERVED,
+    "heldout11": "the eleventh, " + RESERVED,
 }
 
 

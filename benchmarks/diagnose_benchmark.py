@@ -12,7 +12,7 @@ case names an effect in <= 5 %, median holdout shrink of the correctly
 named cases >= 70 %, under a minute per campaign.
 
     python benchmarks/diagnose_benchmark.py [--quick] [--json FILE]
-    python benchmarks/diagnose_benchmark.py --crossform [--heldout | --heldout2 | --heldout3 | --heldout4 | --heldout5 | --heldout6 | --heldout7 | --heldout8 | --heldout9 | --heldout10 | --heldout11] [--json FILE]
+    python benchmarks/diagnose_benchmark.py --crossform [--heldout | --heldout2 | --heldout3 | --heldout4 | --heldout5 | --heldout6 | --heldout7 | --heldout8 | --heldout9 | --heldout10 | --heldout11 | --heldout12] [--json FILE]
 
 --crossform runs the campaigns of the second generator (benchmarks/crossform:
 its own integrator and its own forms of the effects, a mis-stated nominal,
@@ -46,10 +46,12 @@ changing the diagnosis), --heldout9 the ninth, blind one, reserved
 and reserved for that session's final measurement; not to be run while
 changing the diagnosis), --heldout10 the tenth, blind one, reserved
 (DC_HELDOUT10, PIEZO_HELDOUT10: written 2026-11-25 at the end of session 8
-and reserved for the next session's final measurement; not to be run while
-changing the diagnosis), --heldout11 the eleventh, blind one, reserved
-(DC_HELDOUT11, PIEZO_HELDOUT11: written 2026-11-25 during session 9 and
-reserved for the next session's final measurement; not to be run while
+and run once on session 9's final code, in sessions 9 and 10; now seen),
+--heldout11 the eleventh (DC_HELDOUT11, PIEZO_HELDOUT11: written
+2026-11-25 during session 9 and run once on session 9's final code, in
+session 10; now seen), --heldout12 the twelfth, blind one, reserved
+(DC_HELDOUT12, PIEZO_HELDOUT12: written 2026-11-25 in session 10 and
+reserved for a later session's final measurement; not to be run while
 changing the diagnosis), each with its own noise seeds.
 
 Leakage needs a pressurised oil column; on the unloaded seed prototype it
@@ -286,8 +288,9 @@ HELDOUT_SETS = {
     "heldout7": "the seventh, " + RESERVED,
     "heldout8": "the eighth, " + RESERVED,
     "heldout9": "the ninth, " + RESERVED,
-    "heldout10": "the tenth, " + RESERVED,
-    "heldout11": "the eleventh, " + RESERVED,
+    "heldout10": "the tenth held-out set, blind until run once on session 9's final code (other sizes, rigs, pairs and seeds)",
+    "heldout11": "the eleventh held-out set, blind until run once on session 9's final code (other sizes, rigs, pairs and seeds)",
+    "heldout12": "the twelfth, " + RESERVED,
 }
 
 

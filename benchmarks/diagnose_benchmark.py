@@ -44,7 +44,7 @@ the final measurement of that session's final code; not to be run while
 changing the diagnosis), --heldout9 the ninth, blind one, reserved
 (DC_HELDOUT9, PIEZO_HELDOUT9: written 2026-11-25 at the start of session 8
 and reserved for that session's final measurement; not to be run while
-changing the diagnosis), --heldout10 the tenth, blind one, reserved
+changing the diagnosis), --heldout10 the tenth
 (DC_HELDOUT10, PIEZO_HELDOUT10: written 2026-11-25 at the end of session 8
 and run once on session 9's final code, in sessions 9 and 10; now seen),
 --heldout11 the eleventh (DC_HELDOUT11, PIEZO_HELDOUT11: written
@@ -277,19 +277,21 @@ def crossform_table(rows) -> str:
 
 
 RESERVED = "blind held-out set, reserved for a final measurement (other sizes, rigs, pairs and seeds)"
+# sets that were blind until run once on a session's code, seen since
+SEEN = "held-out set, blind until run once on session {}'s code, seen since (other sizes, rigs, pairs and seeds)"
 # --crossform sets other than the development set: flag name -> what it holds
 HELDOUT_SETS = {
     "heldout": "the held-out set (other sizes, rigs, noise and seeds)",
     "heldout2": "the second, blind held-out set (other sizes, rigs, pairs and seeds)",
     "heldout3": "the third, blind held-out set (other sizes, rigs, pairs and seeds)",
-    "heldout4": "the fourth, " + RESERVED,
-    "heldout5": "the fifth, " + RESERVED,
-    "heldout6": "the sixth, " + RESERVED,
-    "heldout7": "the seventh, " + RESERVED,
-    "heldout8": "the eighth, " + RESERVED,
-    "heldout9": "the ninth, " + RESERVED,
-    "heldout10": "the tenth held-out set, blind until run once on session 9's final code (other sizes, rigs, pairs and seeds)",
-    "heldout11": "the eleventh held-out set, blind until run once on session 9's final code (other sizes, rigs, pairs and seeds)",
+    "heldout4": "the fourth " + SEEN.format(5),
+    "heldout5": "the fifth " + SEEN.format(6),
+    "heldout6": "the sixth " + SEEN.format(6),
+    "heldout7": "the seventh " + SEEN.format(7),
+    "heldout8": "the eighth " + SEEN.format(7),
+    "heldout9": "the ninth " + SEEN.format(8),
+    "heldout10": "the tenth " + SEEN.format(9),
+    "heldout11": "the eleventh " + SEEN.format(9),
     "heldout12": "the twelfth, " + RESERVED,
 }
 

@@ -86,7 +86,7 @@ def _jsonable(value):
 
 
 @app.command()
-def evaluate(design: Path = typer.Argument(..., help="design.toml (CONTRACTS.md)."),
+def evaluate(design: Path = typer.Argument(..., help="design.toml (docs/formats.md)."),
              json_out: bool = typer.Option(False, "--json", help="Print one JSON object instead of a summary."),
              catalog: Optional[Path] = CatalogOpt,
              max_steps: Optional[float] = MaxStepsOpt):
@@ -103,7 +103,7 @@ def evaluate(design: Path = typer.Argument(..., help="design.toml (CONTRACTS.md)
 
 
 @app.command()
-def solve(requirements: Path = typer.Argument(..., help="requirements.toml (CONTRACTS.md)."),
+def solve(requirements: Path = typer.Argument(..., help="requirements.toml (docs/formats.md)."),
           out: Path = typer.Option(Path("sizing-out"), "--out", help="Folder for results.json, candidates.csv and report.html."),
           catalog: Optional[Path] = CatalogOpt,
           baseline: Optional[Path] = typer.Option(None, "--baseline", help="An earlier results.json: report what changed."),
@@ -191,7 +191,7 @@ def catalog_add(kind: str = typer.Argument(..., help="Part kind: stack, fluid, s
 
 
 @app.command()
-def diagnose(campaign: Path = typer.Argument(..., help="Campaign folder: rig.toml and runs/NAME.csv (CONTRACTS.md)."),
+def diagnose(campaign: Path = typer.Argument(..., help="Campaign folder: rig.toml and runs/NAME.csv (docs/formats.md)."),
              holdout: Optional[List[str]] = typer.Option(None, "--holdout", help="Run (CSV name without .csv) never used for fitting; repeatable. Required unless --check."),
              out: Path = typer.Option(Path("diagnose-out"), "--out", help="Folder for diagnosis.json and diagnosis.html."),
              recalibrate: Optional[List[str]] = typer.Option(None, "--recalibrate", help="Re-fit this nominal parameter on the training runs first, and jointly with every effect (piezo: d33, wide_friction, narrow_friction; DC: c1, c2); repeatable. Default: d33 (piezo), c1 and c2 (DC)."),
@@ -295,9 +295,9 @@ def fit_hysteresis(data: List[Path] = typer.Argument(..., help="Run CSVs (time_s
 
 @fit_app.command("dc-motor")
 def fit_dc_motor(data: List[Path] = typer.Argument(..., help="Run CSVs (time_s,reference_m,position_m), one run each."),
-                 rig: Path = typer.Option(..., "--rig", help="rig.toml of kind dc_motor: screw, controller, current limit, load (CONTRACTS.md)."),
+                 rig: Path = typer.Option(..., "--rig", help="rig.toml of kind dc_motor: screw, controller, current limit, load (docs/formats.md)."),
                  holdout: Optional[List[str]] = typer.Option(None, "--holdout", help="Run (CSV name without .csv) kept out of the fit for validation; repeatable."),
-                 out: Optional[Path] = typer.Option(None, "--out", help="TOML file to write ([motor], [fit]); the HTML report goes beside it. Default: print the TOML."),
+                 out: Optional[Path] = typer.Option(None, "--out", help="TOML file to write (tables motor and fit); the HTML report goes beside it. Default: print the TOML."),
                  report: Optional[Path] = typer.Option(None, "--report", help="HTML report path (default: OUT with .html; none without --out)."),
                  gains: bool = typer.Option(False, "--gains", help="Also fit the rig's nonzero PID gains (kp, ki, kd)."),
                  starts: int = number_option(3, "--starts", "Starting points refined by least squares.", low=1, high=1000),
@@ -373,7 +373,7 @@ WorkersOpt = number_option(None, "--workers", "Worker processes of the local Das
 
 
 @app.command()
-def robust(requirements: Path = typer.Argument(..., help="requirements.toml (CONTRACTS.md), with an optional [tolerances] table."),
+def robust(requirements: Path = typer.Argument(..., help="requirements.toml (docs/formats.md), with an optional tolerances table."),
            samples: int = number_option(1000, "--samples", "Monte Carlo samples per design (>= 1).", low=1, high=10**7),
            seed: int = number_option(0, "--seed", "Random seed; the same seed gives the same numbers wherever the work runs.", low=0, high=SEED_MAX),
            designs: int = number_option(10, "--designs", "How many of the best designs of sizing solve to study.", low=1, high=10**4),
@@ -397,7 +397,7 @@ def robust(requirements: Path = typer.Argument(..., help="requirements.toml (CON
 
 
 @app.command()
-def sweep(requirements: Path = typer.Argument(..., help="requirements.toml (CONTRACTS.md)."),
+def sweep(requirements: Path = typer.Argument(..., help="requirements.toml (docs/formats.md)."),
           vary: List[str] = typer.Option(..., "--vary", help="FIELD=FROM..TO:N, units as in the file, e.g. "
                                                               "stroke=35mm..50mm:4 or max_temperature=80degC..120degC:3. Repeat for a grid."),
           out: Path = typer.Option(Path("sweep-out"), "--out", help="Folder for sweep.json and sweep.html."),
@@ -432,7 +432,7 @@ def _one_line(text: str) -> str:
 
 
 def main(argv: Optional[List[str]] = None) -> None:
-    """Console entry point: maps errors to exit codes (CONTRACTS.md): 0 done,
+    """Console entry point: maps errors to exit codes (docs/formats.md): 0 done,
     2 bad input (one line), 130 SIGINT, 143 SIGTERM, 1 a bug (traceback)."""
     from typer._click.exceptions import ClickException   # typer bundles its own click
 

@@ -196,7 +196,7 @@ def diagnose(campaign: Path = typer.Argument(..., help="Campaign folder: rig.tom
              out: Path = typer.Option(Path("diagnose-out"), "--out", help="Folder for diagnosis.json and diagnosis.html."),
              recalibrate: Optional[List[str]] = typer.Option(None, "--recalibrate", help="Re-fit this nominal parameter on the training runs first, and jointly with every effect (piezo: d33, wide_friction, narrow_friction; DC: c1, c2); repeatable. Default: d33 (piezo), c1 and c2 (DC)."),
              no_recalibrate: bool = typer.Option(False, "--no-recalibrate", help="Judge the effects against the stated nominal, without re-calibration."),
-             check: bool = typer.Option(False, "--check", help="Inject each library effect into the campaign's own excitations, diagnose blind and print the confusion matrix."),
+             check: bool = typer.Option(False, "--check", help="Inject each library effect into the campaign's own excitations, diagnose each without using the injected truth and print the confusion matrix."),
              seed: int = number_option(0, "--seed", "Seed of the screening and of --check's noise.", low=0, high=SEED_MAX),
              max_samples: Optional[int] = MaxSamplesOpt,
              max_steps: Optional[float] = MaxStepsOpt):

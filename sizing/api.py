@@ -13,7 +13,7 @@ def catalog(folder: str | Path | None = None) -> Catalog:
 
 
 def evaluate(design_path: str | Path, catalog_dir: str | Path | None = None) -> dict:
-    """Static and simulated figures of one design file (CONTRACTS.md)."""
+    """Static and simulated figures of one design file (docs/formats.md)."""
     from .engine.evaluate import evaluate_dc, evaluate_piezo
 
     design = load_design(design_path)
@@ -34,7 +34,7 @@ def evaluate(design_path: str | Path, catalog_dir: str | Path | None = None) -> 
 def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-out",
           catalog_dir: str | Path | None = None, baseline: str | Path | None = None,
           progress=None) -> dict:
-    """Size, verify and rank designs for a requirements file (CONTRACTS.md).
+    """Size, verify and rank designs for a requirements file (docs/formats.md).
 
     Writes results.json, candidates.csv and report.html into ``out_dir``
     (atomically, after everything is computed and rendered; nothing when
@@ -138,7 +138,7 @@ def _load_baseline(path: str | Path) -> dict:
 
 
 def _rank_changes(baseline: dict, results: dict, baseline_path, catalog_folder: Path) -> list[dict]:
-    """Designs whose standing changed (engine/changes.py, issue 6), with the
+    """Designs whose standing changed (engine/changes.py), with the
     catalog fields responsible when the baseline's catalog is known (the
     snapshot ``sizing solve`` writes beside its results.json)."""
     from .engine.changes import rank_changes
@@ -150,7 +150,7 @@ def _rank_changes(baseline: dict, results: dict, baseline_path, catalog_folder: 
 
 def diagnose(campaign_dir: str | Path, holdout: list[str], out_dir: str | Path | None = None,
              recalibrate: list[str] | None = None, seed: int = 0):
-    """Diagnose the sim-to-real gap of a campaign (CONTRACTS.md). Writes
+    """Diagnose the sim-to-real gap of a campaign (docs/formats.md). Writes
     diagnosis.json and diagnosis.html into ``out_dir`` when given; returns
     the Diagnosis (``.to_json()`` is diagnosis.json)."""
     import json
@@ -206,7 +206,7 @@ def fit_dc_motor(paths, rig, holdout=None, out=None, **options) -> dict:
     return run(paths, rig, holdout=holdout, out=out, **options)
 
 
-# --- studies (issue 13): sizing robust, sizing sweep ------------------------
+# --- studies: sizing robust, sizing sweep ------------------------
 def _executor(scheduler: str | None, workers: int, cluster=None, progress=None):
     """The study executor; tells ``progress.note`` (when it has one) where the
     Dask dashboard shows the tasks."""
@@ -223,7 +223,7 @@ def robust(requirements_path: str | Path, out_dir: str | Path | None = "robust-o
            technology: str | None = None) -> dict:
     """Probability of compliance of the ``designs`` best designs of ``solve``
     (piezohydraulic and DC from parts; only ``technology``'s when given)
-    under the [tolerances] (CONTRACTS.md, second round). ``workers`` > 0: a
+    under the [tolerances] (docs/formats.md). ``workers`` > 0: a
     local Dask cluster of that many processes; ``scheduler``: a running one;
     ``cluster``: a dask cluster object. ``bouc_wen_fit``: a ``sizing fit
     hysteresis`` output whose standard errors become Bouc-Wen tolerances. Writes robust.json and robust.html

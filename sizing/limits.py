@@ -3,7 +3,7 @@
 Hostile or mistaken input can ask for more than the machine has: a 200 MB
 run CSV reached 14 GB of memory in ``sizing fit``, a DC rig at
 ``rate = "1e9 Hz"`` never returns, an evaluate for a 1e9 s duration asked
-for 14.6 TiB (issue 14). So each command first *estimates* what it will
+for 14.6 TiB. So each command first *estimates* what it will
 need (samples read, integration steps of one simulation pass, memory) and
 refuses with exit 2 and the estimate when it exceeds a stated limit. The
 limits are plain numbers in ``Limits``; the CLI's ``--max-samples`` and

@@ -72,7 +72,7 @@ PLAUSIBLE: dict[str, tuple[float, float]] = {
     "friction_per_length": (-1e12, 1e12), "friction_per_length_pressure": (-1e3, 1e3),
     "power": (-1e12, 1e12), "damping": (-1e15, 1e15), "conductance": (-1e3, 1e3),
     "dimensionless": (-1e12, 1e12), "temperature": (-273.15, 1e5),
-    # force path and compensators (issue 9), motors, screws, gears (issue 11)
+    # force path and compensators, motors, screws, gears
     "volume_stiffness": (-1e25, 1e25), "torque": (-1e7, 1e7), "angular_speed": (-1e7, 1e7),
     "back_emf_constant": (-1e4, 1e4), "rotational_damping": (-1e6, 1e6), "inertia": (-1e6, 1e6),
     "inertia_per_length": (-1e6, 1e6), "mass_per_length": (-1e6, 1e6), "resistance": (-1e9, 1e9),

@@ -2,7 +2,7 @@
 
 ``diagnose_runs`` works on runs in memory (used by the command, the
 withheld-effect check and the benchmark); ``Diagnosis.to_json`` gives
-diagnosis.json exactly as CONTRACTS.md fixes it, plus extra keys.
+diagnosis.json exactly as docs/formats.md fixes it, plus extra keys.
 """
 from __future__ import annotations
 

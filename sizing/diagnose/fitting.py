@@ -3,7 +3,7 @@
 Least squares (scipy's trust-region reflective, bounds [0, 1] on the unit
 search coordinates of each parameter, log-scaled where declared). The
 residual of a run is (measured - simulated) / (span sqrt(n)), so the cost
-is the sum over runs of NRMSE^2 (CONTRACTS.md; the combined measure of bench.py when
+is the sum over runs of NRMSE^2 (docs/formats.md; the combined measure of bench.py when
 the runs log the current too). The Jacobian is a forward
 difference computed as one batch of the simulator (all perturbed parameter
 sets at once), step FD_STEP in unit coordinates or the effect's

@@ -20,7 +20,7 @@ RECALIBRATABLE = {
 # re-fitted by default (``--recalibrate`` not given): the parameters a bench
 # campaign pins down without standing in for an effect of the library
 # (seal friction would absorb seal_stick_slip, so it is not re-fitted unasked).
-# The wide seal's friction was tried as a default in session 6: it removed a
+# The wide seal's friction was tried as a default: it removed a
 # named null on a two-stack 3 in rig whose wide seal is stated 10 N against
 # 11.9 N, but
 # a single slow training ramp does not pin it down (on a same-form noise-only

@@ -1,7 +1,7 @@
-"""What a catalog (or model) change did to the ranking (issue 6, point 4).
+"""What a catalog (or model) change did to the ranking (``sizing solve --baseline``).
 
 ``rank_changes(baseline, results, catalog_diff)`` compares two results.json
-dicts (CONTRACTS.md) candidate by candidate, matched by ``id``, and lists
+dicts (docs/formats.md) candidate by candidate, matched by ``id``, and lists
 the designs that entered or left the feasible set or the Pareto front,
 appeared or disappeared, or moved in rank, with the catalog fields
 responsible: the changed, added or removed entries among the candidate's
@@ -106,7 +106,7 @@ def rank_changes(baseline: dict, results: dict, catalog_diff=None) -> list[dict]
     Parameters
     ----------
     baseline, results : dict
-        Two results.json dicts (CONTRACTS.md); candidates matched by ``id``.
+        Two results.json dicts (docs/formats.md); candidates matched by ``id``.
     catalog_diff : CatalogDiff, its ``to_dict()``, or None
         The catalog change between the two runs; used to name the fields
         responsible (entries among each candidate's ``components``).

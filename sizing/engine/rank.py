@@ -1,6 +1,6 @@
 """Margins, feasibility, design driver, Pareto front and rank.
 
-Margins follow CONTRACTS.md: achieved / required - 1 for a requirement that
+Margins follow docs/formats.md: achieved / required - 1 for a requirement that
 sets a floor (stroke, force, speed, ...); for a ceiling (overshoot, thermal
 drift) 1 - achieved / allowed, so that in both cases a negative margin
 means the requirement is missed. The temperature margin is (rated -

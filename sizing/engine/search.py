@@ -27,7 +27,7 @@ from ..physics import stack as stack_phys
 
 
 def temperature_margin(rated_degC: float, required_degC: float) -> float:
-    """(rated - required) / required (CONTRACTS.md: "rated limit minus
+    """(rated - required) / required (docs/formats.md: "rated limit minus
     requirement, over the requirement in K"): the difference is a number of
     kelvin, divided by the required temperature's degC value, as the
     contract's example reads (a 150 degC stack at a 100 degC requirement:

@@ -3,7 +3,7 @@ fit Bouc-Wen (plain and regularised toward the catalog prior) and
 Prandtl-Ishlinskii, choose the model on the holdout, render the TOML, the
 HTML report and optionally a catalog entry, write them atomically.
 
-Defaults for real records (issue 12): a sensor offset and an initial state
+Defaults for real records: a sensor offset and an initial state
 per run are fitted, the input filter's cut-off follows each record's sample
 rate and excitation, and ``model="auto"`` carries the model with the lower
 mean holdout NRMSE.
@@ -146,7 +146,7 @@ def fit_hysteresis(paths, holdout=None, model: str = "auto", out=None, report=No
     comments = {"stack": ("sizing fit hysteresis: seed eq. 1-2, SI (paste into rig.toml); values the data leave "
                           "free come from the prior, see [fit.prior]"),
                 "prandtl_ishlinskii": "the model this fit carries (see [fit.model_choice]); [stack] below is the Bouc-Wen form a rig.toml takes",
-                "fit": "not part of a rig: fit figures (NRMSE per CONTRACTS.md)"}
+                "fit": "not part of a rig: fit figures (NRMSE per docs/formats.md)"}
     toml = render_toml(tables, comments)
     files: dict[Path, str] = {}
     if catalog_entry is not None:

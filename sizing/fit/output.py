@@ -1,4 +1,4 @@
-"""Render fit results as TOML (CONTRACTS.md, "Fit output"): tables that paste
+"""Render fit results as TOML (docs/formats.md, "Fit output"): tables that paste
 straight into a rig file ([stack], [stack.bouc_wen], [motor]) plus [fit]."""
 from __future__ import annotations
 

@@ -22,7 +22,7 @@ the point itself weighs the prior against the white chi^2.
 
 Where the prior comes from (pure numbers; the workflow reads the catalog):
 - ``transfer_prior``: a catalog stack's Bouc-Wen parameters carried to
-  other scales in normalised form (PHYSICS-NOTES item 4), e.g. the seed's
+  other scales in normalised form (docs/models.md, corrections to the seed, item 4), e.g. the seed's
   Table 1 (thorlabs-pk4ga7p1, 100 um at 150 V) onto the measured record's
   displacement and voltage ranges when no stack is named.
 """

@@ -79,7 +79,7 @@ def fit_dc_motor(paths, rig_path, holdout=None, out=None, report=None, fit_gains
         tables["controller"] = gains
     tables["fit"] = fit_table
     toml = render_toml(tables, {"motor": "sizing fit dc-motor: seed eq. 13-14, SI (paste into rig.toml)",
-                                "fit": "not part of a rig: fit figures (NRMSE per CONTRACTS.md)"})
+                                "fit": "not part of a rig: fit figures (NRMSE per docs/formats.md)"})
     result = {"model": "dc-motor", "traces": traces, "fit": fit_table, "params": est.params_,
               "ci95": est.ci95_, "warnings": est.warnings_, "sources": [str(p) for p in paths],
               "summary": {"dc-motor": {"nrmse_train": fit_table["nrmse_train"],

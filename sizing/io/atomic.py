@@ -1,4 +1,4 @@
-"""The one output writer of every command (CONTRACTS.md: nothing half-written).
+"""The one output writer of every command (docs/formats.md: nothing half-written).
 
 Two shapes of output:
 

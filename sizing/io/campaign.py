@@ -1,4 +1,4 @@
-"""A test campaign folder: rig.toml and runs/*.csv (CONTRACTS.md)."""
+"""A test campaign folder: rig.toml and runs/*.csv (docs/formats.md)."""
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -34,7 +34,7 @@ def load_campaign(folder: str | Path) -> Campaign:
         raise InputError(str(folder / "runs"), None, "no runs: expected runs/NAME.csv files")
     runs = read_runs(paths, rig.kind)
     duration = sum(float(r.time[-1] - r.time[0]) for r in runs)
-    if rig.kind == "dc_motor":   # refuse a rig rate that would never finish (issue 14: "1e9 Hz")
+    if rig.kind == "dc_motor":   # refuse a rig rate that would never finish ("1e9 Hz")
         check_steps(dc_steps(duration, rig.controller.rate), str(rig_path), "[controller].rate",
                     "controller steps per simulation of the runs")
     else:                        # the oil's 50 us sub-steps over every run's time span

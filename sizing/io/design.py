@@ -1,4 +1,4 @@
-"""design.toml: one design for ``sizing evaluate`` (CONTRACTS.md)."""
+"""design.toml: one design for ``sizing evaluate`` (docs/formats.md)."""
 from __future__ import annotations
 
 from pathlib import Path
@@ -15,7 +15,7 @@ class LoadTable(Strict):
     span: Qty("length", positive=True) = 15 * 0.0254
     chord: Qty("length", positive=True) = 10 * 0.0254
     thickness: Qty("length", positive=True) = 0.0625 * 0.0254
-    density: Qty("density", positive=True) = 2700.0   # surface material (issue 9: its inertia, reflected by R^2); assumed aluminium
+    density: Qty("density", positive=True) = 2700.0   # surface material (its inertia, reflected by R^2); assumed aluminium
     dynamic_pressure: list[Qty("pressure", nonnegative=True)] = Field(default_factory=lambda: [10e3, 25e3])
     force: Optional[list[Qty("force")]] = None      # explicit forces instead of pressures
     stiffness: Qty("stiffness", nonnegative=True) = 0.0
@@ -52,7 +52,7 @@ class PiezoDesignFile(Strict):
     rise_time: Qty("time", positive=True) = 0.1
     temperature: Qty("temperature") = 25.0
     no_return: bool = False
-    # force path, thermal budget and drive duty (issue 9)
+    # force path, thermal budget and drive duty
     material: Optional[str] = None                     # catalogs/materials.toml id (caps, base plate, frame)
     end_cap_thickness: Optional[Qty("length", positive=True)] = None
     frame_area: Optional[Qty("area", positive=True)] = None

@@ -1,5 +1,5 @@
 """Relative spreads of the Bouc-Wen parameters from a ``sizing fit
-hysteresis`` output (CONTRACTS.md, fit output): each parameter's standard
+hysteresis`` output (docs/formats.md, fit output): each parameter's standard
 error (``[fit].stderr``) over the fitted value (``[stack].d33``,
 ``[stack.bouc_wen]``), as ``stack.bouc_wen.PARAM`` tolerances for
 ``sizing robust --bouc-wen-fit``."""

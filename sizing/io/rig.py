@@ -1,4 +1,4 @@
-"""rig.toml: the nominal model of the hardware under test (CONTRACTS.md)."""
+"""rig.toml: the nominal model of the hardware under test (docs/formats.md)."""
 from __future__ import annotations
 
 from pathlib import Path

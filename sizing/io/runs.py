@@ -1,4 +1,4 @@
-"""Measured runs: CSV files of a test campaign (CONTRACTS.md).
+"""Measured runs: CSV files of a test campaign (docs/formats.md).
 
 A header line, then one row per sample. Every error names the file, the CSV
 line (the header is line 1) and the column.

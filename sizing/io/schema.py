@@ -3,7 +3,7 @@
 ``Qty("length", positive=True)`` is a float field that accepts ``"40 mm"`` or
 a bare SI number, rejects NaN and wrong dimensions, and converts to SI once.
 ``parse_model`` turns pydantic's errors into one ``InputError`` line naming
-the file and the field, as CONTRACTS.md asks.
+the file and the field, as docs/formats.md states.
 """
 from __future__ import annotations
 
@@ -50,7 +50,7 @@ def Qty(kind: str, *, positive: bool = False, nonnegative: bool = False):
 
 def Bounded(low: float, high: float):
     """A plain model coefficient (no unit) that must lie in [low, high]:
-    outside it the simulations overflow or never finish (issue 14: a rig's
+    outside it the simulations overflow or never finish (a rig's
     alpha = 1e300 crashed diagnose, beta = 1e12 ran for minutes)."""
     return Annotated[float, Field(ge=low, le=high, allow_inf_nan=False)]
 

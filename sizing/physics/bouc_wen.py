@@ -2,7 +2,7 @@
 
 Source: ARL-TR-10251 eqs. 1-2, the seed's transcription of Zhu and Wang,
 Sens. Actuators A 181 (2012) 51-60. Implemented exactly as the seed writes it
-(PHYSICS-NOTES.md item 6):
+(docs/models.md, corrections to the seed, item 6):
 
     x_free = d33 v + h                                            (1)
     dh/dt  = {alpha - [beta sgn(v' h) + gamma] |h|^n} v'
@@ -79,7 +79,7 @@ def from_groups(groups: np.ndarray, nominal_stroke: float, max_voltage: float) -
 def transfer(params: BoucWen, source_stroke: float, source_vmax: float,
              target_stroke: float, target_vmax: float) -> BoucWen:
     """Carry measured parameters from one stack to another of similar
-    material (PHYSICS-NOTES item 4): same dimensionless loop, new scales."""
+    material (docs/models.md, corrections to the seed, item 4): same dimensionless loop, new scales."""
     groups = normalised_groups(params, source_stroke, source_vmax)
     return from_groups(groups, target_stroke, target_vmax)
 
@@ -153,8 +153,8 @@ def free_displacement(t: np.ndarray, v: np.ndarray, params, h0=0.0) -> np.ndarra
 
 
 # The delta term of eq. 2 integrates delta v sgn(v') over time, so a ramp's
-# end stroke depends on how long the ramp takes (PHYSICS-NOTES, second
-# round): the transferred model matches the datasheet stroke at one time
+# end stroke depends on how long the ramp takes (docs/models.md, piezo
+# stack): the transferred model matches the datasheet stroke at one time
 # scale only. These two functions say which, and what a design's own ramp gives.
 def ramp_stroke(params: BoucWen, v_max: float, ramp_time: float, points: int = 4000) -> float:
     """Free stroke (m) at the end of a linear ramp 0 -> v_max lasting ramp_time (s)."""

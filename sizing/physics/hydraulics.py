@@ -35,7 +35,7 @@ def expansion_loss_coefficient(ratio):
 
 def pressure_drop(narrow_velocity, density, ratio, k_contract, k_expand):
     """p_wide - p_narrow for flow at narrow-piston velocity u (Pa), eq. 8-9
-    with u|u| (PHYSICS-NOTES item 5) so that on return the loss resists the
+    with u|u| (docs/models.md, corrections to the seed, item 5) so that on return the loss resists the
     motion, and the loss coefficient of the flow's own direction."""
     u = np.asarray(narrow_velocity)
     k = np.where(u >= 0.0, k_contract, k_expand)

@@ -1,5 +1,5 @@
-"""The thermal budget of a sealed piezohydraulic actuator (PHYSICS-NOTES,
-"100 degC" and "Second round: thermal budget").
+"""The thermal budget of a sealed piezohydraulic actuator (docs/models.md,
+"Thermal budget").
 
 Heated from the fill temperature by dT, each part moves the output
 (positive: the output extends). Geometry, from the stack base: base plate,

@@ -114,7 +114,7 @@ def render(result: dict, kind: str, toml: str) -> str:
     roles = {t["name"]: t["role"] for t in result["traces"]}
     rows = [[n, roles.get(n, "")] + [_pct(summary[m]["nrmse_runs"].get(n)) for m in models] for n in names]
     parts.append("<h3>NRMSE per run</h3>" + _table(rows, ["run", "role"] + models))
-    parts.append("<p>NRMSE = RMS(measured - fitted) / (max - min of measured), CONTRACTS.md. "
+    parts.append("<p>NRMSE = RMS(measured - fitted) / (max - min of measured), docs/formats.md. "
                  f"The chosen model (in the TOML) is <b>{html.escape(result['model'])}</b>.</p>")
     if kind == "hysteresis":
         parts.append(_hysteresis_sections(result))

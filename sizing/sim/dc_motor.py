@@ -4,7 +4,7 @@ A discrete PID at the controller rate (1.25 kHz in the seed) sets the motor
 current from the reference and the measured position; the current is held
 over each period and clipped at the current limit (conditional integration
 stops wind-up). The drive's bus voltage U adds the back-EMF ceiling
-(PHYSICS-NOTES, second round): when the held current would need more than U
+(docs/models.md, DC motor actuator): when the held current would need more than U
 (R i + k_e omega > U) the motor is voltage-driven for that period,
 i = (U - k_e omega) / R, which turns eq. 13 into the same linear form with
 the pole c1 - c2 k_e / R and input U / R; so the speed can never pass
@@ -16,7 +16,7 @@ proportional term may act on the measurement instead of the error (I-PD,
 zero-order-hold solution of eq. 13 (eq. 14 for the velocity), with the load
 current of PHYSICS-NOTES and optional Coulomb friction (Karnopp: a piston at
 rest stays at rest while the net current is inside the friction band).
-Two forms of the diagnose library (issue 10) add fields, inert at their
+Two forms of the diagnose library add fields, inert at their
 defaults (the traces are then bit-identical): ``drive_current_limit``, a
 limit of the drive on the actual motor current that the controller does not
 know (the motor gets the clipped current, the recorded ``current_A`` is the

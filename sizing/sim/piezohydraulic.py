@@ -1,6 +1,6 @@
 """Dynamic simulation of the piezohydraulic actuator, many candidates at once.
 
-Model (seed eqs. 1-10 with the corrections of PHYSICS-NOTES):
+Model (seed eqs. 1-10 with the corrections of docs/models.md):
 - stacks: non-symmetric Bouc-Wen free displacement (eqs. 1-2) behind the
   stack stiffness (eq. 3), optionally with first-order creep and one-sided
   contact (no return mechanism: stacks push but cannot pull);
@@ -11,10 +11,10 @@ Model (seed eqs. 1-10 with the corrections of PHYSICS-NOTES):
 - oil: a linear spring p = beta (A_w x - A_n y - V_leak) / V0 (fluid
   compliance), with optional leakage V_leak' = G p;
 - narrow (output) piston: a mass with the flow loss of eqs. 8-9 written
-  u|u| and direction-aware (PHYSICS-NOTES item 5), viscous damping, Karnopp
+  u|u| and direction-aware (docs/models.md, corrections to the seed, item 5), viscous damping, Karnopp
   stick-slip seal friction (breakaway > running) whose running value grows
   with the chamber pressure, F = F_0 + c_p |p| (pressure-dependent Karnopp
-  friction, issue 9; both seals), and the load
+  friction; both seals), and the load
   F_load = F0 + k_L y.
 
 Integration: semi-implicit Euler at a fixed step chosen per candidate from
@@ -22,7 +22,7 @@ its fastest mode (dt <= 0.2 / omega_max). A velocity that would change sign
 inside a step under friction is set to zero and the piston sticks, which is
 what keeps stick-slip free of chattering. The initial state is the static
 equilibrium under the load with zero friction; positions are reported from
-that rest point (CONTRACTS.md, "Test campaigns").
+that rest point (docs/formats.md, "Test campaigns").
 """
 from __future__ import annotations
 
@@ -92,7 +92,7 @@ class PiezoHydraulicModel(ParameterSet):
     dt_max: object = 5e-5
     wide_friction_pressure: object = 0.0     # N/Pa: running friction grows with |p| (seals at pressure)
     narrow_friction_pressure: object = 0.0
-    # Widened forms of the effects (issue 10); each is off at its default,
+    # Further forms of the diagnosis effects; each is off at its default,
     # and then the kernel runs the nominal path unchanged.
     narrow_stribeck_velocity: object = 0.0   # m/s: Stribeck rise of the output seal (0: Karnopp)
     log_creep: object = 0.0                  # creep per decade of time, fraction of the free stroke

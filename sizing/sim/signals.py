@@ -44,7 +44,7 @@ def excitation_cutoff(t: np.ndarray, x: np.ndarray, harmonics: float = 20.0, flo
 
 
 def nrmse(measured: np.ndarray, simulated: np.ndarray) -> float:
-    """RMS(measured - simulated) / (max - min of measured) (CONTRACTS.md)."""
+    """RMS(measured - simulated) / (max - min of measured) (docs/formats.md)."""
     measured = np.asarray(measured, float)
     span = float(np.max(measured) - np.min(measured))
     rms = float(np.sqrt(np.mean((measured - np.asarray(simulated, float)) ** 2)))

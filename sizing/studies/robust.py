@@ -1,5 +1,5 @@
 """``sizing robust``: probability of compliance of the best designs under
-part tolerances (CONTRACTS.md, second round).
+part tolerances (docs/formats.md, robust.json).
 
 For each of the K best designs of ``sizing solve`` (piezohydraulic, and DC
 designs sized from parts), N samples of the tolerated catalog fields that

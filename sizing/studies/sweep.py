@@ -1,5 +1,5 @@
 """``sizing sweep``: a full ``sizing solve`` at every point of a grid over
-requirement fields (CONTRACTS.md, second round).
+requirement fields (docs/formats.md, sweep.json).
 
 ``--vary FIELD=FROM..TO:N``: FIELD is a key of [requirements] (``stroke``)
 or ``table.key`` of another table (``options.wide_gap``); FROM and TO are

@@ -13,7 +13,7 @@ from .base import Effect, Param
 PIEZO = (seal_stick_slip.EFFECT, fluid_compressibility.EFFECT, viscous_damping.EFFECT,
          leakage.EFFECT, stack_creep.EFFECT, amplifier_slew_limit.EFFECT, no_return.EFFECT,
          sensor_delay.PIEZO, sensor_vibration.PIEZO, sensor_vibration.PIEZO_SINUSOID,
-         # widened forms (issue 10): alternatives of the families above
+         # further forms: alternatives of the families above
          seal_stick_slip.LUGRE, stack_creep.LOG, fluid_compressibility.AIR, leakage.ORIFICE,
          amplifier_slew_limit.BANDWIDTH)
 DC = (current_saturation.COMMAND, current_saturation.DRIVE, coulomb_friction.COULOMB, coulomb_friction.STRIBECK,

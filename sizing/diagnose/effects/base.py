@@ -8,7 +8,7 @@ An effect acts in one or both of two places:
 - ``measure``: the measurement path, a pure post-processing of one simulated
   position trace (sensor delay, backlash, sensor vibration).
 Effects are plain data plus these two hooks (scikit-learn habit: bounds are
-declared as data). An effect ``name`` is a family (CONTRACTS.md names);
+declared as data). An effect ``name`` is a family (the names of docs/formats.md);
 the library may hold several ``form``s of one family, alternatives that the
 attribution fits side by side and reports under the family name.
 """
@@ -48,7 +48,7 @@ class Param:
 class Effect:
     """A candidate unmodelled effect (see the module docstring)."""
 
-    name: str                        # the family (CONTRACTS.md effect name); several forms may share it
+    name: str                        # the family (effect name of docs/formats.md); several forms may share it
     technology: str                  # "piezohydraulic" or "dc_motor"
     params: tuple = ()
     sizes: tuple = ()                # two realistic sizes: ({param: value}, {param: value})

@@ -147,7 +147,7 @@ SINUSOID = SensorSinusoid(
     name="sensor_vibration", technology="dc_motor", form="sinusoid",
     params=(Param("frequency_Hz", 2.0, 500.0, log=True, doc="frequency of the additive disturbance"),),
     sizes=({"frequency_Hz": 50.0, "amplitude_of_span": 0.01}, {"frequency_Hz": 23.0, "amplitude_of_span": 0.02}),
-    source="issue 10 item 3: an additive sinusoid of unknown frequency and phase (pump, fan, mains pick-up); "
+    source="an additive sinusoid of unknown frequency and phase (pump, fan, mains pick-up); "
            "frequency from the residual spectrum, amplitude and phase by linear least squares per run",
     post=True, extra={"fd_step": 1e-4})
 

@@ -159,7 +159,7 @@ def test_amplifier_bandwidth_and_slew_by_hand():
 def test_every_form_is_an_alternative_of_a_contract_family():
     names = {"seal_stick_slip", "fluid_compressibility", "viscous_damping", "leakage", "stack_creep",
              "amplifier_slew_limit", "no_return", "sensor_delay",
-             "sensor_vibration"}        # beyond CONTRACTS' list: a sensor on a bracket rings on any rig
+             "sensor_vibration"}        # beyond the list of docs/formats.md: a sensor on a bracket rings on any rig
     forms = {(e.name, e.form) for e in library("piezohydraulic")}
     assert {n for n, _ in forms} == names
     assert {("seal_stick_slip", "lugre"), ("stack_creep", "log"), ("fluid_compressibility", "air"),

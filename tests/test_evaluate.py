@@ -13,7 +13,7 @@ def test_table2_full_scale_reproduces():
     result = api.evaluate(STUDIES / "seed-table2-full-scale.toml")
     assert result["static"]["free_stroke_m"] == pytest.approx(0.0499, rel=0.01)
     # issue 9: blocked_force_N now carries the whole force path in series
-    # (CONTRACTS second round); the seed's ideal n k_s d33 V / R is kept as
+    # (docs/formats.md, force_path); the seed's ideal n k_s d33 V / R is kept as
     # blocked_force_ideal_N and must still reproduce Table 2.
     assert result["static"]["blocked_force_ideal_N"] == pytest.approx(2810, rel=0.01)
     assert result["static"]["blocked_force_N"] < result["static"]["blocked_force_ideal_N"]

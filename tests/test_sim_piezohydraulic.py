@@ -40,7 +40,7 @@ def test_linear_frictionless_stroke_is_R_d33_V():
 
 
 def test_constant_load_does_not_change_travel_from_loaded_rest():
-    """The model starts at static equilibrium under the load (CONTRACTS)."""
+    """The model starts at static equilibrium under the load (docs/formats.md)."""
     t, v = slow_ramp()
     out = simulate(prototype(load_force=np.array([0.0, 30.0])), t, v)
     y = out["position_m"]

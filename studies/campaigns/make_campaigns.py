@@ -2,7 +2,7 @@
 "measured" data, seed 20261122 for the noise).
 
 - piezo-prototype/: the seed's Table 3 prototype (rig.toml as in
-  CONTRACTS.md), a ramp run and a steps run, with seal stick-slip injected
+  docs/formats.md), a ramp run and a steps run, with seal stick-slip injected
   (3 N running friction on the output seal, breakaway 2x: the stepped
   response and the ~0.5 mm short stroke of the first prototype, seed sec. 4).
 - dc-motor/: the seed's Ultra Motion actuator (sec. 3; PID gains of the

@@ -41,7 +41,7 @@ def test_mean_deflection_by_numerical_integration(edge):
     mean = volume / (math.pi * a**2)
     assert mean / w(0.0) == pytest.approx(float(structure.mean_deflection_factor(nu, edge)), rel=1e-10)
     t = (12 * (1 - nu**2) * D / E_AL) ** (1 / 3)
-    k = structure.plate_stiffness(a, t, E_AL, nu, edge)
+    k = structure.plate_stiffness(a, t, E_AL, nu, edge, model="kirchhoff")
     assert k == pytest.approx(q * math.pi * a**2 / mean, rel=1e-9)
 
 
@@ -70,8 +70,8 @@ def test_reviewers_end_cap_figures():
     simply supported k = clamped x (1 + nu) / (7 + nu) = 2.118e10 x 1.33 / 7.33 = 3.84e9 N/m."""
     D = 68.9e9 * 0.054**3 / (12 * (1 - 0.33**2))
     assert D == pytest.approx(1.0146e6, rel=1e-3)
-    assert structure.plate_stiffness(0.17, 0.054, E_AL, NU_AL, "clamped") == pytest.approx(2.1e10, rel=0.02)
-    assert structure.plate_stiffness(0.17, 0.054, E_AL, NU_AL) == pytest.approx(3.9e9, rel=0.02)
+    assert structure.plate_stiffness(0.17, 0.054, E_AL, NU_AL, "clamped", model="kirchhoff") == pytest.approx(2.1e10, rel=0.02)
+    assert structure.plate_stiffness(0.17, 0.054, E_AL, NU_AL, model="kirchhoff") == pytest.approx(3.9e9, rel=0.02)
 
 
 def test_blocked_force_with_the_cap_in_series():
@@ -82,7 +82,7 @@ def test_blocked_force_with_the_cap_in_series():
     k_s = 9 * 4.33e8
     for edge, expected in (("simply_supported", 3.897e9 * 3.83e9 / (3.897e9 + 3.83e9)),
                            ("clamped", 3.897e9 * 2.11e10 / (3.897e9 + 2.11e10))):
-        k = structure.series(k_s, structure.plate_stiffness(0.17, 0.054, E_AL, NU_AL, edge))
+        k = structure.series(k_s, structure.plate_stiffness(0.17, 0.054, E_AL, NU_AL, edge, model="kirchhoff"))
         assert k == pytest.approx(expected, rel=0.01)
     ideal = k_s * 180e-6 / 233
     assert ideal == pytest.approx(3010, rel=1e-3)
@@ -150,3 +150,68 @@ def test_surface_tip_equivalent_mass():
     inertia, _ = integrate.quad(lambda r: r**2 * rho * b * t, 0.0, c)
     assert load.tip_equivalent_mass(b, c, t, rho) == pytest.approx(inertia / c**2, rel=1e-12)
     assert load.tip_equivalent_mass(b, c, t) == pytest.approx(0.1383, abs=5e-4)
+
+
+# --- thick plates: Reissner-Mindlin shear ------------------------------------
+def test_mindlin_centre_deflection_ratio_matches_the_published_table():
+    """First-order shear deformation, clamped circular plate under uniform
+    load: w_M(0) / w_K(0) = 1 + (8/3) (t/a)^2 / (k (1 - nu)) from
+    w_M = q a^4/(64 D) + q a^2/(4 k G t). Reddy (Theory and Analysis of
+    Elastic Plates and Shells, 2nd ed., axisymmetric FSDT table, nu = 0.3,
+    k = 5/6) lists 1.0457 at t/a = 0.1 and 1.1829 at t/a = 0.2."""
+    q, a, nu, E = 1e6, 0.1, 0.3, 70e9
+    for t_over_a, published in ((0.1, 1.0457), (0.2, 1.1829)):
+        t = t_over_a * a
+        bending = structure.plate_centre_deflection(q, a, t, E, nu, edge="clamped")
+        shear = structure.plate_shear_centre_deflection(q, a, t, E, nu)
+        assert (bending + shear) / bending == pytest.approx(published, abs=1e-4)
+
+
+def test_mindlin_roark_shear_coefficient():
+    """Roark 7th ed. sec. 11.12: the shear deflection of a plate under uniform
+    load over its whole face is K_sa q a^2 / (t G), K_sa = 0.30, both edges."""
+    q, a, t, E, nu = 2e6, 0.12, 0.03, 68.9e9, 0.33
+    G = E / (2 * (1 + nu))
+    assert structure.plate_shear_centre_deflection(q, a, t, E, nu) == pytest.approx(0.30 * q * a**2 / (t * G), rel=1e-12)
+
+
+@pytest.mark.parametrize("edge", ["simply_supported", "clamped"])
+def test_mindlin_stiffness_by_numerical_integration(edge):
+    """The plate's stiffness is q pi a^2 over the mean of w_K(r) + w_s(r),
+    w_s = q (a^2 - r^2) / (4 k G t), integrated numerically, below t/a = 0.5."""
+    q, a, nu, E = 2e6, 0.1, NU_AL, E_AL
+    G = E / (2 * (1 + nu))
+    for t_over_a in (0.05, 0.2, 0.45):
+        t = t_over_a * a
+        D = E * t**3 / (12 * (1 - nu**2))
+        wk = (lambda r: w_clamped(r, q, a, D)) if edge == "clamped" else (lambda r: w_simply(r, q, a, D, nu))
+        volume, _ = integrate.quad(lambda r: (wk(r) + q * (a**2 - r**2) / (4 * 5 / 6 * G * t)) * 2 * math.pi * r, 0, a)
+        k = structure.plate_stiffness(a, t, E, nu, edge)
+        assert k == pytest.approx(q * math.pi * a**2 / (volume / (math.pi * a**2)), rel=0.05)
+        assert k == pytest.approx(q * math.pi * a**2 / (volume / (math.pi * a**2)), rel=1e-8)
+
+
+def test_the_reviewers_thick_cap_loses_stiffness_to_shear():
+    """PHYSICS-NOTES (third review): at t/a of order one the thin-plate figure
+    is far too stiff. At t/a = 1.2 the shear term is, by hand,
+    (1/(8 pi k G t)) / (c a^2 / D) = D / (8 pi k G t c a^2) with
+    c = (7+nu)/(192 pi (1+nu)), which reduces to
+    (t/a)^2 4 (1+nu) / (k (1-nu) (7+nu)) = 1.44 x 5.32 / 4.0925 = 1.872 for
+    6061-T6 (nu 0.33): the shear compliance outweighs the bending one."""
+    a, E, nu = 0.1, E_AL, NU_AL
+    t = 1.2 * a
+    k_thin = structure.plate_stiffness(a, t, E, nu, model="kirchhoff")
+    k_thick = structure.plate_stiffness(a, t, E, nu)
+    D = E * t**3 / (12 * (1 - nu**2))
+    c = (7 + nu) / (192 * math.pi * (1 + nu))
+    ratio = (D / (8 * math.pi * 5 / 6 * E / (2 * (1 + nu)) * t)) / (c * a**2)
+    assert k_thin / k_thick == pytest.approx(1 + ratio, rel=1e-9)
+    assert ratio == pytest.approx(1.872, rel=1e-3)
+    assert not structure.plate_in_range(t, a) and structure.plate_in_range(0.5 * a, a)
+
+
+def test_mindlin_thickness_rule_inverts_the_stiffness():
+    for k in (1e8, 1e10, 1e12):
+        t = structure.plate_thickness_for_stiffness(k, 0.15, E_AL, NU_AL)
+        assert structure.plate_stiffness(0.15, t, E_AL, NU_AL) == pytest.approx(k, rel=1e-9)
+        assert t > structure.plate_thickness_for_stiffness(k, 0.15, E_AL, NU_AL, model="kirchhoff")

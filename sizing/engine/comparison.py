@@ -6,6 +6,8 @@ from __future__ import annotations
 
 import math
 
+from .flip import flip
+
 OBJECTIVE_KEYS = {"mass": "mass_kg", "cost": "cost_usd", "volume": "volume_m3", "power": "power_W"}
 STAGE_ORDER = {"pruned": 0, "gp_failed": 0, "gp_infeasible": 1, "sized": 2, "simulated": 3}
 
@@ -35,7 +37,7 @@ def _one_miss(members, keys):
     return min(ones, key=lambda c: tuple(c["metrics"][k] for k in keys)) if ones else None
 
 
-def technology_comparison(req, candidates: list[dict]) -> dict:
+def technology_comparison(req, candidates: list[dict], catalog=None) -> dict:
     """{technology: {best, feasible, binding, binding_margin, metrics}, text}."""
     keys = [OBJECTIVE_KEYS[k] for k in req.objectives.minimize]
     out, lines = {}, []
@@ -48,6 +50,10 @@ def technology_comparison(req, candidates: list[dict]) -> dict:
         out[tech] = {"best": best["id"], "feasible": ok, "binding": best.get("driver"), "binding_margin": m,
                      "metrics": {k: best["metrics"].get(k) for k in keys},
                      "n_feasible": sum(1 for c in members if c["feasible"])}
+        out[tech]["flip"] = flip(req, catalog, members)
+        rests = best.get("rests_on_assumed") or []
+        out[tech]["rests_on_assumed"] = rests
+        out[tech]["deciding_assumed"] = [f"{r['part']}.{r['field']}" for r in rests if r.get("decides")]
         near = None if ok else _one_miss(members, keys)
         if near is not None:
             out[tech]["one_miss"] = {"id": near["id"], "misses": near["driver"],
@@ -63,6 +69,9 @@ def technology_comparison(req, candidates: list[dict]) -> dict:
                 lines.append(f"the best {label} design that misses only one check, {near['id']} "
                              f"({', '.join(_fmt(k, near['metrics'].get(k)) for k in keys)}), misses "
                              f"{near['driver']}")
+    for tech, label in (("piezohydraulic", "piezohydraulic"), ("dc_motor", "DC motor")):
+        if tech in out:
+            lines.append(f"{label}: " + _rests_text(out[tech]) + "; " + _flip_text(out[tech]["flip"]))
     if len(out) == 2:
         a, b = out["piezohydraulic"], out["dc_motor"]
         ma, mb = (t.get("one_miss", t)["metrics"] for t in (a, b))   # an infeasible side: its one-miss design
@@ -76,6 +85,23 @@ def technology_comparison(req, candidates: list[dict]) -> dict:
         stand_in = " (an infeasible side counted by its one-miss design)" if "one_miss" in a or "one_miss" in b else ""
         lines.append(f"piezohydraulic best over DC best ({tag}{stand_in}): " + (", ".join(ratios) or "not comparable"))
     return {"technologies": out, "text": ". ".join(lines) + ("." if lines else "")}
+
+
+def _rests_text(entry) -> str:
+    rests, deciding = entry["rests_on_assumed"], entry["deciding_assumed"]
+    if not rests:
+        return "its best design rests on no assumed catalog value"
+    text = f"its best design rests on {len(rests)} assumed catalog values"
+    if deciding:
+        shown = ", ".join(deciding[:4]) + (" ..." if len(deciding) > 4 else "")
+        text += f", {len(deciding)} of them in its binding margin ({shown})"
+    return text
+
+
+def _flip_text(f) -> str:
+    if f is None:
+        return "no single change of a requirement or catalog value is known to flip its verdict"
+    return f"what would flip its verdict: {f['what']} from {f['from']:.4g} to {f['to']:.4g} ({f['relative_change']:.1%})"
 
 
 def _fmt(key, value) -> str:

@@ -38,7 +38,16 @@ import cvxpy as cp
 from ..physics import geometry, structure
 from ..physics.stack import LARGE_SIGNAL_CAPACITANCE_FACTOR
 
-CONSTRAINTS = ("stroke", "blocked_force", "pressure", "drive_current", "natural_frequency")
+CONSTRAINTS = ("stroke", "blocked_force", "pressure", "drive_current", "natural_frequency",
+               "structure_out_of_range", "envelope_length", "envelope_diameter", "envelope_mass")
+# what a binding constraint rules a design out as (never ranked): the rest are missed requirements
+RULED_OUT_BY = {"structure_out_of_range": "structure_out_of_range", "envelope_length": "envelope",
+                "envelope_diameter": "envelope", "envelope_mass": "envelope"}
+RELAXED_MISS = 1.25     # the closest bounded design of infeasible parts: 25 % more miss (log) than the infimum
+NO_LIMIT = 1e6          # stands in for an envelope dimension that is not given (m)
+# assumed: when the envelope gives no mass, no control-surface actuator is
+# allowed to weigh more than ten tonnes (the search's plausibility ceiling)
+DEFAULT_MAX_MASS = 1e4  # kg
 MIN_RATIO = 1.5
 FEASIBLE_SLACK = 1.0 + 1e-6
 SOLVER = "CLARABEL"
@@ -56,7 +65,7 @@ class SizingInput:
     force: float                # required blocked force, N
     stroke: float               # required stroke, m
     bulk_modulus: float         # Pa, at temperature
-    wide_gap: float             # m
+    wide_gap: float             # m, smallest wide-chamber gap allowed (the option; the gap is sized)
     pressure_rating: float      # Pa
     natural_frequency: float    # Hz, lowest accepted
     stroke_time: float          # s, stroke / speed
@@ -68,7 +77,7 @@ class SizingInput:
     fixed_volume: float         # m^3: stacks envelope
     oil_density: float          # kg/m^3
     oil_cost: float             # USD/m^3
-    # force path (issue 9): structure material, stack column, seals at pressure, geometry
+    # force path: structure material, stack column, seals at pressure, geometry
     youngs_modulus: float = 68.9e9      # Pa, caps, base plate and frame
     poisson: float = 0.33
     material_density: float = 2700.0    # kg/m^3
@@ -81,6 +90,10 @@ class SizingInput:
     seal_f0: float = 0.0                # N/m, seal running friction per metre at zero pressure
     seal_cp: float = 0.0                # N/(m Pa)
     surface_mass: float = 0.0           # kg, tip-equivalent mass of the surface
+    gap_allowance: float = 0.6e-3       # m, wide gap over the stack stroke: clearance + tolerance
+    max_length: float = NO_LIMIT        # m, envelope
+    max_diameter: float = NO_LIMIT      # m, envelope (outer diameter of the wide cylinder)
+    max_mass: float = DEFAULT_MAX_MASS  # kg, envelope
 
 
 @dataclass
@@ -91,6 +104,7 @@ class SizingResult:
     voltage_fraction: float
     cap_thickness: float = math.nan
     frame_area: float = math.nan
+    wide_gap: float = math.nan
     slack: dict = field(default_factory=dict)     # requirement -> phase-1 slack (1: met)
     binding: list = field(default_factory=list)   # requirements that cannot be met, worst first
     status: str = ""
@@ -98,6 +112,12 @@ class SizingResult:
     @property
     def driver(self) -> str | None:
         return self.binding[0] if self.binding else None
+
+    @property
+    def ruled_out(self) -> str | None:
+        """``structure_out_of_range`` or ``envelope`` when no design of these
+        parts fits the members' validity or the envelope; else None."""
+        return next((RULED_OUT_BY[k] for k in self.binding if k in RULED_OUT_BY), None)
 
 
 class GPSizer:
@@ -110,16 +130,17 @@ class GPSizer:
         self.v = cp.Variable(pos=True, name="v")
         self.t = cp.Variable(pos=True, name="t_cap")
         self.Af = cp.Variable(pos=True, name="A_frame")
+        self.g = cp.Variable(pos=True, name="gap")
         # epigraph variables: keep the posynomials short (one cone per term)
         self.C = cp.Variable(pos=True, name="compliance")
         self.Fs = cp.Variable(pos=True, name="force_with_seals")
         self.M = cp.Variable(pos=True, name="reflected_mass")
         names = ["nk", "x0", "V0", "vmax", "F", "S", "beta", "g", "p", "w2", "cur", "m0", "c0", "vol0",
                  "rho", "coil", "pw", "E", "pc", "ps", "sig", "Ls", "knk", "rhom", "cm", "Apack", "cacc",
-                 "f0", "fc", "msurf"]
+                 "f0", "fc", "msurf", "sh", "gmin", "gfloor", "tv", "Lmax", "Dmax", "Mmax", "wall"]
         self.par = {k: cp.Parameter(pos=True, name=k) for k in names}
         terms = self._constraint_terms()
-        bounds = ([self.v <= self.par["vmax"], MIN_RATIO / self.R <= 1] + self._structure_bounds()
+        bounds = ([self.v <= self.par["vmax"], MIN_RATIO / self.R <= 1] + self._structure_bounds() + self._gap_bounds()
                   + [self._compliance() / self.C <= 1, (self.par["F"] + self._seal_force()) / self.Fs <= 1,
                      self._reflected() / self.M <= 1])
         self.problem = cp.Problem(cp.Minimize(self._objective()), [t <= 1 for t in terms.values()] + bounds)
@@ -129,7 +150,12 @@ class GPSizer:
         for s in self.slack.values():
             obj1 = obj1 * s
         self.phase1 = cp.Problem(cp.Minimize(obj1), phase1 + bounds)
-        assert self.problem.is_dgp(dpp=True) and self.phase1.is_dgp(dpp=True)
+        # the closest design: the least objective with each requirement missed
+        # by no more than phase 1 had to (bounded geometry for infeasible parts)
+        self.allowed = {k: cp.Parameter(pos=True, name=f"allow_{k}") for k in CONSTRAINTS}
+        relaxed = [terms[k] / self.allowed[k] <= 1 for k in CONSTRAINTS]
+        self.relaxed = cp.Problem(cp.Minimize(self._objective()), relaxed + bounds)
+        assert self.problem.is_dgp(dpp=True) and self.phase1.is_dgp(dpp=True) and self.relaxed.is_dgp(dpp=True)
 
     # expressions ------------------------------------------------------
     def _geometry(self):
@@ -141,7 +167,25 @@ class GPSizer:
 
     def _frame_length(self):
         P = self.par
-        return P["Ls"] + geometry.plate_thickness(self.A, P["p"]) + P["g"]
+        return P["Ls"] + geometry.plate_thickness(self.A, P["p"]) + self.g
+
+    def _gap_bounds(self) -> list:
+        """The wide gap covers the stack stroke plus clearance and tolerance,
+        and is at least the requirements' floor."""
+        P = self.par
+        x, _, _ = self._geometry()
+        return [(P["gmin"] + x) / self.g <= 1, P["gfloor"] / self.g <= 1]
+
+    def _length(self):
+        """Overall length: base plate, frame (stacks, wide piston, gap), end
+        cap, narrow bore over the output stroke and the rod's seal land."""
+        _, _, stroke = self._geometry()
+        return 2 * self.t + self._frame_length() + stroke + geometry.ROD_EXTRA_LENGTH
+
+    def _outer_diameter(self):
+        """Outer diameter of the wide cylinder: bore plus two thin walls."""
+        P = self.par
+        return P["wall"] * self.A ** 0.5 + 2 * geometry.MIN_WALL
 
     def _structure_bounds(self) -> list:
         """Caps and frame: within the allowable stress at the stack force and
@@ -160,8 +204,8 @@ class GPSizer:
         P, A, t = self.par, self.A, self.t
         x, _, _ = self._geometry()
         t_p = geometry.plate_thickness(A, P["p"])
-        return (1 / P["nk"] + 2 * P["pc"] * A / t**3 + self._frame_length() / (P["E"] * self.Af)
-                + t_p / (ALUMINIUM_E * A) + (P["g"] + x) / (P["beta"] * A) + P["cacc"] / A**2)
+        return (1 / P["nk"] + 2 * P["pc"] * A / t**3 + 2 * P["sh"] / t + self._frame_length() / (P["E"] * self.Af)
+                + t_p / (ALUMINIUM_E * A) + (self.g + x) / (P["beta"] * A) + P["cacc"] / A**2)
 
     def _seal_force(self):
         """Seal friction at the output at the blocked-force pressure F/A_n:
@@ -189,18 +233,34 @@ class GPSizer:
             "pressure": P["nk"] * x / (A * P["p"]),
             "drive_current": P["cur"] / R,
             "natural_frequency": P["w2"] * reflected * compliance,
+            "structure_out_of_range": P["tv"] * self.t * A ** -0.5,
+            "envelope_length": self._length() / P["Lmax"],
+            "envelope_diameter": self._outer_diameter() / P["Dmax"],
+            "envelope_mass": self._mass() / P["Mmax"],
         }
 
-    def _objective(self):
-        P, R, A, v = self.par, self.R, self.A, self.v
+    def _parts(self):
+        """Metal of the hydraulic stage, its oil and the structure (posynomials)."""
+        P, R, A = self.par, self.R, self.A
         x, narrow, stroke = self._geometry()
-        p, g = P["p"], P["g"]
+        p, g = P["p"], self.g
         metal = (geometry.wide_piston_mass(A, p) + geometry.narrow_piston_mass(narrow, stroke)
                  + geometry.casing_mass(A, narrow, p, g, stroke))
         oil = A * g + narrow * stroke
         structure = P["rhom"] * (2 * A * self.t + self.Af * self._frame_length())
+        return metal, oil, structure
+
+    def _mass(self):
+        metal, oil, structure = self._parts()
+        return self.par["m0"] + metal + self.par["rho"] * oil + structure
+
+    def _objective(self):
+        P, R, A, v = self.par, self.R, self.A, self.v
+        x, narrow, stroke = self._geometry()
+        p, g = P["p"], self.g
+        metal, oil, structure = self._parts()
         exprs = {
-            "mass": P["m0"] + metal + P["rho"] * oil + structure,
+            "mass": self._mass(),
             "cost": P["c0"] + geometry.MACHINING_USD_PER_KG * metal + P["coil"] * oil + P["cm"] * structure,
             "volume": P["vol0"] + geometry.hydraulic_volume(A, narrow, p, g, stroke),
             "power": P["pw"] * v / R,
@@ -229,6 +289,11 @@ class GPSizer:
             "rhom": s.material_density, "cm": max(s.material_unit_cost, 1e-9), "Apack": s.packing_area,
             "cacc": max(s.accumulator_compliance, 1e-30), "f0": max(s.seal_f0, 1e-12),
             "fc": max(s.seal_cp * s.force * (1 + s.margin), 1e-12), "msurf": max(s.surface_mass, 1e-12),
+            "sh": float(structure.plate_shear_compliance(1.0, s.youngs_modulus, s.poisson)),
+            "gmin": max(s.gap_allowance, 1e-9), "gfloor": max(s.wide_gap, 1e-9),
+            "tv": math.sqrt(math.pi) / structure.MINDLIN_MAX_THICKNESS_RATIO,
+            "Lmax": s.max_length, "Dmax": s.max_diameter, "Mmax": s.max_mass,
+            "wall": 2 / math.sqrt(math.pi) * (1 + s.pressure_rating / geometry.DESIGN_STRESS),
         }
         for k, val in values.items():
             self.par[k].value = float(val)
@@ -239,8 +304,7 @@ class GPSizer:
         self.set(s)
         status = self._run(self.problem)
         if status in ("optimal", "optimal_inaccurate"):
-            return SizingResult(True, float(self.R.value), float(self.A.value), float(self.v.value),
-                                float(self.t.value), float(self.Af.value), status=status)
+            return SizingResult(True, *self._point(), status=status)
         status1 = self._run(self.phase1)
         if status1 not in ("optimal", "optimal_inaccurate"):
             return SizingResult(False, math.nan, math.nan, math.nan, status=f"phase 1 {status1}",
@@ -249,8 +313,19 @@ class GPSizer:
         binding = sorted((k for k in CONSTRAINTS if slack[k] > FEASIBLE_SLACK), key=lambda k: -slack[k])
         if not binding:       # phase 1 met everything: the first solve was a numerical failure
             binding = [max(slack, key=slack.get)]
-        return SizingResult(False, float(self.R.value), float(self.A.value), float(self.v.value),
-                            float(self.t.value), float(self.Af.value), slack=slack, binding=binding, status=status)
+        point = self._point()
+        # phase 1's least miss is often reached only as the geometry grows
+        # without bound (a stiffer path needs a larger bore, and so on): the
+        # closest design of bounded size misses each binding requirement by
+        # RELAXED_MISS times as much (in log terms) and is otherwise the optimum
+        for k in CONSTRAINTS:
+            self.allowed[k].value = max(slack[k], 1.0) ** (RELAXED_MISS if k in binding else 1.0) * FEASIBLE_SLACK
+        if self._run(self.relaxed) in ("optimal", "optimal_inaccurate"):
+            point = self._point()
+        return SizingResult(False, *point, slack=slack, binding=binding, status=status)
+
+    def _point(self) -> tuple:
+        return tuple(float(v.value) for v in (self.R, self.A, self.v, self.t, self.Af, self.g))
 
     @staticmethod
     def _run(problem: cp.Problem) -> str:

@@ -1,6 +1,6 @@
 """The force path of piezohydraulic candidates: every member between the
 stacks and the output as a spring in series, referred to the wide piston
-(CONTRACTS.md second round, ``force_path``), with its mass and cost.
+(docs/formats.md, ``force_path``), with its mass and cost.
 
 Order from the stack base: stacks, (thermal spacer), base plate, frame (tie
 rods), wide piston, oil column, (accumulator), end cap, narrow piston. The
@@ -10,7 +10,9 @@ are folded into the simulator's effective bulk modulus, so the simulated
 blocked force equals the static one.
 
 Plates: simply supported (the conservative edge; see physics/structure.py),
-with the clamped value reported beside it.
+with bending and shear (Reissner-Mindlin), the clamped value reported
+beside it; each states its model and its thickness over radius, which
+must stay within the model's validity (``structure.plate_in_range``).
 """
 from __future__ import annotations
 
@@ -101,7 +103,7 @@ def members(c) -> dict[str, dict[str, np.ndarray]]:
                    "cost": c.n_stacks * c.stack_cost},
         "spacer": {"stiffness": spacer, "mass": spacer_mass, "cost": spacer_mass * (c.spacer_cost + geometry.MACHINING_USD_PER_KG)},
         "base_plate": {"stiffness": plate, "stiffness_clamped": plate_clamped, "mass": plate_mass,
-                       "cost": plate_mass * unit, "thickness": c.cap_thickness},
+                       "cost": plate_mass * unit, "thickness": c.cap_thickness, "radius": a},
         "frame": {"stiffness": structure.rod_stiffness(c.mat_E, c.frame_area, L_f),
                   "mass": c.mat_density * c.frame_area * L_f, "cost": c.mat_density * c.frame_area * L_f * unit,
                   "length": L_f, "area": c.frame_area},
@@ -112,7 +114,7 @@ def members(c) -> dict[str, dict[str, np.ndarray]]:
         "compensator": {"stiffness": np.where(c.comp_kind == 1, c.comp_volume_stiffness * c.wide_area**2, inf),
                         "mass": c.comp_mass, "cost": c.comp_cost},
         "end_cap": {"stiffness": plate, "stiffness_clamped": plate_clamped, "mass": plate_mass,
-                    "cost": plate_mass * unit, "thickness": c.cap_thickness},
+                    "cost": plate_mass * unit, "thickness": c.cap_thickness, "radius": a},
         "narrow_piston": {"stiffness": c.ratio**2 * structure.rod_stiffness(ALUMINIUM_E, c.narrow_area, L_n),
                           "mass": c.narrow_mass, "cost": zero},
     }
@@ -154,6 +156,9 @@ def as_list(m: dict, i: int, material_id: str, compensator_id: str | None,
             row["stiffness_clamped_N_m"] = float(np.asarray(m[name]["stiffness_clamped"])[i])
             row["thickness_m"] = float(np.asarray(m[name]["thickness"])[i])
             row["edge"] = "simply_supported"
+            row["model"] = structure.PLATE_MODEL
+            row["thickness_to_radius"] = float(structure.thickness_ratio(row["thickness_m"], m[name]["radius"][i]))
+            row["model_valid_to_thickness_to_radius"] = structure.MINDLIN_MAX_THICKNESS_RATIO
         if name == "frame":
             row["length_m"] = float(np.asarray(m[name]["length"])[i])
             row["area_m2"] = float(np.asarray(m[name]["area"])[i])

@@ -60,7 +60,7 @@ class Candidates:
     seal_cost: np.ndarray
     fluid_cost: np.ndarray
     no_return: np.ndarray
-    # second round: seals at pressure, force path, thermal budget, geometry
+    # seals at pressure, force path, thermal budget, geometry
     wide_friction_cp: np.ndarray    # N/Pa: running friction added per Pa of chamber pressure
     narrow_friction_cp: np.ndarray
     mat_E: np.ndarray               # structure material (caps, base plate, frame, casing)
@@ -87,7 +87,12 @@ class Candidates:
     comp_cost: np.ndarray
     surface_mass: np.ndarray        # kg, tip-equivalent mass of the driven surface (I / c^2)
     delta_T: np.ndarray             # K, fill temperature to the required temperature
-    amp_continuous: np.ndarray      # A, amplifier continuous current (inf: none)
+    amp_continuous: np.ndarray      # A, amplifier continuous current per unit (inf: none)
+    amp_peak_duration: np.ndarray   # s, how long one unit may draw amp_max_current
+    amp_recovery: np.ndarray        # fraction of C V^2 a cycle the drive returns
+    amp_units: np.ndarray           # units in parallel (amp_* ratings, mass and cost are per unit)
+    loss_factor: np.ndarray         # small-signal tan(delta) of the stack
+    stack_square: np.ndarray        # 1: square section, 0: round
 
     @classmethod
     def from_rows(cls, rows: list[dict]) -> "Candidates":
@@ -124,7 +129,7 @@ class Candidates:
     def reflected_mass(self):
         """Mass at the wide piston (kg): the wide piston plus R^2 x (narrow
         piston, the oil in the narrow bore, the surface's tip-equivalent
-        mass) (PHYSICS-NOTES second round, "Geometry")."""
+        mass) (docs/models.md, "Force path")."""
         narrow_oil = self.density * self.narrow_area * (self.free_stroke + geometry.ROD_EXTRA_LENGTH)
         return self.wide_mass + self.ratio**2 * (self.narrow_mass + narrow_oil + self.surface_mass)
 
@@ -181,13 +186,15 @@ def part_row(stack: Stack, n_stacks: int, ratio: float, wide_area: float, voltag
     row["k_expand"] = float(hydraulics.expansion_loss_coefficient(ratio))
     row.update(_amplifier_row(amplifier))
     row.update({"stack_length": stack.length, "stack_diameter": stack.diameter,
-                "stack_cte": stack.thermal_expansion if stack.thermal_expansion is not None else STACK_CTE_DEFAULT})
+                "stack_cte": stack.thermal_expansion if stack.thermal_expansion is not None else STACK_CTE_DEFAULT,
+                "loss_factor": stack.loss_factor if stack.loss_factor is not None else stack_phys.DEFAULT_LOSS_FACTOR,
+                "stack_square": float(stack.section == "square")})
     row.update(structure if structure is not None else {})
     return row
 
 
-# assumed: the reviewer's "stacks about 0 to +3 ppm/K" (PHYSICS-NOTES, second
-# round) for stacks whose catalog entry gives no expansion coefficient.
+# assumed: the reviewer's "stacks about 0 to +3 ppm/K" (an independent
+# review of the sizing) for stacks whose catalog entry gives no expansion coefficient.
 STACK_CTE_DEFAULT = 2e-6
 
 
@@ -255,7 +262,8 @@ def _pick(override, default):
 def _amplifier_row(amplifier: Amplifier | None) -> dict:
     if amplifier is None:
         return {"amp_max_current": np.inf, "amp_slew": 0.0, "amp_mass": 0.0, "amp_cost": 0.0,
-                "amp_continuous": np.inf}
+                "amp_continuous": np.inf, "amp_peak_duration": np.inf, "amp_recovery": 0.0, "amp_units": 1.0}
     return {"amp_max_current": amplifier.max_current, "amp_slew": amplifier.slew_rate or 0.0,
             "amp_mass": amplifier.mass, "amp_cost": amplifier.cost_usd,
-            "amp_continuous": amplifier.continuous_current}
+            "amp_continuous": amplifier.continuous_current, "amp_peak_duration": amplifier.peak_duration,
+            "amp_recovery": amplifier.energy_recovery, "amp_units": 1.0}

@@ -2,7 +2,7 @@
 combination (structure material, thermal compensation), their sizing by the
 geometric program, the closed-form material screen, the passive spacer, the
 static figures and margins, the nominal figures of pruned combinations and
-the hysteresis time scale (issue 9)."""
+the hysteresis time scale."""
 from __future__ import annotations
 
 import math
@@ -14,7 +14,7 @@ import numpy as np
 from ..io.catalog import Catalog
 from ..io.requirements import RequirementsFile
 from ..physics import bouc_wen, fluid as fluid_props
-from ..physics import geometry, load as load_phys, stack as stack_phys, structure, thermal
+from ..physics import amplifier, geometry, load as load_phys, stack as stack_phys, structure, thermal
 from ..physics.bouc_wen import BoucWen
 from . import force_path
 from .convex import GPSizer, SizingInput
@@ -22,8 +22,9 @@ from .evaluate import load_cases
 from .piezo import Candidates, part_row, reference_bouc_wen, stack_bouc_wen, structure_row
 from .rank import ceiling_margin, floor_margin
 from .search import Combo, temperature_margin
-from .verify import (GAP_CLEARANCE_M, STACK_SPACING_M, metrics, ramp_time, seal_friction_at,
-                     static_figures)
+from .convex import DEFAULT_MAX_MASS, NO_LIMIT
+from .verify import (GAP_CLEARANCE_M, GAP_TOLERANCE_M, STACK_SPACING_M, drive_figures, metrics, ramp_time,
+                     seal_friction_at, static_figures)
 
 MAX_SPACER_M = 0.5          # longest passive-compensation spacer considered
 
@@ -57,9 +58,10 @@ class Variant:
 
 
 def effective_gap(req: RequirementsFile, stack_free_stroke: float) -> float:
-    """The wide gap: the option, raised to the stack stroke plus a clearance
-    (a gap below the stroke bottoms the wide piston out)."""
-    return max(req.options.wide_gap, stack_free_stroke + GAP_CLEARANCE_M)
+    """The smallest wide gap: the stack stroke plus a clearance and a
+    manufacturing tolerance (a gap below the stroke bottoms the wide piston
+    out), or the requirements' floor when that is larger."""
+    return max(req.options.wide_gap or 0.0, stack_free_stroke + GAP_CLEARANCE_M + GAP_TOLERANCE_M)
 
 
 def sizing_input(req: RequirementsFile, c: Combo, material=None, compensator=None) -> SizingInput:
@@ -74,9 +76,11 @@ def sizing_input(req: RequirementsFile, c: Combo, material=None, compensator=Non
         max_fraction=c.voltage_fraction_max, force=req.requirements.blocked_force,
         stroke=req.requirements.stroke,
         bulk_modulus=float(fluid_props.bulk_modulus_at(f.bulk_modulus, f.bulk_modulus_temperature_coefficient, T)),
-        wide_gap=effective_gap(req, c.stack_stroke * c.voltage_fraction_max), pressure_rating=s.pressure_rating,
+        wide_gap=req.options.wide_gap or 0.0, gap_allowance=GAP_CLEARANCE_M + GAP_TOLERANCE_M,
+        max_length=req.envelope.max_length or NO_LIMIT, max_diameter=req.envelope.diameter or NO_LIMIT,
+        max_mass=req.envelope.max_mass or DEFAULT_MAX_MASS, pressure_rating=s.pressure_rating,
         natural_frequency=req.natural_frequency, stroke_time=req.stroke_time,
-        n_capacitance=c.n * st.capacitance, max_current=c.amplifier.max_current,
+        n_capacitance=c.n * st.capacitance, max_current=_drive_limit(req, c.amplifier),
         margin=req.options.design_margin,
         fixed_mass=c.n * st.mass + c.amplifier.mass + (compensator.mass if compensator else 0.0),
         fixed_cost=(c.n * st.cost_usd + c.amplifier.cost_usd + 2 * s.cost_usd + geometry.FIXED_HYDRAULIC_USD
@@ -91,6 +95,14 @@ def sizing_input(req: RequirementsFile, c: Combo, material=None, compensator=Non
         packing_area=math.pi / 4 * float(structure.packing_diameter(c.n, st.diameter, STACK_SPACING_M)) ** 2,
         accumulator_compliance=accumulator, seal_f0=s.friction_per_length, seal_cp=s.friction_pressure_coefficient,
         surface_mass=_surface_mass(req))
+
+
+def _drive_limit(req: RequirementsFile, amp) -> float:
+    """The most current the drive may carry over the stroke time, A: every
+    unit the options allow, each at what it holds for that long."""
+    each = float(amplifier.usable_ramp_current(amp.max_current, amp.continuous_current, amp.peak_duration,
+                                               req.stroke_time))
+    return req.options.max_amplifier_units * each
 
 
 def _surface_mass(req: RequirementsFile) -> float:
@@ -139,7 +151,7 @@ def _resized(req, c: Combo, res, old, new):
     v = min(res.voltage_fraction, c.voltage_fraction_max)
     x = c.stack_stroke * v
     t_p = float(geometry.plate_thickness(res.wide_area, c.seal.pressure_rating))
-    L_f = float(force_path.frame_length(c.stack.length, t_p, effective_gap(req, x)))
+    L_f = float(force_path.frame_length(c.stack.length, t_p, res.wide_gap))
     t, area = force_path.resize_for_material(res.cap_thickness, res.frame_area, res.wide_area, L_f,
                                              c.n * c.stack.stiffness * x, old, new)
     return replace(res, cap_thickness=t, frame_area=area)
@@ -204,11 +216,14 @@ def _build(req, designs, spacer) -> None:
         struct = structure_row(var.material, res.cap_thickness, res.frame_area, spacer, d["spacer"],
                                var.compensator, _surface_mass(req), T - req.options.drift_reference_temperature)
         rows.append(part_row(combo.stack, combo.n, res.ratio, res.wide_area, voltage, bw, T,
-                             effective_gap(req, combo.stack_stroke * v), combo.fluid, combo.seal, combo.amplifier,
+                             max(res.wide_gap, effective_gap(req, combo.stack_stroke * v) * (1 + 1e-9)),
+                             combo.fluid, combo.seal, combo.amplifier,
                              structure=struct))
         d["index"] = len(rows) - 1
     c = Candidates.from_rows(rows)
     rise = np.array([d["rise"] for d in designs])
+    needed = drive_figures(c, rise, req.duty.strokes_per_second)["amplifier_units_needed"]
+    c.amp_units = np.minimum(needed, req.options.max_amplifier_units).astype(float)
     ramp = ramp_time(c, rise)
     static = static_figures(c, ramp, req.duty.strokes_per_second)
     met = metrics(c, ramp)
@@ -228,6 +243,25 @@ def _build(req, designs, spacer) -> None:
         d["seal_friction"] = {"wide": float(seal_f["wide"][i]), "narrow": float(seal_f["narrow"][i]),
                               "at_pressure_Pa": float(p_load[i])}
         d["static_margins"] = _static_margins(req, d)
+        d["ruled_out"] = ruled_out(req, d["static"], d["metrics"])
+
+
+def ruled_out(req, st: dict, met: dict) -> dict | None:
+    """Why a built design is not a design at all, or None: a plate beyond its
+    model's validity (``structure_out_of_range``) or a body outside the
+    requirements' envelope (``envelope``). Such designs are never ranked."""
+    ratio = st["plate_thickness_to_radius"]
+    if not structure.plate_in_range(ratio, 1.0):
+        return {"reason": "structure_out_of_range",
+                "detail": f"end cap and base plate t/a = {ratio:.2f}, beyond the plate model's "
+                          f"{structure.MINDLIN_MAX_THICKNESS_RATIO:g}"}
+    env = req.envelope
+    checks = (("length", st["length_m"], env.max_length, "m"), ("diameter", st["outer_diameter_m"], env.diameter, "m"),
+              ("mass", met["mass_kg"], env.max_mass or DEFAULT_MAX_MASS, "kg"))
+    for name, value, limit, unit in checks:
+        if limit is not None and value > limit * (1 + 1e-9):
+            return {"reason": "envelope", "detail": f"{name} {value:.4g} {unit} over the envelope's {limit:.4g} {unit}"}
+    return None
 
 
 def _static_margins(req, d) -> dict:
@@ -238,6 +272,9 @@ def _static_margins(req, d) -> dict:
     c_large = combo.n * stack.capacitance * stack_phys.LARGE_SIGNAL_CAPACITANCE_FACTOR
     volts_to_stroke = r.stroke * stack.max_voltage / (st["ratio"] * combo.stack_stroke)
     i_req = c_large * volts_to_stroke / req.stroke_time
+    units, amp = st["amplifier_units"], combo.amplifier
+    usable = units * float(amplifier.usable_ramp_current(amp.max_current, amp.continuous_current, amp.peak_duration,
+                                                         req.stroke_time))
     st["thermal_drift_m"] = st["thermal_net_m"]
     st["thermal_drift_oil_only_m"] = st["thermal_drift_per_K_m"] * (r.max_temperature - o.drift_reference_temperature)
     st["required_current_A"] = i_req
@@ -252,8 +289,11 @@ def _static_margins(req, d) -> dict:
         "temperature": min(temps),
         "amplifier_temperature": combo.margins["amplifier_temperature"],
         "pressure": floor_margin(combo.seal.pressure_rating, st["blocked_pressure_Pa"]),
-        "drive_current": floor_margin(combo.amplifier.max_current, i_req),
-        "amplifier_continuous_current": floor_margin(combo.amplifier.continuous_current, st["continuous_current_A"]),
+        "drive_current": floor_margin(usable, i_req),
+        "amplifier_continuous_current": floor_margin(units * amp.continuous_current,
+                                                     max(st["rms_current_A"], st["continuous_current_A"])),
+        "amplifier_units": floor_margin(req.options.max_amplifier_units, st["amplifier_units_needed"]),
+        "stack_temperature": temperature_margin(stack.max_temperature, r.max_temperature + st["stack_temperature_rise_K"]),
         "natural_frequency": floor_margin(st["natural_frequency_Hz"], req.natural_frequency),
         "thermal_drift": ceiling_margin(abs(st["thermal_net_m"]), o.max_drift_fraction * r.stroke),
         "wide_gap": floor_margin(st["wide_gap_m"], st["gap_needed_m"]),
@@ -264,12 +304,19 @@ def _static_margins(req, d) -> dict:
         margins["temperature"] = min(margins["temperature"], temperature_margin(comp.max_temperature, r.max_temperature))
         margins["compensator_capacity"] = floor_margin(comp.capacity, st["thermal_compensator_volume_m3"])
         if comp.leak_conductance > 0:
-            # output creep under the worst load over one duty cycle's hold
-            hold = 1.0 / req.duty.strokes_per_second
-            creep = comp.leak_conductance * d["seal_friction"]["at_pressure_Pa"] * hold / (st["narrow_diameter_m"] ** 2 * math.pi / 4)
+            # output creep under the steady (largest) load over the held deflection
+            creep = compensator_creep(comp.leak_conductance, d["seal_friction"]["at_pressure_Pa"],
+                                      req.duty.hold_time, st["narrow_diameter_m"])
             st["compensator_creep_m"] = creep
-            margins["compensator_leak"] = ceiling_margin(creep, o.max_drift_fraction * r.stroke)
+            st["compensator_hold_s"] = req.duty.hold_time
+            margins["compensator_hold"] = ceiling_margin(creep, o.max_drift_fraction * r.stroke)
     return margins
+
+
+def compensator_creep(leak_conductance, pressure, hold_time, narrow_diameter):
+    """Output creep of a leaking compensator, m: the oil that leaks out at the
+    load pressure over the hold, over the narrow bore (Q = G p)."""
+    return leak_conductance * pressure * hold_time / (math.pi / 4 * narrow_diameter**2)
 
 
 def nominal_figures(req, catalog, combos: list[Combo], candidates: list[dict]) -> None:
@@ -332,12 +379,6 @@ def nominal_figures(req, catalog, combos: list[Combo], candidates: list[dict]) -
         cd["compensator"] = None
 
 
-def assumed(combo: Combo, var: Variant) -> list[str]:
-    """Catalog values marked assumed that this design rests on, as part.field."""
-    parts = (combo.stack, combo.fluid, combo.seal, combo.amplifier, var.material, var.compensator)
-    return [f"{p.id}.{k}" for p in parts if hasattr(p, "assumed") for k in p.assumed()]
-
-
 @lru_cache(maxsize=4096)
 def _ramp_stroke(stack_id, params, voltage, ramp):
     return bouc_wen.ramp_stroke(BoucWen(*params), voltage, ramp, points=1000)
@@ -345,7 +386,7 @@ def _ramp_stroke(stack_id, params, voltage, ramp):
 
 def hysteresis(stack, bw, voltage, ramp) -> dict:
     """The stroke the (transferred) Bouc-Wen model gives at this design's own
-    ramp against the datasheet stroke at that voltage (issue 9, item 5)."""
+    ramp against the datasheet stroke at that voltage (docs/models.md, piezo stack)."""
     params = tuple(float(v) for v in bw.as_array())
     got = _ramp_stroke(stack.id, params, round(voltage, 3), round(ramp, 4))
     nominal = stack.stroke * voltage / stack.max_voltage

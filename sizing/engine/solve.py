@@ -7,7 +7,7 @@
    (and open accumulator) sizes R, the wide piston area, the drive voltage,
    the end cap / base plate thickness and the frame section with the whole
    force path in series; the other structure materials are re-sized in
-   closed form (issue 9).
+   closed form.
 3. The sized designs go through the same code as ``sizing evaluate``
    (``piezo.part_row``, ``verify.static_figures``, ``verify.metrics``), so
    their static figures agree with it, and are simulated under each load
@@ -25,6 +25,7 @@ from __future__ import annotations
 import copy
 import math
 import time
+from collections import Counter
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -35,7 +36,7 @@ from ..io.catalog import Catalog
 from ..io.requirements import RequirementsFile
 from ..physics import fluid as fluid_props
 from ..physics import stack as stack_phys, thermal
-from . import piezo_designs
+from . import assumed, piezo_designs
 from .dc_candidates import dc_candidates
 from .dc_sizing import dc_parts_candidates
 from .evaluate import load_cases
@@ -65,9 +66,12 @@ def _progress(callback, stage, done, total):
         callback(stage, done, total)
 
 
-def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, progress=None) -> SolveOutput:
+def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, progress=None,
+          detail: str = "summary") -> SolveOutput:
     """Run the whole search. ``progress(stage, done, total)`` is called while
-    candidates are sized and simulated."""
+    candidates are sized and simulated. ``detail``: "summary" counts the
+    combinations ruled out before sizing by reason; "full" also keeps a
+    record of each, with the nominal figures of its parts."""
     start = time.perf_counter()
     cases = load_cases(req.load)
     loads = [c["load_N"] for c in cases]
@@ -77,28 +81,46 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
     designs = piezo_designs.designs(req, catalog, sized)
     _simulate(req, designs, loads, progress)
     pruned = [c for c in combos if c.pruned]
-    candidates = [_pruned_candidate(req, c) for c in pruned]
-    piezo_designs.nominal_figures(req, catalog, pruned, candidates)
+    ruled_out = Counter(_pruned_reason(c) for c in pruned)
+    piezo_pruned = Counter(ruled_out)
+    candidates = []
+    if detail == "full":
+        candidates = [_pruned_candidate(req, c) for c in pruned]
+        piezo_designs.nominal_figures(req, catalog, pruned, candidates)
+    excluded = []
     for d in designs:
+        record = _ruled_out_record(d)
+        if record is not None:
+            excluded.append(record)
+            ruled_out[record["reason"]] += 1
+            continue
         candidates.extend(_design_candidates(req, d))
     dc = dc_candidates(req, catalog, loads) if req.options.dc_motors else []
     candidates.extend(dc["candidates"] if dc else [])
     parts = dc_parts_candidates(req, catalog, loads, progress) if req.options.dc_motors else {}
-    candidates.extend(parts.get("candidates", []))
+    for reason, count in parts.get("ruled_out", {}).items():
+        ruled_out[reason] += count
+    for c in parts.get("candidates", []):
+        if c.get("stage") == "pruned" and detail != "full":
+            ruled_out[_dc_pruned_reason(c)] += 1
+        else:
+            candidates.append(c)
     if dc:
         dc["models"] = parts.get("models", {})
     _rank(req, candidates)
     candidates.sort(key=lambda c: c["rank"])
+    assumed.fill(catalog, candidates)
     results = {
         "tool_version": __version__,
         "requirements_sha256": requirements_sha256,
         "catalog_sha256": catalog.sha256,
         "candidates": candidates,
+        "ruled_out": excluded,
         "requirements": _requirements_si(req),
         "load_cases": cases,
         "objectives": list(req.objectives.minimize),
         "assumptions": _assumptions(req),
-        "summary": _summary(req, candidates, catalog),
+        "summary": dict(_summary(req, candidates, catalog, piezo_pruned), ruled_out=dict(ruled_out.most_common())),
         "disagreements": _disagreements(designs),
         "hysteresis_time_scales": piezo_designs.hysteresis_time_scales(catalog),
         "counts": {"combinations": len(combos), "pruned": len(combos) - len(to_size), "sized": len(to_size),
@@ -116,7 +138,7 @@ def _simulate(req, designs, loads, progress) -> None:
     """Simulate the sized designs under every load case: the statically
     feasible ones on the Pareto front first, then the next fronts, then the
     rest, up to ``options.max_simulated``."""
-    pool = [d for d in designs if d["gp_success"]]
+    pool = [d for d in designs if d["gp_success"] and not d.get("ruled_out")]
     if not pool:
         return
     keys = [OBJECTIVE_KEYS[k] for k in req.objectives.minimize]
@@ -205,6 +227,28 @@ def _temperatures(combo: Combo) -> dict:
     return {k: {"rated_degC": a, "required_degC": b} for k, (a, b) in combo.temperatures.items()}
 
 
+def _pruned_reason(combo: Combo) -> str:
+    """The requirement a combination ruled out before sizing misses most."""
+    return min(combo.margins, key=lambda k: combo.margins[k])
+
+
+def _dc_pruned_reason(c: dict) -> str:
+    missed = [k for k, v in c.get("margins", {}).items() if v is not None and v < 0]
+    return min(missed, key=lambda k: c["margins"][k]) if missed else "pruned"
+
+
+def _ruled_out_record(d) -> dict | None:
+    """One line for a design that is not a design (a plate beyond its model,
+    a body outside the envelope): never ranked, plotted or named a best."""
+    why = d.get("ruled_out")
+    res = d["gp"]
+    if why is None and not res.success and res.ruled_out is not None:
+        why = {"reason": res.ruled_out, "detail": "no design of these parts fits: " + ", ".join(res.binding)}
+    if why is None:
+        return None
+    return {"id": d["id"], "technology": "piezohydraulic", "variant": d["variant"].name, **why}
+
+
 def _pruned_candidate(req, combo: Combo) -> dict:
     s, a = combo.stack, combo.amplifier
     reasons = [k for k, v in combo.margins.items() if v < 0]
@@ -267,7 +311,6 @@ def _design_candidates(req, d) -> list[dict]:
         "gp": {"success": res.success, "status": res.status, "binding": res.binding, "slack": res.slack},
         "reason": "" if res.success else "no design of these parts meets: " + ", ".join(res.binding),
         "metrics": dict(d["metrics"]), "margins": margins,
-        "rests_on_assumed": piezo_designs.assumed(combo, var),
     })
     if d["spacer"] > 0:
         base["passive_compensation"] = {"spacer_length_m": d["spacer"],
@@ -335,7 +378,7 @@ def _disagreements(designs) -> list[dict]:
 
 
 
-# --- hook for sizing robust (issue 13): re-verify fixed designs ------------
+# --- hook for sizing robust: re-verify fixed designs ------------
 def verify_sized(req, catalog: Catalog, sized: list, loads: list[float], chunk: int = SIM_CHUNK,
                  temperatures=None) -> list[list[dict]]:
     """Re-verify designs whose geometry is fixed, through the very steps of
@@ -367,7 +410,14 @@ def verify_sized(req, catalog: Catalog, sized: list, loads: list[float], chunk: 
         _simulate_chunk(built[start:start + chunk], loads, req.requirements.stroke)
     out = []
     for ds, t in zip(designs, temps):
-        cands = [c for d in ds for c in _design_candidates(reqs[t], d)]
+        cands = []
+        for d in ds:
+            record = _ruled_out_record(d)
+            for c in _design_candidates(reqs[t], d):
+                if record is not None:          # a sample outside the members' validity or the envelope
+                    c["margins"][record["reason"]] = -math.inf
+                    c["ruled_out"] = record
+                cands.append(c)
         for c in cands:
             c["feasible"], c["driver"] = verdict(c["margins"])
         out.append(cands)

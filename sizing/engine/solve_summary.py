@@ -44,7 +44,8 @@ def _assumptions(req: RequirementsFile) -> list[str]:
     return [
         f"stack counts 1 to {o.max_stacks}; every stack, fluid, seal and amplifier of the catalog combined",
         f"static sizing margin {o.design_margin:.0%} on stroke and blocked force (the simulation then checks them)",
-        f"wide-chamber oil gap {o.wide_gap * 1e3:g} mm; oil volume = A_wide gap + A_narrow stroke",
+        ("wide-chamber oil gap sized: the stack stroke plus a clearance and a manufacturing tolerance"
+         + (f", at least {o.wide_gap * 1e3:g} mm" if o.wide_gap else "") + "; oil volume = A_wide gap + A_narrow stroke"),
         "blocked force: the stack stroke over the summed compliances of the whole force path (stacks, base plate, "
         "tie-rod frame, wide piston, oil column at the required temperature, open accumulator, end cap, narrow piston), "
         "over R, less the seal friction at the blocked pressure; plates simply supported (Roark, mean deflection)",
@@ -69,23 +70,48 @@ def _assumptions(req: RequirementsFile) -> list[str]:
          if o.thermal_compensation else "no compensated designs evaluated"),
         amp,
         "temperature margin = (rated - required) / required, temperatures in kelvin",
+        _envelope_statement(req),
+        "end caps and base plate: Reissner-Mindlin plates (bending and shear), valid to thickness/radius "
+        "0.5; a design whose plates would be thicker, or that leaves the envelope, is ruled out, not ranked",
+        f"amplifier units in parallel, at most {o.max_amplifier_units}: a unit's peak current only within its rated "
+        "pulse, the ramp and the duty's rms current otherwise on its continuous rating",
+        f"stack self-heating: (pi/4) x 7 tan(delta) C V^2 f per stack (Noliac), shed at 10 W/(m^2 K) from its side",
+        f"a leaking compensator's creep under the largest load is counted over a {req.duty.hold_time:g} s hold",
         "Bouc-Wen hysteresis of stacks without their own data is transferred in normalised form from the measured stack",
         "masses and costs of the hydraulic stage from physics/geometry.py (6061-T6, plate and thin-wall formulas, "
         "60 USD/kg machining, 1500 USD assembly)",
     ]
 
 
+def _envelope_statement(req) -> str:
+    env = req.envelope
+    given = [f"{k} {v * f:g} {u}" for k, v, f, u in (("length", env.max_length, 1e3, "mm"),
+                                                     ("diameter", env.diameter, 1e3, "mm"),
+                                                     ("mass", env.max_mass, 1.0, "kg")) if v is not None]
+    mass = "" if env.max_mass is not None else "; without a mass limit, 10 t is the plausibility ceiling"
+    return "envelope: " + (", ".join(given) if given else "none given") + mass
+
+
 def _group(c) -> tuple[str, str]:
     return c["technology"], c.get("variant", "catalog")
 
 
-def _summary(req: RequirementsFile, candidates: list[dict], catalog) -> dict:
+def _summary(req: RequirementsFile, candidates: list[dict], catalog, piezo_pruned=None) -> dict:
+    """Per technology group: counts, best, what blocks it. ``piezo_pruned``:
+    piezohydraulic combinations ruled out before sizing, counted by reason
+    (they name the blocker of a group none of whose combinations was sized)."""
     groups = []
     for key in GROUPS:
         members = [c for c in candidates if _group(c) == key]
         feasible = [c for c in members if c["feasible"]]
         entry = {"technology": key[0], "variant": key[1], "label": LABELS[key], "n_candidates": len(members),
                  "n_feasible": len(feasible)}
+        if not members and key[0] == "piezohydraulic" and piezo_pruned:
+            entry["blocking"] = piezo_pruned.most_common(1)[0][0]
+            entry["text"] = ("no feasible design: every combination was ruled out before sizing ("
+                             + ", ".join(f"{k}: {n}" for k, n in piezo_pruned.most_common()) + ")")
+            groups.append(entry)
+            continue
         if not members:
             entry["text"] = "none in the catalog" if key[0] == "dc_motor" else "not evaluated"
             groups.append(entry)
@@ -106,7 +132,7 @@ def _summary(req: RequirementsFile, candidates: list[dict], catalog) -> dict:
                              f"{furthest['id']} ({furthest['stage']}), misses it by {_pct(m)}")
         groups.append(entry)
     return {"groups": groups, "thermal": _thermal_statement(req, candidates),
-            "comparison": technology_comparison(req, candidates),
+            "comparison": technology_comparison(req, candidates, catalog),
             "feasible": sum(1 for c in candidates if c["feasible"]),
             "pareto": [c["id"] for c in candidates if c["pareto"]]}
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..physics import geometry, hydraulics, stack as stack_phys, structure, thermal
+from ..physics import amplifier, geometry, hydraulics, stack as stack_phys, structure, thermal
 from . import force_path
 from ..sim.metrics import step_metrics
 from ..sim.piezohydraulic import PiezoHydraulicModel, simulate
@@ -16,14 +16,18 @@ SETTLE_TIME_S = 0.25
 
 def ramp_time(c: Candidates, rise_time) -> np.ndarray:
     """Time to ramp the drive from 0 to its voltage: the requested rise time,
-    or longer when the amplifier cannot supply i = n C_large dV/dt or slew."""
+    or longer when the amplifier units cannot supply i = n C_large dV/dt
+    (at their peak for a ramp within the rated pulse, else at their
+    continuous rating) or slew."""
     charge = c.n_stacks * c.capacitance * stack_phys.LARGE_SIGNAL_CAPACITANCE_FACTOR * c.voltage
-    t_current = charge / c.amp_max_current
+    t_peak = charge / (c.amp_units * c.amp_max_current)
+    t_current = np.where(t_peak <= c.amp_peak_duration, t_peak, charge / (c.amp_units * c.amp_continuous))
     t_slew = np.where(c.amp_slew > 0, c.voltage / np.where(c.amp_slew > 0, c.amp_slew, 1.0), 0.0)
     return np.maximum.reduce([np.broadcast_to(rise_time, c.voltage.shape), t_current, t_slew])
 
 
 GAP_CLEARANCE_M = 0.5e-3       # assumed: wide gap left over the stack stroke (machining, tilt, oil film)
+GAP_TOLERANCE_M = 0.1e-3       # assumed: manufacturing tolerance on the gap (IT9 over a 100 mm bore is 87 um)
 STACK_SPACING_M = 1e-3         # assumed: clearance between neighbouring stacks under the wide piston
 FILL_TEMPERATURE_DEGC = 20.0   # oil filled and sealed at this temperature (thermal budget reference)
 PISTON_CTE = 23.6e-6           # 1/K, 6061-T6 casing and pistons (catalogs/materials.toml al-6061-t6)
@@ -41,7 +45,7 @@ def static_figures(c: Candidates, rise_time, strokes_per_second=1.0) -> dict[str
     k = tot["total"]
     out = {
         "free_stroke_m": R * x,
-        # CONTRACTS second round: d33 V over the summed compliances, over R
+        # docs/formats.md, force_path: d33 V over the summed compliances, over R
         "blocked_force_N": x / tot["compliance_sum"] / R,
         "blocked_force_ideal_N": k_stacks * x / R,
         "stack_force_N": k_stacks * x,
@@ -66,15 +70,39 @@ def static_figures(c: Candidates, rise_time, strokes_per_second=1.0) -> dict[str
     # amplifier continuous current: charge n C_L V out and back per cycle
     out["continuous_current_A"] = 2 * c.n_stacks * c.capacitance * stack_phys.LARGE_SIGNAL_CAPACITANCE_FACTOR \
         * c.voltage * strokes_per_second
+    out.update(drive_figures(c, rise_time, strokes_per_second))
     out["oil_volume_m3"] = c.oil_volume
     out["thermal_drift_per_K_m"] = thermal.output_drift(c.oil_volume, c.thermal_expansion, 1.0, c.narrow_area)
     out.update({"thermal_" + k_: v for k_, v in thermal_budget(c, m).items()})
     out["wide_gap_m"] = c.wide_gap
-    out["gap_needed_m"] = x + GAP_CLEARANCE_M
+    out["gap_needed_m"] = x + GAP_CLEARANCE_M + GAP_TOLERANCE_M
     out["stacks_that_fit"] = structure.stacks_that_fit(out["wide_diameter_m"], c.stack_diameter, STACK_SPACING_M)
     structural = sum(np.asarray(m[k_]["mass"]) for k_ in ("base_plate", "end_cap", "frame", "spacer"))
     out["structure_mass_kg"] = structural
+    out["length_m"] = 2 * c.cap_thickness + m["frame"]["length"] + c.free_stroke + geometry.ROD_EXTRA_LENGTH
+    out["outer_diameter_m"] = (out["wide_diameter_m"] * (1 + c.pressure_rating / geometry.DESIGN_STRESS)
+                               + 2 * geometry.MIN_WALL)
+    out["plate_thickness_to_radius"] = structure.thickness_ratio(c.cap_thickness, geometry.radius(c.wide_area))
     return out
+
+
+def drive_figures(c: Candidates, rise_time, strokes_per_second) -> dict[str, np.ndarray]:
+    """The drive at the duty (physics/amplifier.py) and the stacks' own heat
+    (physics/stack.py): currents, units needed, heat and temperature rise."""
+    C = c.n_stacks * c.capacitance * stack_phys.LARGE_SIGNAL_CAPACITANCE_FACTOR
+    ramp = np.broadcast_to(np.asarray(rise_time, dtype=float), c.voltage.shape)
+    heat = stack_phys.heat_per_stack(c.loss_factor, c.capacitance, c.voltage, strokes_per_second)
+    area = stack_phys.side_area(c.stack_length, c.stack_diameter, c.stack_square > 0)
+    return {
+        "ramp_current_A": amplifier.ramp_current(C, c.voltage, ramp),
+        "rms_current_A": amplifier.rms_current(C, c.voltage, ramp, strokes_per_second),
+        "amplifier_units_needed": amplifier.units_needed(C, c.voltage, ramp, strokes_per_second, c.amp_max_current,
+                                                         c.amp_continuous, c.amp_peak_duration),
+        "amplifier_units": c.amp_units,
+        "amplifier_heat_W": amplifier.dissipated_power(C, c.voltage, strokes_per_second, c.amp_recovery),
+        "stack_heat_W": heat,
+        "stack_temperature_rise_K": stack_phys.temperature_rise(heat, area),
+    }
 
 
 def _seal_figures(c: Candidates, pressure) -> dict[str, np.ndarray]:
@@ -112,9 +140,9 @@ def metrics(c: Candidates, rise_time) -> dict[str, np.ndarray]:
     structural = ("base_plate", "end_cap", "frame", "spacer")
     s_mass = sum(np.asarray(m[k]["mass"]) for k in structural)
     s_cost = sum(np.asarray(m[k]["cost"]) for k in structural)
-    mass = c.n_stacks * c.stack_mass + hyd_mass + c.amp_mass + s_mass + c.comp_mass
+    mass = c.n_stacks * c.stack_mass + hyd_mass + c.amp_units * c.amp_mass + s_mass + c.comp_mass
     metal = hyd_mass - c.density * c.oil_volume
-    cost = (c.n_stacks * c.stack_cost + c.amp_cost + c.seal_cost + c.fluid_cost * c.oil_volume * 1000
+    cost = (c.n_stacks * c.stack_cost + c.amp_units * c.amp_cost + c.seal_cost + c.fluid_cost * c.oil_volume * 1000
             + geometry.MACHINING_USD_PER_KG * metal + geometry.FIXED_HYDRAULIC_USD + s_cost + c.comp_cost)
     volume = 1.5 * c.n_stacks * c.stack_volume + geometry.hydraulic_volume(
         c.wide_area, c.narrow_area, c.pressure_rating, c.wide_gap, c.free_stroke)

@@ -22,7 +22,10 @@ from .schema import BW_LINEAR, BW_SHAPE, GAIN, Qty, Strict, load_toml, parse_mod
 
 DEFAULT_CATALOG = Path(__file__).resolve().parents[2] / "catalogs"
 ID_PATTERN = re.compile(r"^[a-z0-9][a-z0-9.\-]*$")
-STATUS_PATTERN = re.compile(r"^((datasheet|seed|measured)(: .+)?|assumed: .+)$")
+# "sourced: <file, key, column>" is a value read from a maker's table with its
+# provenance; "rule: <text>" a value the table lacks, stated from the maker's
+# rule for the family (catalogs/README.md)
+STATUS_PATTERN = re.compile(r"^((datasheet|seed|measured|sourced)(: .+)?|(assumed|rule): .+)$")
 
 
 class Entry(Strict):
@@ -46,7 +49,7 @@ class Entry(Strict):
     def _status(cls, value: dict[str, str]) -> dict[str, str]:
         for key, text in value.items():
             if not STATUS_PATTERN.match(text):
-                raise ValueError(f'status of {key}: expected "datasheet", "seed", "measured" (each optionally followed by ": note") or "assumed: <reason>", got {text!r}')
+                raise ValueError(f'status of {key}: expected "datasheet", "seed", "measured", "sourced" (each optionally followed by ": note"), "rule: <text>" or "assumed: <reason>", got {text!r}')
         return value
 
     @model_validator(mode="after")
@@ -61,7 +64,7 @@ class Entry(Strict):
 
     @classmethod
     def quantity_fields(cls) -> list[str]:
-        skip = set(Entry.model_fields) | {"bouc_wen", "pid", "material", "type", "section", "kind"}
+        skip = set(Entry.model_fields) | {"bouc_wen", "pid", "material", "type", "section", "kind", "gear_mounts", "mount"}
         return [name for name in cls.model_fields if name not in skip]
 
     def assumed(self) -> dict[str, str]:
@@ -102,6 +105,7 @@ class Stack(Entry):
     stroke_temperature_coefficient: Qty("per_kelvin") = 0.0
     cost_usd: Qty("dimensionless", positive=True)
     thermal_expansion: Optional[Qty("per_kelvin")] = None   # linear, along the stroke
+    loss_factor: Optional[Qty("dimensionless", positive=True)] = None   # small-signal tan(delta)
     bouc_wen: Optional[BoucWenTable] = None
 
 
@@ -135,6 +139,8 @@ class Amplifier(Entry):
     min_voltage: Qty("voltage") = 0.0
     max_current: Qty("current", positive=True)
     continuous_current: Qty("current", positive=True)
+    peak_duration: Qty("time", positive=True)                 # how long max_current may be drawn
+    energy_recovery: Qty("dimensionless", nonnegative=True) = 0.0   # fraction of C V^2 returned per cycle
     max_power: Optional[Qty("power", positive=True)] = None
     slew_rate: Optional[Qty("slew", positive=True)] = None
     mass: Qty("mass", positive=True)
@@ -169,13 +175,13 @@ class DCActuator(Entry):
     supply_voltage: Qty("voltage", positive=True)
     cost_usd: Qty("dimensionless", nonnegative=True)
     pid: PIDTable
-    # the voltage ceiling (PHYSICS-NOTES, second round): bus-referred back-EMF
+    # the voltage ceiling (docs/models.md, DC motor actuator): bus-referred back-EMF
     # constant and winding resistance; absent = no voltage limit
     back_emf_constant: Optional[Qty("back_emf_constant", positive=True)] = None
     winding_resistance: Optional[Qty("resistance", positive=True)] = None
 
 
-# --- parts of a DC actuator sized from parts (issue 11) ---------------------
+# --- parts of a DC actuator sized from parts ---------------------
 def _at_most_one(value: float) -> float:
     if not 0 < value <= 1:
         raise ValueError(f"expected an efficiency in (0, 1], got {value!r}")
@@ -207,6 +213,9 @@ class Motor(Entry):
     max_temperature: Qty("temperature")            # ambient
     mass: Qty("mass", positive=True)
     cost_usd: Qty("dimensionless", nonnegative=True)
+    # the gearhead mounts this motor takes (gears.mount); absent: the
+    # gearheads without a mount (the generic ones)
+    gear_mounts: Optional[list[str]] = None
 
 
 class Screw(Entry):
@@ -224,6 +233,7 @@ class Screw(Entry):
     elastic_modulus: Qty("pressure", positive=True) = 2.0e11     # steel
     max_temperature: Qty("temperature")
     cost_usd: Qty("dimensionless", nonnegative=True)
+    static_load_rating: Optional[Qty("force", positive=True)] = None   # C0 (ISO 3408-5)
 
 
 class Gear(Entry):
@@ -232,9 +242,11 @@ class Gear(Entry):
     inertia: Qty("inertia", nonnegative=True)          # referred to the input shaft
     mass: Qty("mass", positive=True)
     max_input_speed: Qty("angular_speed", positive=True)
-    max_output_torque: Qty("torque", positive=True)
+    max_output_torque: Qty("torque", positive=True)                # intermittent (peak)
     max_temperature: Qty("temperature")
     cost_usd: Qty("dimensionless", nonnegative=True)
+    continuous_output_torque: Optional[Qty("torque", positive=True)] = None
+    mount: Optional[str] = None      # fits the motors whose gear_mounts list it
 
 
 class Drive(Entry):
@@ -291,6 +303,10 @@ KINDS: dict[str, tuple[str, type[Entry]]] = {
     "screws.toml": ("screw", Screw),
     "gears.toml": ("gear", Gear),
     "drives.toml": ("drive", Drive),
+    # parts imported from makers' tables (``sizing catalog import-mgdb``)
+    "motors-mgdb.toml": ("motor", Motor),
+    "gears-mgdb.toml": ("gear", Gear),
+    "screws-sourced.toml": ("screw", Screw),
 }
 
 
@@ -309,6 +325,7 @@ class Catalog:
     gears: dict[str, Gear] = field(default_factory=dict)
     drives: dict[str, Drive] = field(default_factory=dict)
     files: dict[str, str] = field(default_factory=dict)   # file name -> sha256
+    origin: dict[str, str] = field(default_factory=dict)  # entry id -> file name
 
     def groups(self) -> dict[str, dict[str, Entry]]:
         return {"stack": self.stacks, "fluid": self.fluids, "seal": self.seals,
@@ -348,26 +365,74 @@ def load_catalog(folder: str | Path | None = None) -> Catalog:
             continue
         found = True
         catalog.files[file_name] = hashlib.sha256(read_input_bytes(path, "a TOML file")).hexdigest()
-        data = load_toml(path)
-        unknown = [k for k in data if k != array_name]
-        if unknown:
-            raise InputError(str(path), unknown[0], f"unknown table; expected [[{array_name}]] entries")
         group = catalog.groups()[array_name]
-        entries = data.get(array_name, [])
-        if not isinstance(entries, list):
-            raise InputError(str(path), array_name, f"expected [[{array_name}]] entries (an array of tables), "
-                                                    f"got {type(entries).__name__} {entries!r:.40}")
-        for index, raw in enumerate(entries):
-            label = f"[[{array_name}]] {raw.get('id', '#' + str(index + 1))}" if isinstance(raw, dict) else f"[[{array_name}]] #{index + 1}"
-            entry = _parse_entry(model, raw, path, label)
+        parsed = _cached(catalog.files[file_name])
+        if parsed is None:
+            parsed = _parse_file(path, array_name, model)
+            _store(catalog.files[file_name], parsed)
+        for label, entry in parsed:
             if entry.id in seen:
                 raise InputError(str(path), f"{label}: id", f"duplicate id, already defined in {seen[entry.id]}")
             seen[entry.id] = file_name
+            catalog.origin[entry.id] = file_name
             group[entry.id] = entry
     if not found:
         raise InputError(str(folder), None, f"no catalog files ({', '.join(KINDS)})")
     _check_drives(catalog)
     return catalog
+
+
+def _parse_file(path: Path, array_name: str, model: type[Entry]) -> list[tuple[str, Entry]]:
+    """(label, validated entry) of every entry of one catalog file."""
+    data = load_toml(path)
+    unknown = [k for k in data if k != array_name]
+    if unknown:
+        raise InputError(str(path), unknown[0], f"unknown table; expected [[{array_name}]] entries")
+    entries = data.get(array_name, [])
+    if not isinstance(entries, list):
+        raise InputError(str(path), array_name, f"expected [[{array_name}]] entries (an array of tables), "
+                                                f"got {type(entries).__name__} {entries!r:.40}")
+    out = []
+    for index, raw in enumerate(entries):
+        label = f"[[{array_name}]] {raw.get('id', '#' + str(index + 1))}" if isinstance(raw, dict) else f"[[{array_name}]] #{index + 1}"
+        out.append((label, _parse_entry(model, raw, path, label)))
+    return out
+
+
+# Parsed catalog files are kept by content hash (and the schema's own hash):
+# a TOML file of a thousand datasheet entries parses in about a second and
+# the unit strings of the small files in a third of one; the validated
+# entries unpickle in a few hundredths. SIZING_CACHE_DIR moves the
+# cache; an unreadable or stale cache entry is parsed again.
+_SCHEMA_HASH = hashlib.sha256(Path(__file__).read_bytes()).hexdigest()[:16]
+
+
+def _cache_path(digest: str) -> Path:
+    root = os.environ.get("SIZING_CACHE_DIR") or Path.home() / ".cache" / "sizing" / "catalog"
+    return Path(root) / f"{digest}-{_SCHEMA_HASH}.pickle"
+
+
+def _cached(digest: str):
+    import pickle
+    try:
+        with open(_cache_path(digest), "rb") as handle:
+            return pickle.load(handle)
+    except Exception:           # absent, unreadable, or written by another schema
+        return None
+
+
+def _store(digest: str, parsed: list) -> None:
+    import pickle
+    import tempfile
+    target = _cache_path(digest)
+    try:
+        target.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(dir=target.parent, suffix=".tmp")
+        with os.fdopen(fd, "wb") as handle:
+            pickle.dump(parsed, handle, protocol=pickle.HIGHEST_PROTOCOL)
+        os.replace(tmp, target)
+    except OSError:
+        pass                    # no cache: the next load parses again
 
 
 def _check_drives(catalog: Catalog) -> None:

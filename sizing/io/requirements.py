@@ -1,4 +1,4 @@
-"""requirements.toml: what ``sizing solve`` must meet (CONTRACTS.md).
+"""requirements.toml: what ``sizing solve`` must meet (docs/formats.md).
 
 ``[requirements]``, ``[load]`` and ``[objectives]`` are the contract's
 tables. ``[options]`` is an extension with defaults: the assumptions of the
@@ -51,7 +51,9 @@ class OptionsTable(Strict):
     """Assumptions of the search; every one is printed in the report."""
 
     max_stacks: int = Field(20, ge=1, le=200)             # stack counts tried: 1..max_stacks
-    wide_gap: Qty("length", positive=True) = 3e-3         # oil gap in the wide chamber
+    # smallest oil gap in the wide chamber; None: the gap is sized, the stack
+    # stroke plus a clearance and a manufacturing tolerance (engine/verify.py)
+    wide_gap: Optional[Qty("length", positive=True)] = None
     design_margin: Qty("dimensionless", nonnegative=True) = 0.05   # static sizing margin on stroke and force
     max_overshoot: Qty("dimensionless", positive=True) = 0.10      # simulated overshoot allowed
     min_natural_frequency: Optional[Qty("frequency", positive=True)] = None  # default: 10 / (stroke / speed)
@@ -63,28 +65,49 @@ class OptionsTable(Strict):
     amplifier_location: Literal["bay", "actuator"] = "bay"
     electronics_bay_temperature: Qty("temperature") = 30.0           # assumed conditioned bay, where the amplifier sits when "bay"
     max_simulated: int = Field(400, ge=1, le=100000)      # candidates verified by simulation
+    # amplifier units a piezo drive may put in parallel (assumed: one rack)
+    max_amplifier_units: int = Field(16, ge=1, le=1000)
     dc_motors: bool = True                                # rank the catalog's DC actuators too
-    # issue 9: end cap, base plate and frame each at least this x the stacks' stiffness; the
+    # end cap, base plate and frame each at least this x the stacks' stiffness; the
     # geometric program makes them stiffer where the blocked force needs it. 3 is the reviewer's
-    # "frame three times stiffer than the stacks" (10-18 kg of 6061 for the first round's best);
+    # "frame three times stiffer than the stacks" (10-18 kg of 6061 for a 9-stack design);
     # at the floor the three members together are as compliant as the stacks (force halves)
     structure_stiffness_ratio: Qty("dimensionless", positive=True) = 3.0
 
 
 class DutyTable(Strict):
-    """What the actuator does repeatedly (CONTRACTS.md, second round): the
+    """What the actuator does repeatedly (docs/formats.md): the
     thermal checks (winding temperature, amplifier continuous current) use
     the RMS over this cycle. One full stroke out and back counts as one."""
 
     strokes_per_second: float = Field(1.0, gt=0.0, allow_inf_nan=False)
+    # how long a deflection is held under the steady load: the creep of a
+    # leaking compensator over it is a margin. 60 s: a held trim deflection
+    hold_time: Qty("time", positive=True) = 60.0
 
 
-# [tolerances] (CONTRACTS.md, second round): relative 1-sigma normal spread of
+class EnvelopeTable(Strict):
+    """Where the actuator must fit; each key optional (SI after reading).
+    A design outside it is ruled out, never ranked."""
+
+    max_length: Optional[Qty("length", positive=True)] = None
+    max_diameter: Optional[Qty("length", positive=True)] = None
+    max_width: Optional[Qty("length", positive=True)] = None     # a square section: its side
+    max_mass: Optional[Qty("mass", positive=True)] = None
+
+    @property
+    def diameter(self) -> float | None:
+        """The tightest of max_diameter and max_width (a round body in a square bay)."""
+        given = [v for v in (self.max_diameter, self.max_width) if v is not None]
+        return min(given) if given else None
+
+
+# [tolerances] (docs/formats.md): relative 1-sigma normal spread of
 # a catalog field, keyed "kind.field". Used when the table is absent (sizing
 # robust); the piezohydraulic values are the contract's example, assumed:
 # typical datasheet tolerances of PICA stacks (stroke, stiffness), oil bulk
 # modulus data scatter and seal friction scatter, not measured on these parts.
-# DC parts (issue 13): motor datasheets state +/-10 % on their data
+# DC parts: motor datasheets state +/-10 % on their data
 # (Beckhoff AM8100 technical data, "the data can have a tolerance of +/- 10%";
 # HIWIN torque motors, "+/-10 % for all specification values"), taken, like
 # the stack's, as the 1-sigma spread of k_t, R and R_th; the others are
@@ -144,6 +167,7 @@ class RequirementsFile(Strict):
     objectives: ObjectivesTable = Field(default_factory=ObjectivesTable)
     options: OptionsTable = Field(default_factory=OptionsTable)
     duty: DutyTable = Field(default_factory=DutyTable)
+    envelope: EnvelopeTable = Field(default_factory=EnvelopeTable)
     tolerances: Optional[dict[str, Qty("dimensionless", nonnegative=True)]] = None   # None: DEFAULT_TOLERANCES
     notes: Optional[str] = None
 

@@ -49,3 +49,33 @@ def drive_current(n_stacks, capacitance, voltage_rate, large_signal_factor=LARGE
 def loaded_displacement(x_free, force, stiffness):
     """Seed eq. 3: displacement of one stack under a compressive force."""
     return np.asarray(x_free) - np.asarray(force) / np.asarray(stiffness)
+
+
+# Self-heating (dielectric loss). Noliac, "Heat dissipation" (dynamic
+# actuators tutorial, noliac.com): in sinusoidal operation the average loss
+# is P = (pi / 4) tan(delta) C U_pp^2 f, with C and tan(delta) the small-signal
+# datasheet values; "at 3 kV/mm the product C tan(delta) is typically 7 to 10
+# times higher". A full stroke out and back is one cycle of U_pp = V.
+LARGE_SIGNAL_LOSS_MULTIPLIER = 7.0      # the low end of Noliac's 7-10 (PICA runs at 2 kV/mm, below 3)
+DEFAULT_LOSS_FACTOR = 0.02              # assumed: small-signal tan(delta) of soft PZT (PIC151-type)
+# assumed: natural convection from the stack's side to still gas, the middle
+# of the 2-25 W/(m^2 K) range of textbook tables (Incropera, Table 1.1)
+FILM_COEFFICIENT = 10.0
+
+
+def heat_per_stack(loss_factor, capacitance, voltage, strokes_per_second,
+                   multiplier=LARGE_SIGNAL_LOSS_MULTIPLIER):
+    """Dielectric loss of one stack at the duty, W: (pi/4) m tan(d) C V^2 f."""
+    return (np.pi / 4.0 * multiplier * np.asarray(loss_factor) * np.asarray(capacitance)
+            * np.asarray(voltage) ** 2 * np.asarray(strokes_per_second))
+
+
+def side_area(length, diameter, square=False):
+    """Lateral surface of one stack, m^2 (pi d L, or 4 d L for a square one)."""
+    perimeter = np.where(square, 4.0, np.pi) * np.asarray(diameter)
+    return perimeter * np.asarray(length)
+
+
+def temperature_rise(heat, area, film_coefficient=FILM_COEFFICIENT):
+    """Steady rise of the stack above its surroundings, K: P / (h A)."""
+    return np.asarray(heat) / (film_coefficient * np.asarray(area))

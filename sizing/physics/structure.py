@@ -1,7 +1,7 @@
 """The force path of a piezohydraulic actuator: plates, frame, packing.
 
 Every member between the stacks and the output is a spring in series
-(CONTRACTS.md, second round, ``force_path``); stiffness is referred to the
+(docs/formats.md, ``force_path``); stiffness is referred to the
 wide piston (force on the wide piston / its volume-equivalent displacement).
 
 End caps (Roark, Formulas for Stress and Strain, 7th ed., Table 11.2, cases
@@ -22,8 +22,20 @@ w(r) 2 pi r dr over the plate (derivation in tests/test_structure.py):
 so k = 192 pi D / a^2 (clamped) and 192 pi D (1+nu) / ((7+nu) a^2)
 (simply supported). A bolted cap lies between the two; the verdict uses
 the simply supported value (the softer, conservative one) and the clamped
-value is reported beside it. Shear deflection of thick plates is not
-included (it softens thick caps further; t/a < 0.4 here).
+value is reported beside it.
+
+Shear (Reissner-Mindlin, first-order shear deformation): for an
+axisymmetric circular plate under uniform pressure the shear deflection
+adds, for both edge conditions, w_s(r) = q (a^2 - r^2) / (4 k G t), k = 5/6,
+G = E / (2 (1 + nu)) (Reddy, Theory and Analysis of Elastic Plates and
+Shells, 2nd ed., sec. 3.x, the Kirchhoff-Mindlin relation w_M = w_K +
+M_K / (k G t); Ike, Math. Models Eng. 4(2) 2018, doi 10.21595/mme.2018.19825;
+Roark 7th ed. sec. 11.12 gives the same centre value, K_sa = 0.30 = 1/(4 k)).
+Its mean over the plate is q a^2 / (8 k G t), so its compliance, referred
+to a piston of the plate's area, is 1 / (8 pi k G t), independent of a.
+Validity: the model is used up to t/a = MINDLIN_MAX_THICKNESS_RATIO; a
+thicker "plate" is a block, not a plate, and a member sized beyond it is
+ruled out (``structure_out_of_range``).
 
 Stress: the simply supported plate peaks at its centre,
 sigma = 3 (3+nu) q a^2 / (8 t^2) (Roark 10a); the clamped one at its edge,
@@ -48,6 +60,9 @@ import math
 import numpy as np
 
 EDGES = ("simply_supported", "clamped")
+SHEAR_CORRECTION = 5.0 / 6.0        # k of first-order shear deformation (Reissner, Mindlin)
+MINDLIN_MAX_THICKNESS_RATIO = 0.5   # t/a: thickness over radius up to which a plate is a plate here
+PLATE_MODEL = "mindlin"
 
 # D/d of the smallest circle holding n unit circles, n = 1..20 (packomania).
 PACKING_RATIO = (1.0, 2.0, 2.1547005, 2.4142136, 2.7013016, 3.0, 3.0, 3.3047649, 3.6131259,
@@ -87,10 +102,39 @@ def plate_compliance_factor(nu, edge="simply_supported"):
     return (7.0 + nu) / (192.0 * math.pi * (1.0 + nu))
 
 
-def plate_stiffness(a, t, E, nu, edge="simply_supported"):
+def shear_modulus(E, nu):
+    """G = E / (2 (1 + nu)), Pa."""
+    return np.asarray(E) / (2.0 * (1.0 + np.asarray(nu)))
+
+
+def plate_shear_compliance(t, E, nu):
+    """Mindlin shear compliance of a circular plate under uniform pressure,
+    referred to a piston of its own area: 1 / (8 pi k G t), m/N."""
+    return 1.0 / (8.0 * math.pi * SHEAR_CORRECTION * shear_modulus(E, nu) * np.asarray(t))
+
+
+def plate_shear_centre_deflection(q, a, t, E, nu):
+    """Centre shear deflection q a^2 / (4 k G t), m (both edge conditions)."""
+    return np.asarray(q) * np.asarray(a) ** 2 / (4.0 * SHEAR_CORRECTION * shear_modulus(E, nu) * np.asarray(t))
+
+
+def plate_stiffness(a, t, E, nu, edge="simply_supported", model=PLATE_MODEL):
     """Stiffness of a circular plate under uniform pressure, referred to a
-    piston of the plate's own area: force / volume-equivalent displacement (N/m)."""
-    return 1.0 / (plate_compliance_factor(nu, edge) * np.asarray(a) ** 2 / flexural_rigidity(E, t, nu))
+    piston of the plate's own area: force / volume-equivalent displacement
+    (N/m). ``model``: "mindlin" (bending plus shear) or "kirchhoff" (bending)."""
+    bending = plate_compliance_factor(nu, edge) * np.asarray(a) ** 2 / flexural_rigidity(E, t, nu)
+    shear = plate_shear_compliance(t, E, nu) if model == "mindlin" else 0.0
+    return 1.0 / (bending + shear)
+
+
+def thickness_ratio(t, a):
+    """t / a of a circular plate."""
+    return np.asarray(t, dtype=float) / np.asarray(a, dtype=float)
+
+
+def plate_in_range(t, a):
+    """True where the plate is inside the validity of the plate model."""
+    return thickness_ratio(t, a) <= MINDLIN_MAX_THICKNESS_RATIO * (1.0 + 1e-5)   # the sizer's tolerance
 
 
 def plate_stress(q, a, t, nu):
@@ -99,10 +143,20 @@ def plate_stress(q, a, t, nu):
     return 3.0 * (3.0 + np.asarray(nu)) / 8.0 * np.asarray(q) * np.asarray(a) ** 2 / np.asarray(t) ** 2
 
 
-def plate_thickness_for_stiffness(k, a, E, nu, edge="simply_supported"):
-    """Thickness that gives stiffness k (N/m) to a plate of radius a (m)."""
-    D = np.asarray(k) * plate_compliance_factor(nu, edge) * np.asarray(a) ** 2
-    return (12.0 * (1.0 - np.asarray(nu) ** 2) * D / np.asarray(E)) ** (1.0 / 3.0)
+def plate_thickness_for_stiffness(k, a, E, nu, edge="simply_supported", model=PLATE_MODEL):
+    """Thickness that gives stiffness k (N/m) to a plate of radius a (m).
+    With shear, 1/k = P u^3 + Q u in u = 1/t: a depressed cubic with one
+    real root (Cardano), P the bending and Q the shear coefficient."""
+    P = plate_compliance_factor(nu, edge) * np.asarray(a) ** 2 * 12.0 * (1.0 - np.asarray(nu) ** 2) / np.asarray(E)
+    k = np.asarray(k, dtype=float)
+    if model != "mindlin":
+        return (P * k) ** (1.0 / 3.0)
+    K = 1.0 / np.where(k > 0, k, 1.0)
+    Q = plate_shear_compliance(1.0, E, nu)
+    half = K / (2.0 * P)
+    root = np.sqrt(half**2 + (Q / (3.0 * P)) ** 3)
+    u = np.cbrt(half + root) + np.cbrt(half - root)
+    return np.where(k > 0, 1.0 / u, 0.0)          # no stiffness asked: no thickness
 
 
 def plate_thickness_for_stress(q, a, allowable, nu):

@@ -1,4 +1,4 @@
-"""Report section for piezohydraulic designs (issue 9, item 7): the force
+"""Report section for piezohydraulic designs : the force
 path as a bar of compliance shares, the thermal budget as a waterfall, the
 seal friction at pressure and what each design rests on that is assumed."""
 from __future__ import annotations
@@ -67,8 +67,8 @@ def section(cands: list[dict], to_div) -> str:
         f"<td>{d['seal_friction_N']['wide']:.0f}</td><td>{d['seal_friction_N']['narrow']:.1f}</td>"
         f"<td>{d['seal_friction_N']['at_pressure_Pa'] / 1e6:.2f}</td>"
         f"<td>{d['thermal_budget']['net_m'] * 1e3:.1f}</td>"
-        f"<td class='l'>{_e(', '.join(d.get('rests_on_assumed', [])[:8]))}"
-        f"{' ...' if len(d.get('rests_on_assumed', [])) > 8 else ''}</td></tr>" for d in designs)
+        f"<td class='l'>{_e(', '.join(_assumed_names(d)[:8]))}"
+        f"{' ...' if len(_assumed_names(d)) > 8 else ''}</td></tr>" for d in designs)
     table = ("<div class='scroll'><table><tr><th class='l'>design</th><th class='l'>variant</th>"
              "<th>blocked force ideal, N</th><th>with the force path, N</th><th>less seal friction, N</th>"
              "<th>wide seal, N</th><th>narrow seal, N</th><th>at, MPa</th><th>thermal net, mm</th>"
@@ -80,3 +80,9 @@ def section(cands: list[dict], to_div) -> str:
             f"stack base plate are circular plates under pressure, simply supported (Roark; the conservative "
             f"edge; the clamped value is in results.json). Seal friction is at the pressure of the largest load "
             f"case.</p>{to_div(force_path_figure(designs))}{table}{waterfalls}")
+
+
+def _assumed_names(d) -> list[str]:
+    """part.field of each assumed value, those that decide the binding margin first."""
+    rows = sorted(d.get("rests_on_assumed") or [], key=lambda r: not r.get("decides"))
+    return [f"{r['part']}.{r['field']}" + (" (decides)" if r.get("decides") else "") for r in rows]

@@ -133,7 +133,7 @@ def _compensator(comp, members) -> dict | None:
 def _geometry(design: PiezoDesignFile, stack, voltage, seal, warnings) -> tuple[float, float]:
     """Ratio and wide piston area: from the diameters when given (warning if
     a stated ratio disagrees), else the wide area that keeps the blocked
-    pressure at the rating (PHYSICS-NOTES, "Pressure")."""
+    pressure at the rating (docs/models.md, "Force path")."""
     if design.wide_diameter is not None:
         ratio = float(hydraulics.area_ratio(design.wide_diameter, design.narrow_diameter))
         if design.ratio is not None and abs(design.ratio / ratio - 1) > RATIO_TOLERANCE:

@@ -8,7 +8,7 @@ out, and all of them stay in the results:
   temperature; amplifier_temperature: the amplifier rated below the
   temperature where it sits (the requirement when it sits at the actuator,
   the electronics bay's temperature otherwise);
-- work: n k_s (d33 V)^2 >= F S (PHYSICS-NOTES, "Work bound") fails at the
+- work: n k_s (d33 V)^2 >= F S (docs/models.md, "Piezohydraulic sizing") fails at the
   voltage the amplifier can reach;
 - amplifier_voltage: the same bound would hold at the stack's rated voltage
   but the amplifier cannot reach it.

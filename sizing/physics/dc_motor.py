@@ -4,7 +4,7 @@
     v' = c1 v + (l / 2 pi) c2 (i - i_load)                        (13, + load)
 
 c1 = -lambda/J (1/s), c2 = k_t/J (rad/(s^2 A)). The seed has no load term;
-PHYSICS-NOTES adds i_load = F l / (2 pi eta k_t), the current that balances a
+docs/models.md adds i_load = F l / (2 pi eta k_t), the current that balances a
 force F on the output through a screw of lead l and efficiency eta.
 Eq. 14 is the exact zero-order-hold discretisation of eq. 13.
 """

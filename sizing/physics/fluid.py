@@ -44,7 +44,7 @@ def density_at(density_15C, thermal_expansion, temperature_degC):
 def effective_bulk_modulus(bulk_modulus, air_fraction, pressure, polytropic=1.4):
     """Oil with a free-air volume fraction at absolute pressure p (Pa):
     1/beta_e = (1-a)/beta + a/(kappa p). Ten percent of the oil's modulus is
-    reached with well under 1% air at a few bar (PHYSICS-NOTES)."""
+    reached with well under 1% air at a few bar (docs/models.md)."""
     a = np.asarray(air_fraction)
     gas = polytropic * np.maximum(np.asarray(pressure), 1e3)
     return 1.0 / ((1.0 - a) / np.asarray(bulk_modulus) + a / gas)

@@ -2,7 +2,7 @@
 
 Mass conservation through the narrowing (eqs. 4-5): y = R x, R = A_w / A_n.
 Pascal's principle at rest (eq. 10 without flow): F_wide = R F_narrow.
-Added here (PHYSICS-NOTES): the oil column is a spring beta A_w^2 / V in
+Added here (docs/models.md): the oil column is a spring beta A_w^2 / V in
 series with the stacks; the output mass is reflected to the stacks by R^2.
 Flow loss (eq. 8) is direction-aware: a sudden contraction on extension and a
 Borda-Carnot expansion on return.

@@ -2,7 +2,7 @@
 
 A flat plate of span b and chord c, hinged at its leading edge and driven at
 its trailing edge (the tip), under a uniform pressure p: the hinge moment is
-p b c^2 / 2, so the tip force is F = p b c / 2 (PHYSICS-NOTES: 484 N at
+p b c^2 / 2, so the tip force is F = p b c / 2 (docs/models.md: 484 N at
 10 kPa and 1210 N for the 15 x 10 in surface at 25 kPa).
 """
 from __future__ import annotations

@@ -14,7 +14,7 @@ U = inf (the default) the model is the seed's eq. 13-14 unchanged. The
 proportional term may act on the measurement instead of the error (I-PD,
 ``proportional_on_measurement``), which removes the closed loop's zeros. The plant is advanced over the period with the exact
 zero-order-hold solution of eq. 13 (eq. 14 for the velocity), with the load
-current of PHYSICS-NOTES and optional Coulomb friction (Karnopp: a piston at
+current of docs/models.md and optional Coulomb friction (Karnopp: a piston at
 rest stays at rest while the net current is inside the friction band).
 Two forms of the diagnose library add fields, inert at their
 defaults (the traces are then bit-identical): ``drive_current_limit``, a

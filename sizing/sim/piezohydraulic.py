@@ -5,7 +5,7 @@ Model (seed eqs. 1-10 with the corrections of docs/models.md):
   stack stiffness (eq. 3), optionally with first-order creep and one-sided
   contact (no return mechanism: stacks push but cannot pull);
 - wide piston: its mass is negligible against the output mass reflected by
-  R^2 (PHYSICS-NOTES), so it is quasi-static: it sits where the stack force,
+  R^2 (docs/models.md), so it is quasi-static: it sits where the stack force,
   the oil pressure and its seal friction balance. With friction this is a
   play (stick band) solved exactly each step, so it cannot chatter;
 - oil: a linear spring p = beta (A_w x - A_n y - V_leak) / V0 (fluid

@@ -44,7 +44,7 @@ from ..physics.bouc_wen import BoucWen, transfer
 
 FACTOR_FLOOR = 0.05
 # assumed: oil pre-charged to ~1 MPa absolute (bootstrap reservoir); free air
-# at atmospheric pressure would be ten times softer (PHYSICS-NOTES, air).
+# at atmospheric pressure would be ten times softer (docs/models.md, hydraulic stage).
 AIR_PRESSURE_PA = 1.0e6
 DISPLACEMENT_FIELDS = ("stroke", "stroke_per_volt")
 OPERATING_TEMPERATURE = "operating.temperature"

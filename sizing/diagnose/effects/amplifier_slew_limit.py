@@ -1,5 +1,5 @@
 """Amplifier slew limit: the drive current i = C dV/dt of the stacks is
-bounded (PHYSICS-NOTES, "Drive current"), so the voltage cannot follow fast
+bounded (docs/models.md, "Piezohydraulic sizing"), so the voltage cannot follow fast
 commands; the run's voltage column is the command.
 
 Model: the voltage ramps at most at the slew rate. Sizes: 1000 and
@@ -36,7 +36,7 @@ EFFECT = Effect(
     params=(Param("slew_rate_V_s", 20.0, 2e5, log=True, doc="largest dV/dt the amplifier delivers"),),
     sizes=({"slew_rate_V_s": 1000.0}, {"slew_rate_V_s": 300.0}),
     fields={"slew_rate_V_s": "slew_rate"},
-    source="PHYSICS-NOTES (drive current i = C dV/dt)")
+    source="docs/models.md (drive current i = C dV/dt)")
 
 
 BANDWIDTH = Effect(

@@ -25,7 +25,7 @@ import numpy as np
 
 from .base import Effect, Param
 
-SOURCE = "seed eq. 13 with a saturated input; PHYSICS-NOTES (DC motor under load)"
+SOURCE = "seed eq. 13 with a saturated input; docs/models.md (DC motor under load)"
 
 COMMAND = Effect(
     name="current_saturation", technology="dc_motor", form="command",

@@ -1,5 +1,5 @@
 """Fluid compressibility: entrained air lowers the effective bulk modulus of
-the oil tenfold or more (PHYSICS-NOTES, "Fluid compliance"), so the oil
+the oil tenfold or more (docs/models.md, "Hydraulic stage"), so the oil
 column becomes a soft spring in series with the stacks: the output loses
 stroke under load and rings after fast inputs.
 
@@ -31,7 +31,7 @@ EFFECT = Effect(
     name="fluid_compressibility", technology="piezohydraulic",
     params=(Param("bulk_modulus_Pa", 5e6, 2e9, log=True, doc="effective bulk modulus of the oil"),),
     fields={"bulk_modulus_Pa": "bulk_modulus"}, nominal_factors=(1 / 10, 1 / 40),
-    source="PHYSICS-NOTES (fluid compliance, entrained air); Merritt, Hydraulic Control Systems (1967) ch. 2")
+    source="docs/models.md (fluid compliance, entrained air); Merritt, Hydraulic Control Systems (1967) ch. 2")
 
 
 AIR = EntrainedAir(

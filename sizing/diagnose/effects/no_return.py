@@ -22,4 +22,4 @@ class NoReturn(Effect):
 
 EFFECT = NoReturn(
     name="no_return", technology="piezohydraulic", params=(), sizes=({}, {}),
-    source="seed sec. 4 (first prototype without return mechanism); PHYSICS-NOTES")
+    source="seed sec. 4 (first prototype without return mechanism); docs/models.md")

@@ -33,7 +33,7 @@ def evaluate(design_path: str | Path, catalog_dir: str | Path | None = None) -> 
 
 def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-out",
           catalog_dir: str | Path | None = None, baseline: str | Path | None = None,
-          progress=None) -> dict:
+          progress=None, detail: str = "summary") -> dict:
     """Size, verify and rank designs for a requirements file (docs/formats.md).
 
     Writes results.json, candidates.csv and report.html into ``out_dir``
@@ -41,7 +41,9 @@ def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-ou
     ``out_dir`` is None). ``baseline``: an earlier results.json to compare
     with ("changes" in the results, "What changed" in the report).
     ``progress(stage, done, total)`` is called while candidates are sized and
-    simulated. Raises InputError for bad input before writing anything.
+    simulated. ``detail``: "summary" counts the combinations ruled out before
+    sizing by reason (``summary.ruled_out``); "full" also records each one.
+    Raises InputError for bad input before writing anything.
     """
     import json
 
@@ -58,7 +60,10 @@ def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-ou
     cat = load_catalog(catalog_dir)
     check_solve_steps(req, cat, str(requirements_path))
     old = _load_baseline(baseline) if baseline is not None else None
-    output = run(req, sha, cat, progress=progress)
+    if detail not in ("summary", "full"):
+        from .errors import InputError
+        raise InputError(None, "--detail", f'expected "summary" or "full", got {detail!r}')
+    output = run(req, sha, cat, progress=progress, detail=detail)
     results = output.results
     results["catalog_dir"] = str(cat.folder.resolve())
     if old is not None:
@@ -120,6 +125,22 @@ def check_solve_steps(req, cat: Catalog, file: str) -> None:
         steps += sum(dc_steps(dc_duration(req), act.pid.rate, n, OUTPUT_RATE_HZ) for act in cat.dc_actuators.values())
     check_steps(steps, file, "[requirements].stroke",
                 "simulation steps (candidates x load cases x stroke / speed)")
+    check_envelope(req, cat, file)
+
+
+def check_envelope(req, cat: Catalog, file: str) -> None:
+    """Refuse (exit 2) an envelope that no stack fits in: shorter than the
+    shortest stack or narrower than the thinnest one."""
+    from .errors import InputError
+    env, stacks = req.envelope, list(cat.stacks.values())
+    if not stacks:
+        return
+    for field, limit, need, what in (("max_length", env.max_length, min(s.length for s in stacks), "length"),
+                                     ("max_diameter", env.diameter, min(s.diameter for s in stacks), "diameter")):
+        if limit is not None and limit < need:
+            raise InputError(file, f"[envelope].{field}",
+                             f"expected room for at least one stack: the smallest stack {what} is "
+                             f"{need * 1e3:g} mm, the envelope gives {limit * 1e3:g} mm")
 
 
 def _load_baseline(path: str | Path) -> dict:

@@ -108,10 +108,13 @@ def solve(requirements: Path = typer.Argument(..., help="requirements.toml (docs
           catalog: Optional[Path] = CatalogOpt,
           baseline: Optional[Path] = typer.Option(None, "--baseline", help="An earlier results.json: report what changed."),
           quiet: bool = typer.Option(False, "--quiet", help="No progress bar and no summary."),
+          detail: str = typer.Option("summary", "--detail",
+                                     help="summary: combinations ruled out before sizing counted by reason; "
+                                          "full: a record of each in results.json."),
           max_steps: Optional[float] = MaxStepsOpt):
     """Size, verify by simulation and rank every design for the requirements."""
     with use_limits(steps=max_steps):
-        results = _solve(requirements, out, catalog, baseline, quiet)
+        results = _solve(requirements, out, catalog, baseline, quiet, detail)
     if not quiet:
         for group in results["summary"]["groups"]:
             typer.echo(f"{group['label']}: {group['text']}")
@@ -122,10 +125,10 @@ def solve(requirements: Path = typer.Argument(..., help="requirements.toml (docs
                    f"({results['runtime_s']:.1f} s)")
 
 
-def _solve(requirements, out, catalog, baseline, quiet) -> dict:
+def _solve(requirements, out, catalog, baseline, quiet, detail="summary") -> dict:
     with _StageBars(quiet) as bars:          # the same bars as robust and sweep (below)
         return api.solve(requirements, out, catalog, baseline,
-                         progress=lambda stage, done, total: bars(f"{stage} candidates", done, total))
+                         progress=lambda stage, done, total: bars(f"{stage} candidates", done, total), detail=detail)
 
 
 @catalog_app.command("list")

@@ -10,7 +10,7 @@ UNITS = {"mass": ("mass_kg", 1.0, "mass (kg)"), "cost": ("cost_usd", 1.0, "cost 
 SHOWN_STAGES = ("simulated", "sized", "gp_infeasible")
 MARGIN_ORDER = ("stroke", "blocked_force", "speed", "temperature", "amplifier_temperature", "pressure",
                 "drive_current", "amplifier_continuous_current", "natural_frequency", "overshoot", "thermal_drift",
-                "wide_gap", "packing", "compensator_capacity", "compensator_leak", "holding_force", "work")
+                "wide_gap", "packing", "compensator_capacity", "compensator_hold", "amplifier_units", "stack_temperature", "holding_force", "work")
 
 
 def _axes(objectives: list[str]) -> tuple[str, str]:

@@ -29,16 +29,21 @@ CHECKS = {
     "stroke": "simulated stroke from the loaded rest (static: free stroke R d33 V) against the required stroke",
     "blocked_force": "blocked force with the whole force path in series (stacks, base plate, frame, wide piston, oil, "
                      "compensator, end cap, narrow piston), less the seal friction at the blocked pressure",
-    "amplifier_continuous_current": "amplifier continuous rating against 2 n C_large V x strokes per second ([duty])",
-    "wide_gap": "wide oil gap against the stack stroke plus 0.5 mm clearance",
+    "amplifier_continuous_current": "the amplifier units' continuous rating against the rms current of the duty "
+                                    "(two ramps of n C_large V / t_ramp per cycle, [duty])",
+    "amplifier_units": "amplifier units in parallel allowed (options.max_amplifier_units) against the units the ramp "
+                       "and the duty need",
+    "stack_temperature": "stack rating against the required temperature plus its self-heating at the duty",
+    "wide_gap": "wide oil gap against the stack stroke plus 0.5 mm clearance and 0.1 mm tolerance",
     "packing": "stacks that fit under the wide piston (circle packing, 1 mm spacing) against the stack count",
     "compensator_capacity": "compensator capacity against the hydraulic volume change it takes up",
-    "compensator_leak": "orifice compensator: output creep under the largest load over one duty cycle",
+    "compensator_hold": "orifice compensator: output creep under the largest load over the hold time ([duty] hold_time)",
     "speed": "required stroke / simulated time to reach it, slowest load case (static: planned drive ramp)",
     "temperature": "every actuator component's rating (stacks, fluid, seals; DC actuator) against the required maximum",
     "amplifier_temperature": "amplifier rating against where it sits (electronics bay or actuator, see assumptions)",
     "pressure": "seal pressure rating against the blocked pressure in the wide chamber",
-    "drive_current": "amplifier peak current against n C_large dV/dt needed to reach the stroke in time",
+    "drive_current": "amplifier units' current (peak within its rated pulse, else continuous) against n C_large dV/dt "
+                     "needed to reach the stroke in time",
     "natural_frequency": "sqrt(k / (m_wide + R^2 m_narrow)) with the fluid spring, against the minimum",
     "overshoot": "simulated overshoot against the allowed overshoot",
     "thermal_drift": "net of the thermal budget (oil, casing, stacks, pistons, frame, compensator) against the allowed drift",

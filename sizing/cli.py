@@ -193,6 +193,18 @@ def catalog_add(kind: str = typer.Argument(..., help="Part kind: stack, fluid, s
     typer.echo(f"{result.file}: added {len(result.ids)} {result.kind} entr{'y' if len(result.ids) == 1 else 'ies'}: {', '.join(result.ids)}")
 
 
+@catalog_app.command("import-mgdb")
+def catalog_import_mgdb(tables: Path = typer.Argument(..., help="Folder of the makers' motor and gearhead tables (MGDB CSVs: maxon_*, faulhaber_*, allied_motion_motors.csv)."),
+                        screws: Optional[Path] = typer.Option(None, "--screws", help="CSV of makers' ball screws with load ratings (screws-sourced.csv)."),
+                        catalog: Optional[Path] = CatalogOpt):
+    """Import brushless motors, their mountable gearheads and ball screws from makers' tables, each value with its provenance."""
+    from .io.mgdb import import_mgdb
+    done = import_mgdb(tables, screws, catalog)
+    skipped = ", ".join(f"{n} {what}" for what, n in done["skipped"].items() if n)
+    typer.echo(f"imported {done['motors']} motors, {done['gears']} gearheads, {done['screws']} screws into "
+               f"{', '.join(done['files'])}" + (f" (skipped: {skipped})" if skipped else ""))
+
+
 @app.command()
 def diagnose(campaign: Path = typer.Argument(..., help="Campaign folder: rig.toml and runs/NAME.csv (docs/formats.md)."),
              holdout: Optional[List[str]] = typer.Option(None, "--holdout", help="Run (CSV name without .csv) never used for fitting; repeatable. Required unless --check."),

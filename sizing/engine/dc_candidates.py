@@ -1,7 +1,7 @@
 """The DC motor option on the same requirements, load cases and metrics.
 
 Each catalog DC actuator is simulated (``engine/dc.py``: seed eq. 13-14 with
-the load term of PHYSICS-NOTES and the catalog's PID) for a step of the
+the load term of docs/models.md and the catalog's PID) for a step of the
 required stroke under each load case. A stroke counts as reached at 98 % of
 the step (``dc.SETTLED``); speed = that travel / the time to reach it.
 """
@@ -10,6 +10,7 @@ from __future__ import annotations
 from ..io.catalog import Catalog
 from ..io.requirements import RequirementsFile
 from . import dc as dc_engine
+from . import dc_assumed
 from .rank import ceiling_margin, floor_margin
 from .search import temperature_margin
 
@@ -56,4 +57,5 @@ def dc_candidates(req: RequirementsFile, catalog: Catalog, loads: list[float]) -
                        "duration": dc_duration(req), "temperature": r.max_temperature},
             "reason": "",
         })
+        dc_assumed.fill(catalog, out[-1])
     return {"candidates": out, "actuators": dict(catalog.dc_actuators)}

@@ -43,6 +43,8 @@ HOUSING_MASS_PER_LENGTH = 1.2  # kg/m: aluminium tube housing the screw (assumed
 HOUSING_FIXED_MASS = 0.25     # kg: bearing block, end caps, rod-end clevis (assumed)
 ASSEMBLY_USD = 600.0          # assumed: machining and assembly of housing and bearing block
 REQUIRED_LIFE_H = 200.0       # assumed: ground test, qualification and flights of a glide body
+STATIC_SAFETY_REQUIRED = screw_phys.STATIC_SAFETY_WITH_VIBRATION   # C0 / F_peak (THK, with vibration)
+SCREW_BACK_EFFICIENCY = 0.75  # reverse efficiency of a ball screw, the low end of HIWIN's 0.75-0.85
 
 
 @dataclass
@@ -67,44 +69,91 @@ def _col(entries, name, default=np.nan):
 
 
 def enumerate_parts(catalog) -> PartArrays:
-    """Every motor x screw x (gear or none) x drive."""
-    M, S, G, D = (list(catalog.motors.values()), list(catalog.screws.values()),
-                  [None] + list(catalog.gears.values()), list(catalog.drives.values()))
+    """Every motor x (gear that mounts on it, or none) x screw x drive."""
+    lists = part_lists(catalog)
+    M, S, G, D = lists
     if not (M and S and D):
         return PartArrays(*(np.array([], dtype=object) for _ in range(4)), values={})
-    im, isc, ig, idr = (a.ravel() for a in np.meshgrid(np.arange(len(M)), np.arange(len(S)), np.arange(len(G)),
-                                                          np.arange(len(D)), indexing="ij"))
-    gears = [g for g in G if g is not None]
-    has_gear = ig > 0
-    gi = np.maximum(ig - 1, 0)
+    pm, pg = [], []
+    for i, gears in enumerate(mountable(catalog)):
+        pm += [i] * (len(gears) + 1)
+        pg += [0] + [int(g) + 1 for g in gears]
+    pair, isc, idr = (a.ravel() for a in np.meshgrid(np.arange(len(pm)), np.arange(len(S)), np.arange(len(D)),
+                                                      indexing="ij"))
+    return parts_at(lists, np.asarray(pm)[pair], isc, np.asarray(pg)[pair], idr)
 
-    def gear_col(name, none_value):
-        if not gears:
-            return np.full(len(ig), none_value)
-        return np.where(has_gear, _col(gears, name)[gi], none_value)
 
-    v = {}
-    for name in ("torque_constant", "back_emf_constant", "winding_resistance", "resistance_temperature_coefficient",
-                 "torque_constant_temperature_coefficient", "inductance", "rotor_inertia", "viscous_damping",
-                 "continuous_torque", "peak_torque", "max_speed", "rated_voltage", "thermal_resistance",
-                 "thermal_time_constant", "max_winding_temperature", "max_temperature", "mass", "cost_usd"):
-        v["motor_" + name] = _col(M, name)[im]
-    v["motor_magnet_max_temperature"] = _col(M, "magnet_max_temperature", np.inf)[im]
-    for name in ("lead", "diameter", "efficiency", "dynamic_load_rating", "inertia_per_length", "mass_per_length",
-                 "nut_mass", "max_speed", "elastic_modulus", "max_temperature", "cost_usd"):
-        v["screw_" + name] = _col(S, name)[isc]
-    v["gear_ratio"] = gear_col("ratio", 1.0)
-    v["gear_efficiency"] = gear_col("efficiency", 1.0)
-    v["gear_inertia"] = gear_col("inertia", 0.0)
-    v["gear_mass"] = gear_col("mass", 0.0)
-    v["gear_max_input_speed"] = gear_col("max_input_speed", np.inf)
-    v["gear_max_output_torque"] = gear_col("max_output_torque", np.inf)
-    v["gear_max_temperature"] = gear_col("max_temperature", np.inf)
-    v["gear_cost_usd"] = gear_col("cost_usd", 0.0)
-    for name in ("bus_voltage", "continuous_current", "peak_current", "rate", "max_temperature", "mass", "cost_usd"):
-        v["drive_" + name] = _col(D, name)[idr]
-    ids = lambda entries, idx: np.array([e.id if e is not None else None for e in entries], dtype=object)[idx]
-    return PartArrays(ids(M, im), ids(S, isc), ids(G, ig), ids(D, idr), v)
+def part_lists(catalog) -> tuple[list, list, list, list]:
+    """(motors, screws, [None] + gears, drives) in catalog order."""
+    return (list(catalog.motors.values()), list(catalog.screws.values()),
+            [None] + list(catalog.gears.values()), list(catalog.drives.values()))
+
+
+def mountable(catalog) -> list[np.ndarray]:
+    """Per motor (catalog order), the indices into catalog.gears of the
+    gearheads that mount on it, by rising ratio: a gear with a ``mount``
+    (a maker's gearhead) fits the motors whose ``gear_mounts`` name it; a
+    gear without one (a generic reduction, assumed adaptable) fits every motor."""
+    gears = list(catalog.gears.values())
+    by_mount: dict = {}
+    for j, g in enumerate(gears):
+        by_mount.setdefault(g.mount, []).append(j)
+    out = []
+    for m in catalog.motors.values():
+        keys = [None] + list(m.gear_mounts or ())
+        idx = sorted({j for k in keys for j in by_mount.get(k, ())}, key=lambda j: (gears[j].ratio, j))
+        out.append(np.asarray(idx, dtype=int))
+    return out
+
+
+_COLUMNS: dict = {}
+
+
+def _columns(lists) -> dict:
+    """Per part list, its SI columns (cached per list identity for one search)."""
+    key = tuple(id(x) for x in lists)
+    if _COLUMNS.get("key") != key:
+        M, S, G, D = lists
+        gears = [g for g in G if g is not None]
+        cols = {}
+        for name in MOTOR_FIELDS:
+            cols["motor_" + name] = _col(M, name)
+        cols["motor_magnet_max_temperature"] = _col(M, "magnet_max_temperature", np.inf)
+        for name in SCREW_FIELDS:
+            cols["screw_" + name] = _col(S, name)
+        cols["screw_static_load_rating"] = _col(S, "static_load_rating", np.inf)
+        for name, none_value in GEAR_FIELDS.items():
+            cols["gear_" + name] = np.concatenate([[none_value], _col(gears, name, none_value)])
+        for name in DRIVE_FIELDS:
+            cols["drive_" + name] = _col(D, name)
+        ids = lambda entries: np.array([e.id if e is not None else None for e in entries], dtype=object)
+        cols["ids"] = (ids(M), ids(S), ids(G), ids(D))
+        _COLUMNS.clear()
+        _COLUMNS.update(key=key, cols=cols, lists=lists)
+    return _COLUMNS["cols"]
+
+
+MOTOR_FIELDS = ("torque_constant", "back_emf_constant", "winding_resistance", "resistance_temperature_coefficient",
+                "torque_constant_temperature_coefficient", "inductance", "rotor_inertia", "viscous_damping",
+                "continuous_torque", "peak_torque", "max_speed", "rated_voltage", "thermal_resistance",
+                "thermal_time_constant", "max_winding_temperature", "max_temperature", "mass", "cost_usd")
+SCREW_FIELDS = ("lead", "diameter", "efficiency", "dynamic_load_rating", "inertia_per_length", "mass_per_length",
+                "nut_mass", "max_speed", "elastic_modulus", "max_temperature", "cost_usd")
+# gear columns and their value for a direct drive (no gear)
+GEAR_FIELDS = {"ratio": 1.0, "efficiency": 1.0, "inertia": 0.0, "mass": 0.0, "max_input_speed": np.inf,
+               "max_output_torque": np.inf, "continuous_output_torque": np.inf, "max_temperature": np.inf,
+               "cost_usd": 0.0}
+DRIVE_FIELDS = ("bus_voltage", "continuous_current", "peak_current", "rate", "max_temperature", "mass", "cost_usd")
+
+
+def parts_at(lists, im, isc, ig, idr) -> PartArrays:
+    """The combinations (motor im, screw isc, gear ig (0: none, else
+    catalog gear ig - 1), drive idr) of the part lists (``part_lists``)."""
+    cols = _columns(lists)
+    index = {"motor": im, "screw": isc, "gear": ig, "drive": idr}
+    v = {name: col[index[name.split("_", 1)[0]]] for name, col in cols.items() if name != "ids"}
+    iM, iS, iG, iD = cols["ids"]
+    return PartArrays(iM[im], iS[isc], iG[ig], iD[idr], v)
 
 
 def plant(p: PartArrays, stroke: float, temperature: float) -> dict[str, np.ndarray]:
@@ -166,15 +215,26 @@ def static_screen(p: PartArrays, req, loads, ambient=None, settings=None) -> tup
     T_op = T if ambient is None else np.asarray(ambient, float)
     F_load = max(loads) if loads else 0.0
     pl = plant(p, r.stroke, T_op)
-    kt, lead, eta = pl["torque_constant"], pl["lead"], pl["efficiency"]
+    lead, eta = pl["lead"], pl["efficiency"]
+    # k_t with the magnets at the winding temperature of the holding duty (physics/motor.py)
+    t_load = screw_phys.torque_for_force(F_load, lead, eta)
+    hold = derated(p, T_op, t_load)
+    kt = hold["torque_constant"]
+    pl["torque_constant"], pl["c2"] = kt, kt / pl["inertia"]
     i_max = current_limit(p, kt) if settings is None else np.minimum(settings["current_limit_A"], v["drive_peak_current"])
     F_peak = np.minimum(screw_phys.force_from_torque(kt * i_max, lead, eta),
                         screw_phys.force_from_torque(v["gear_max_output_torque"], v["screw_lead"], v["screw_efficiency"]))
-    i_load = screw_phys.torque_for_force(F_load, lead, eta) / kt
-    hold = winding(p, T_op, i_load)
+    i_load = hold["current_A"]
     r_hot = motor_phys.resistance_at(v["motor_winding_resistance"], v["motor_resistance_temperature_coefficient"],
                                      np.minimum(hold["temperature_degC"], 1e3))
-    rated = hold if ambient is None else winding(p, T, i_load)      # the ratings' check, at the maximum
+    rated = hold if ambient is None else derated(p, T, t_load)      # the ratings' check, at the maximum
+    # holding the steady load on the back-driven screw for the hold time, no brake
+    t_hold = screw_phys.holding_torque(F_load, v["screw_lead"], SCREW_BACK_EFFICIENCY, v["gear_ratio"],
+                                       v["gear_efficiency"])
+    held = derated(p, T_op, t_hold)
+    hold_power = r_hot * held["current_A"] ** 2
+    end_of_hold = motor_phys.holding_temperature(rated["temperature_degC"], held["temperature_degC"],
+                                                 req.duty.hold_time, v["motor_thermal_time_constant"])
     w_mech = np.minimum.reduce([v["motor_max_speed"], v["gear_max_input_speed"], v["screw_max_speed"] * v["gear_ratio"]])
     u_drive = drive_voltage(p, w_mech) if settings is None else np.minimum(v["drive_bus_voltage"], settings["voltage_limit_V"])
     w_volt = motor_phys.speed_ceiling(u_drive, v["motor_back_emf_constant"], r_hot, i_load)
@@ -193,6 +253,10 @@ def static_screen(p: PartArrays, req, loads, ambient=None, settings=None) -> tup
         "buckling_load_N": P_cr, "screw_life_h": life_h, "inertia_kg_m2": pl["inertia"],
         "effective_lead_m": lead, "efficiency": eta, "torque_constant_at_temperature": kt,
         "drive_voltage_V": u_drive, "hot_resistance_ohm": r_hot, "ratio_low": n_low, "ratio_high": n_high, "stroke_m": np.full(len(p), TRAVEL_FACTOR * r.stroke),
+        "magnet_temperature_degC": hold["temperature_degC"], "holding_power_W": hold_power,
+        "holding_power_with_brake_W": np.zeros(len(p)), "static_safety": screw_phys.static_safety(v["screw_static_load_rating"], F_peak),
+        "continuous_torque_rated_N_m": motor_phys.continuous_torque_at(v["motor_continuous_torque"],
+                                                                       v["motor_max_winding_temperature"], T),
     }
     margins = {
         "blocked_force": F_peak / r.blocked_force - 1.0,
@@ -205,8 +269,24 @@ def static_screen(p: PartArrays, req, loads, ambient=None, settings=None) -> tup
         "drive_current": v["drive_continuous_current"] / np.maximum(i_load, 1e-12) - 1.0,
         "buckling": P_cr / r.blocked_force - 1.0,
         "screw_life": life_h / REQUIRED_LIFE_H - 1.0,
+        "static_safety": static["static_safety"] / STATIC_SAFETY_REQUIRED - 1.0,
+        "gear_torque": v["gear_continuous_output_torque"] / np.maximum(screw_phys.torque_for_force(
+            F_load, v["screw_lead"], v["screw_efficiency"]), 1e-12) - 1.0,
+        "continuous_torque": static["continuous_torque_rated_N_m"] / np.maximum(kt * rated["current_A"], 1e-12) - 1.0,
+        "holding": temperature_margin(v["motor_max_winding_temperature"], end_of_hold),
     }
     return pl, static, margins
+
+
+def derated(p: PartArrays, ambient, torque) -> dict[str, np.ndarray]:
+    """Winding temperature, k_t and current of each motor delivering
+    ``torque`` (RMS, N m) at ``ambient`` with its magnets at the winding
+    temperature (``motor.derated_winding``)."""
+    v = p.values
+    Tw, kt, i = motor_phys.derated_winding(v["motor_thermal_resistance"], v["motor_winding_resistance"],
+                                           v["motor_resistance_temperature_coefficient"], v["motor_torque_constant"],
+                                           v["motor_torque_constant_temperature_coefficient"], ambient, torque)
+    return {"temperature_degC": Tw, "torque_constant": kt, "current_A": i}
 
 
 def ratio_interval(kt, ke, r_hot, i_max, lead, eta, u_bus, w_mech_motor, force, load, speed):

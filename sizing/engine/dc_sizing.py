@@ -1,9 +1,9 @@
-"""The DC option sized from parts (issue 11): screen every motor x screw x
+"""The DC option sized from parts: screen every motor x screw x
 gear x drive (``dc_parts``), give each design its controller
 (``dc_controller``), simulate the best under every load case with the
 back-EMF, current and voltage limits and the load term (``sim/dc_motor``,
 batched over designs and cases), and turn the results into candidates
-(CONTRACTS.md, second round).
+(docs/formats.md).
 
 Simulation-based margins replace the static ones where the simulation says
 more: stroke and speed (98 % of the step, as for the catalog actuators),
@@ -24,11 +24,14 @@ from ..sim.dc_motor import DCMotorModel, simulate
 from ..sim.metrics import step_metrics
 from . import dc_controller as ctl
 from .dc import OUTPUT_RATE_HZ, SETTLED
+from . import dc_assumed, dc_search, dc_verdict
 from .dc_parts import enumerate_parts, metrics, static_screen, temperature_margin
 from .dc_candidates import dc_duration
 from .rank import nondominated_levels, verdict
 
 MAX_SIMULATED = 300     # designs simulated per solve (each under every load case)
+REAL_SHARE = 1 / 3      # of the simulation budget, first for designs whose parts all exist (dc_verdict)
+NOT_SIMULATED = "not simulated: statically feasible, beyond the simulation budget (later Pareto level)"
 MIN_SIMULATED = 24      # filled with the closest-to-feasible when fewer pass the screen
 SIM_CHUNK = 64          # rows (design x load case) per batched simulation
 OBJECTIVE_KEYS = {"mass": "mass_kg", "cost": "cost_usd", "volume": "volume_m3", "power": "power_W"}
@@ -61,39 +64,64 @@ def models(pl, static, gains, p, idx, loads, hot_resistance) -> DCMotorModel:
         back_emf_constant=rep(p.values["motor_back_emf_constant"]), winding_resistance=rep(hot_resistance))
 
 
-def _choose(margins, met, req) -> np.ndarray:
+def _choose(margins, met, req, real=None) -> np.ndarray:
     """Statically feasible designs by Pareto level, then the closest to
-    feasible, up to MAX_SIMULATED (at least MIN_SIMULATED when there are)."""
+    feasible, up to MAX_SIMULATED (at least MIN_SIMULATED when there are).
+    ``real`` (bool per row, designs whose parts all exist): up to
+    REAL_SHARE of the budget goes first to them, chosen the same way, so
+    that the verdict on real parts does not depend on generic parts
+    crowding them out."""
+    if real is not None and real.any() and not real.all():
+        idx = np.flatnonzero(real)
+        first = idx[_choose({k: v[idx] for k, v in margins.items()}, {k: v[idx] for k, v in met.items()}, req)]
+        first = first[: int(MAX_SIMULATED * REAL_SHARE)]
+        rest = [i for i in _choose(margins, met, req) if i not in set(first)]
+        return np.concatenate([first, rest])[:max(MAX_SIMULATED, len(first))].astype(int)
     M = np.vstack(list(margins.values()))
     worst = np.nan_to_num(M.min(axis=0), nan=-np.inf, neginf=-1e9)
     ok = worst >= 0
     F = np.column_stack([met[OBJECTIVE_KEYS[k]] for k in req.objectives.minimize])
     level = np.full(len(worst), 10**6)
     if ok.any():
-        level[ok] = nondominated_levels(F[ok])
+        level[ok] = pareto_levels(F[ok])
     score = F.sum(axis=1) / np.maximum(F.min(axis=0), 1e-12).sum()
     order = np.lexsort((score, -worst, level, ~ok))
     n = min(len(order), MAX_SIMULATED, max(int(ok.sum()), MIN_SIMULATED))
     return order[:n]
 
 
-def dc_parts_candidates(req, catalog, loads, progress=None, duration=None) -> dict:
-    """Candidates of every parts combination; ``models`` keeps the
-    simulation model of each simulated design for the report's traces."""
+def dc_parts_candidates(req, catalog, loads, progress=None, duration=None, exhaustive=False) -> dict:
+    """Candidates of the parts combinations; ``models`` keeps the
+    simulation model of each simulated design for the report's traces.
+    The catalog-scale search (``dc_search``) screens what no bound rules
+    out and simulates the best; only simulated designs get a record, the
+    rest are counted by reason in ``ruled_out``. ``exhaustive`` (a catalog
+    of one design, ``sizing evaluate``): every combination, each a record."""
     duration = dc_duration(req) if duration is None else duration
-    p = enumerate_parts(catalog)
+    ruled_out, combinations = {}, None
+    if exhaustive:
+        p = enumerate_parts(catalog)
+    else:
+        found = dc_search.search(catalog, req, loads)
+        p, ruled_out, combinations = found.parts, dict(found.ruled_out), found.combinations
     if len(p) == 0:
-        return {"candidates": [], "models": {}}
+        return {"candidates": [], "models": {}, "ruled_out": ruled_out, "combinations": combinations or 0}
     r = req.requirements
     T = r.max_temperature
     pl, static, margins = static_screen(p, req, loads)
     met = metrics(p, req, static["current_limit_A"])
     w0 = ctl.pole_target(req.stroke_time, p.values["drive_rate"])
     gains = ctl.ipd_gains(pl["c1"], pl["c2"], pl["lead"], w0)
-    chosen = _choose(margins, met, req)
+    real_ids = {e.id for _, e in catalog.entries() if dc_verdict.is_real(e)}
+    real = np.array([all(x is None or x in real_ids for x in row) for row in zip(p.motor, p.screw, p.gear, p.drive)])
+    chosen = _choose(margins, met, req, real)
     sims = _simulate(req, pl, static, gains, p, chosen, loads, duration, progress)
     out, kept = [], {}
+    if not exhaustive:
+        _count_unsimulated(ruled_out, margins, np.setdiff1d(np.arange(len(p)), np.fromiter(sims, int, len(sims))))
     for i in range(len(p)):
+        if not exhaustive and i not in sims:
+            continue
         cid = design_id(p, i)
         st = {k: float(v[i]) for k, v in static.items()}
         st["no_load_max_speed_m_s"] = float(st["drive_voltage_V"] / p.values["motor_back_emf_constant"][i]
@@ -124,8 +152,52 @@ def dc_parts_candidates(req, catalog, loads, progress=None, duration=None) -> di
                        "amplifier_location": req.options.amplifier_location,
                        "electronics_bay_temperature": req.options.electronics_bay_temperature},
             "reason": "" if not failed or stage == "simulated" else "ruled out before simulation: " + ", ".join(failed),
+            "rests_on_assumed": [], "rests_on_rules": [],
         })
-    return {"candidates": out, "models": kept}
+        dc_assumed.fill(catalog, out[-1])
+    return {"candidates": out, "models": kept, "ruled_out": ruled_out,
+            "combinations": combinations if combinations is not None else len(p)}
+
+
+def _count_unsimulated(counts: dict, margins: dict, rows) -> None:
+    """Screened combinations the simulation budget left out: each counted
+    under the margin it misses most, or as not simulated (feasible but
+    beyond the simulation budget, on a later Pareto level of mass and cost)."""
+    if len(rows) == 0:
+        return
+    names = list(margins)
+    M = np.nan_to_num(np.vstack([np.asarray(margins[k], float)[rows] for k in names]), nan=-np.inf)
+    worst = M.argmin(axis=0)
+    missed = M[worst, np.arange(len(rows))] < 0
+    for k, name in enumerate(names):
+        n = int(np.sum(missed & (worst == k)))
+        if n:
+            counts[name] = counts.get(name, 0) + n
+    if (~missed).any():
+        counts[NOT_SIMULATED] = counts.get(NOT_SIMULATED, 0) + int((~missed).sum())
+
+
+def pareto_levels(F: np.ndarray) -> np.ndarray:
+    """Non-dominated sorting (level 1 = the Pareto front), as
+    ``rank.nondominated_levels``; for two objectives in O(n log n): by
+    rising first objective, each point joins the first level whose latest
+    member (the lowest second objective so far) does not dominate it."""
+    F = np.asarray(F, float)
+    if F.ndim != 2 or F.shape[1] != 2 or not np.isfinite(F).all():
+        return nondominated_levels(F)
+    import bisect
+    order = np.lexsort((F[:, 1], F[:, 0]))
+    keys: list = []
+    level = np.zeros(len(F), dtype=int)
+    for i in order:
+        key = (F[i, 1], F[i, 0])
+        L = bisect.bisect_left(keys, key)
+        if L == len(keys):
+            keys.append(key)
+        else:
+            keys[L] = key
+        level[i] = L + 1
+    return level
 
 
 def _row_margins(req, p, i, st, margins, sim) -> tuple[dict, dict]:
@@ -217,16 +289,18 @@ def _sim_figures(req, p, i, st, sim) -> tuple[dict, dict]:
     worst = max(cases, key=lambda c: c["load_N"])
     S = r.stroke
     reached = all(c["stroke_m"] >= SETTLED * S for c in cases)
-    i_rms = max(c["rms_current_A"] for c in cases)
     v = p.values
-    Tw = r.max_temperature + float(motor_phys.winding_rise(v["motor_thermal_resistance"][i], v["motor_winding_resistance"][i],
-                                                          v["motor_resistance_temperature_coefficient"][i],
-                                                          r.max_temperature, i_rms))
+    # the simulated RMS current at the screen's k_t, re-derated at the winding it heats (physics/motor.py)
+    torque_rms = st["torque_constant_at_temperature"] * max(c["rms_current_A"] for c in cases)
+    Tw, _, i_rms = (float(x) for x in motor_phys.derated_winding(
+        v["motor_thermal_resistance"][i], v["motor_winding_resistance"][i],
+        v["motor_resistance_temperature_coefficient"][i], v["motor_torque_constant"][i],
+        v["motor_torque_constant_temperature_coefficient"][i], r.max_temperature, torque_rms))
     peak = max(c["peak_speed_m_s"] for c in cases)
     figures = {"stroke_m": worst["stroke_m"], "time_to_stroke_s": worst["time_to_stroke_s"],
                "speed_m_s": min(c["speed_m_s"] for c in cases), "overshoot": max(c["overshoot"] for c in cases),
                "load_N": worst["load_N"], "peak_speed_m_s": peak, "rms_current_A": i_rms,
-               "winding_temperature_degC": Tw, "cases": cases}
+               "rms_torque_N_m": torque_rms, "winding_temperature_degC": Tw, "cases": cases}
     margins = {
         # a servo settles on its reference: the stroke is the designed travel once the
         # simulation shows the step reached (to 98 %) under every load (as for catalog actuators)
@@ -236,6 +310,7 @@ def _sim_figures(req, p, i, st, sim) -> tuple[dict, dict]:
         "winding_temperature": float(temperature_margin(p.values["motor_max_winding_temperature"][i], Tw)),
         "magnet_temperature": float(temperature_margin(p.values["motor_magnet_max_temperature"][i], Tw)),
         "drive_current": float(p.values["drive_continuous_current"][i] / max(i_rms, 1e-12) - 1.0),
+        "continuous_torque": float(st["continuous_torque_rated_N_m"] / max(torque_rms, 1e-12) - 1.0),
         "mechanical_speed": st["mechanical_speed_limit_m_s"] / max(peak, 1e-12) - 1.0,
     }
     return figures, margins
@@ -251,7 +326,7 @@ def evaluate_parts(design, catalog, parts: dict, cases: list[dict]) -> dict:
                   drives={parts["drive"].id: parts["drive"]})
     loads = [c["load_N"] for c in cases]
     req = design_requirements(design, loads)
-    found = dc_parts_candidates(req, one, loads, duration=design.duration)["candidates"]
+    found = dc_parts_candidates(req, one, loads, duration=design.duration, exhaustive=True)["candidates"]
     c = next(x for x in found if x["components"]["gear"] == (parts["gear"].id if parts["gear"] is not None else None))
     sim = c["simulated"] or {"cases": []}
     simulated = [dict(case, **s) for case, s in zip(cases, sim["cases"])]

@@ -75,10 +75,10 @@ RANGES: dict[str, dict[str, tuple[float, float]]] = {
     "motor": {
         "torque_constant": (1e-4, 100.0), "back_emf_constant": (1e-4, 100.0), "winding_resistance": (1e-4, 1e3),
         "resistance_temperature_coefficient": (0.0, 0.01), "torque_constant_temperature_coefficient": (-0.01, 0.0),
-        "inductance": (1e-7, 1.0), "rotor_inertia": (1e-9, 1.0), "viscous_damping": (0.0, 10.0),
-        "continuous_torque": (1e-4, 1e4), "peak_torque": (1e-4, 1e4), "max_speed": (1.0, 1e4),
-        "rated_voltage": (1.0, 1e4), "thermal_resistance": (0.01, 100.0), "thermal_time_constant": (1.0, 1e5),
-        "mass": (1e-3, 1000.0), "cost_usd": (0.0, 1e7),
+        "inductance": (1e-7, 1.0), "rotor_inertia": (1e-11, 1.0), "viscous_damping": (0.0, 10.0),
+        "continuous_torque": (1e-5, 1e4), "peak_torque": (1e-5, 1e4), "max_speed": (1.0, 1e5),
+        "rated_voltage": (1.0, 1e4), "thermal_resistance": (0.01, 1000.0), "thermal_time_constant": (1.0, 1e5),
+        "mass": (1e-4, 1000.0), "cost_usd": (0.0, 1e7),
     },
     "screw": {
         "lead": (1e-4, 0.1), "diameter": (1e-3, 0.2), "dynamic_load_rating": (10.0, 1e7),
@@ -86,7 +86,7 @@ RANGES: dict[str, dict[str, tuple[float, float]]] = {
         "max_speed": (1.0, 1e4), "elastic_modulus": (1e9, 1e12), "cost_usd": (0.0, 1e7),
     },
     "gear": {
-        "ratio": (1.0, 1e3), "inertia": (0.0, 1.0), "mass": (1e-3, 1000.0), "max_input_speed": (1.0, 1e4),
+        "ratio": (1.0, 1e5), "inertia": (0.0, 1.0), "mass": (1e-4, 1000.0), "max_input_speed": (1.0, 1e5),
         "max_output_torque": (1e-3, 1e5), "cost_usd": (0.0, 1e7),
     },
     "drive": {
@@ -114,7 +114,8 @@ def _file_of(kind: str) -> str:
 
 
 def _problem(catalog: Catalog, kind: str, entry: Entry, field_name: str, message: str) -> InputError:
-    return InputError(str(catalog.folder / _file_of(kind)), f"[[{kind}]] {entry.id}: {field_name}", message)
+    file_name = catalog.origin.get(entry.id) or _file_of(kind)
+    return InputError(str(catalog.folder / file_name), f"[[{kind}]] {entry.id}: {field_name}", message)
 
 
 def problems(catalog: Catalog, today: dt.date | None = None, warnings: list[str] | None = None) -> list[InputError]:

@@ -1,7 +1,7 @@
 """Brushless DC motor limits: the bus-voltage (back-EMF) speed ceiling and
 the winding temperature over a duty cycle.
 
-Voltage ceiling (PHYSICS-NOTES, second round; any motor text, e.g. Hughes,
+Voltage ceiling (any motor text, e.g. Hughes,
 "Electric Motors and Drives", ch. 3): at the bus voltage U a motor carrying
 current i cannot turn faster than
 
@@ -61,3 +61,46 @@ def rms_current_allowed(thermal_resistance, r25, alpha, ambient, max_winding):
     dT = np.maximum(np.asarray(max_winding) - np.asarray(ambient), 0.0)
     r_hot = resistance_at(r25, alpha, max_winding)
     return np.sqrt(dT / (np.asarray(thermal_resistance) * r_hot))
+
+
+# --- ratings at temperature ------------------------------------------------
+# Continuous torque at a hotter ambient (Exlar, "Elevated ambient temperature
+# de-rating of brushless motors", catalog-sources.md 2b): the copper loss the
+# housing can shed falls with the margin between winding limit and ambient,
+#     T_cont(T_a) = T_cont(25 degC) sqrt((T_w,max - T_a) / (T_w,max - 25))
+# (84.5 % at 55 degC for a 130 degC stator; 53 % at 100 degC).
+def continuous_torque_at(t_cont25, max_winding, ambient):
+    """Rated continuous torque (N m) at ``ambient`` (degC); 0 at or above the winding limit."""
+    span = np.asarray(max_winding, float) - REFERENCE_TEMPERATURE
+    left = np.maximum(np.asarray(max_winding, float) - np.asarray(ambient, float), 0.0)
+    return np.asarray(t_cont25) * np.sqrt(left / np.where(span > 0, span, np.inf))
+
+
+def derated_winding(thermal_resistance, r25, alpha, kt25, beta, ambient, torque_rms, iterations=12):
+    """Steady winding temperature (degC), k_t (N m/A) and RMS current (A) of a
+    motor delivering ``torque_rms`` with its magnets at the winding
+    temperature: k_t(T_w) = k_t25 (1 + beta (T_w - 25)) needs more current,
+    which heats the winding, which weakens the magnets (fixed point, a
+    contraction while the winding stays below runaway). Magnets taken at the
+    winding temperature: the rotor of a small motor runs close to it, and
+    nothing in the datasheets says how far below (conservative).
+    Returns inf where the winding runs away."""
+    kt25, beta = np.asarray(kt25, float), np.asarray(beta, float)
+    Tw = np.broadcast_to(np.asarray(ambient, float), np.broadcast(kt25, torque_rms, ambient).shape).copy()
+    for _ in range(iterations):
+        kt = torque_constant_at(kt25, beta, np.minimum(Tw, 1e3))
+        kt = np.maximum(kt, 1e-3 * kt25)
+        i = np.asarray(torque_rms) / kt
+        Tw = np.asarray(ambient) + winding_rise(thermal_resistance, r25, alpha, ambient, i)
+    kt = np.maximum(torque_constant_at(kt25, beta, np.minimum(Tw, 1e3)), 1e-3 * kt25)
+    return Tw, kt, np.asarray(torque_rms) / kt
+
+
+def holding_temperature(start, steady, time, time_constant):
+    """Winding temperature (degC) after holding for ``time`` s, first order
+    from ``start`` towards the holding steady state ``steady``."""
+    start, steady = np.asarray(start, float), np.asarray(steady, float)
+    decay = np.exp(-np.asarray(time) / np.asarray(time_constant))
+    finite = np.isfinite(start) & np.isfinite(steady)
+    mixed = np.where(finite, steady + (np.where(finite, start, 0.0) - np.where(finite, steady, 0.0)) * decay, np.inf)
+    return np.where(np.isnan(start) | np.isnan(steady), np.nan, mixed)

@@ -60,3 +60,38 @@ def cubic_mean_load(loads, fractions):
     q_i the fraction of revolutions at load F_i (ISO 3408-5)."""
     loads, q = np.asarray(loads, float), np.asarray(fractions, float)
     return (np.sum(q * np.abs(loads) ** 3, axis=-1) / np.sum(q, axis=-1)) ** (1.0 / 3.0)
+
+
+# --- makers' ratings -------------------------------------------------------
+# Static safety factor (THK General Catalog, ball screw "static safety
+# factor"; ISO 3408-5): f_s = C0a / F_a,max against the basic static load
+# rating. THK asks f_s >= 1.0-3.5 for machinery without vibration or impact
+# and 2.0-5.0 with them; an air-vehicle surface vibrates: 2.0 is the floor.
+STATIC_SAFETY_WITH_VIBRATION = 2.0
+
+
+def static_safety(static_load_rating, peak_force):
+    """C0 / F_peak (-); inf where the static rating is unknown."""
+    return np.asarray(static_load_rating, float) / np.maximum(np.asarray(peak_force, float), 1e-9)
+
+
+def l10_hours(dynamic_load_rating, equivalent_load, rev_per_second, load_factor=1.0):
+    """Basic rating life (h), THK's L = (C_a / (f_w F_a))^3 10^6 rev at
+    ``rev_per_second`` (f_w 1.0-1.2 for smooth motion without impact)."""
+    return l10_revolutions(dynamic_load_rating, np.asarray(equivalent_load) * load_factor) / np.asarray(rev_per_second) / 3600.0
+
+
+def dn_speed_limit(dn, diameter):
+    """Permissible speed (rad/s) from a maker's DN value: n = DN / D with
+    DN in mm rpm (THK: 70 000 precision / 50 000 rolled over the
+    ball-centre diameter; HIWIN: 70 000 rolled / 90 000 ground over d)."""
+    return np.asarray(dn, float) / (np.asarray(diameter, float) * 1e3) * 2 * np.pi / 60.0
+
+
+def holding_torque(force, lead, back_efficiency, ratio=1.0, gear_back_efficiency=1.0):
+    """Motor torque (N m) that holds ``force`` on a back-drivable screw: the
+    load drives the screw backwards and friction helps the motor,
+    T = F l eta' eta_g' / (2 pi N) with the reverse efficiencies eta'
+    (HIWIN 0.75-0.85 for ball screws). A brake holds the same at no power."""
+    return (np.asarray(force) * np.asarray(lead) * np.asarray(back_efficiency) * np.asarray(gear_back_efficiency)
+            / (2 * np.pi * np.asarray(ratio)))

@@ -1,0 +1,92 @@
+"""What a DC design rests on: its parts' catalog values marked ``assumed:``
+(``rests_on_assumed``, docs/formats.md) and, apart, those stated
+from a maker's family rule (``rests_on_rules``), each with ``decides``:
+the value enters the margin named by the candidate's driver.
+
+``INPUTS`` lists, per DC margin, the fields of each part kind its formula
+uses (``dc_parts.static_screen``, the simulation in ``dc_sizing``, the
+catalog actuators of ``dc_candidates``).
+"""
+from __future__ import annotations
+
+from .rank import verdict
+
+_LOAD_PATH = {"screw": {"lead", "efficiency"}, "gear": {"ratio", "efficiency"}}
+_THERMAL = {"motor": {"winding_resistance", "resistance_temperature_coefficient", "thermal_resistance",
+                      "torque_constant", "torque_constant_temperature_coefficient", "max_winding_temperature"}}
+_FORCE = {"motor": {"torque_constant", "torque_constant_temperature_coefficient", "peak_torque",
+                    "winding_resistance", "thermal_resistance"},
+          "drive": {"peak_current"}, "gear": {"max_output_torque"}}
+_DYNAMIC = {"motor": {"back_emf_constant", "winding_resistance", "resistance_temperature_coefficient",
+                      "torque_constant", "torque_constant_temperature_coefficient", "rotor_inertia",
+                      "viscous_damping", "max_speed", "thermal_resistance"},
+            "drive": {"bus_voltage", "peak_current", "rate"},
+            "gear": {"inertia", "max_input_speed"},
+            "screw": {"inertia_per_length", "mass_per_length", "nut_mass", "max_speed"}}
+_ACTUATOR_DYNAMIC = {"dc_actuator": {"c1", "c2", "current_limit", "supply_voltage", "back_emf_constant",
+                                     "winding_resistance", "screw_lead", "screw_efficiency", "torque_constant",
+                                     "stroke", "max_force"}}
+
+
+def _merge(*maps) -> dict[str, set[str]]:
+    out: dict[str, set[str]] = {}
+    for m in maps:
+        for kind, names in m.items():
+            out.setdefault(kind, set()).update(names)
+    return out
+
+
+INPUTS: dict[str, dict[str, set[str]]] = {
+    "blocked_force": _merge(_FORCE, _LOAD_PATH, {"dc_actuator": {"max_force", "torque_constant", "current_limit",
+                                                                 "screw_lead", "screw_efficiency"}}),
+    "speed": _merge(_DYNAMIC, _LOAD_PATH, _ACTUATOR_DYNAMIC),
+    "stroke": _merge(_DYNAMIC, _LOAD_PATH, _ACTUATOR_DYNAMIC),
+    "overshoot": _merge(_DYNAMIC, _LOAD_PATH, _ACTUATOR_DYNAMIC),
+    "winding_temperature": _merge(_THERMAL, _LOAD_PATH, _DYNAMIC),
+    "magnet_temperature": _merge(_THERMAL, _LOAD_PATH, {"motor": {"magnet_max_temperature"}}),
+    "continuous_torque": _merge(_THERMAL, _LOAD_PATH, {"motor": {"continuous_torque"}}),
+    "holding": _merge(_THERMAL, {"screw": {"lead"}, "gear": {"ratio", "efficiency"},
+                                 "motor": {"thermal_time_constant"}}),
+    "temperature": {k: {"max_temperature"} for k in ("motor", "screw", "gear", "dc_actuator")},
+    "drive_temperature": {"drive": {"max_temperature"}},
+    "drive_current": _merge(_THERMAL, _LOAD_PATH, {"drive": {"continuous_current"}}),
+    "buckling": {"screw": {"diameter", "elastic_modulus"}},
+    "screw_life": {"screw": {"dynamic_load_rating", "lead"}},
+    "static_safety": _merge(_FORCE, _LOAD_PATH, {"screw": {"static_load_rating"}}),
+    "gear_torque": {"gear": {"continuous_output_torque"}, "screw": {"lead", "efficiency"}},
+    "mechanical_speed": _merge(_DYNAMIC, {"motor": {"max_speed"}, "gear": {"max_input_speed", "ratio"},
+                                          "screw": {"max_speed", "lead"}}),
+    "holding_force": {"dc_actuator": {"continuous_force"}},
+}
+
+
+def rests_on(parts: dict, driver: str | None, status: str = "assumed") -> list[dict]:
+    """``[{"part", "field", "decides"}]`` for every value of ``parts`` (kind
+    -> catalog entry or None) whose status starts with ``status``."""
+    entering = INPUTS.get(driver or "", {})
+    out = []
+    for kind, part in parts.items():
+        if part is None:
+            continue
+        for name, text in part.status.items():
+            if text.split(":", 1)[0].strip() == status:
+                out.append({"part": part.id, "field": name, "decides": name in entering.get(kind, ())})
+    return out
+
+
+def fill(catalog, candidate: dict) -> None:
+    """Set the candidate's ``rests_on_assumed`` and ``rests_on_rules`` (in
+    place; [] when none), judged against the margin that binds it."""
+    parts = {}
+    for kind, ident in candidate.get("components", {}).items():
+        if isinstance(ident, str):
+            try:
+                found_kind, entry = catalog.get(ident)
+            except KeyError:
+                continue
+            parts[found_kind] = entry
+    driver = candidate.get("driver")
+    if driver is None:
+        _, driver = verdict(candidate.get("margins", {}))
+    candidate["rests_on_assumed"] = rests_on(parts, driver, "assumed")
+    candidate["rests_on_rules"] = rests_on(parts, driver, "rule")

@@ -1,0 +1,73 @@
+"""The DC verdict on real parts: the best feasible DC design whose parts all
+exist (each has values read from a maker's table, a datasheet or a
+measurement, not only ``assumed:`` ones) beside the best on any parts, with what the latter rests
+on. Best: lowest mass among the feasible, then cost (the ranking's first
+objective; the seed's objectives are mass and cost)."""
+from __future__ import annotations
+
+REAL = ("sourced", "datasheet", "measured")
+
+
+def is_real(entry) -> bool:
+    """A part that exists: at least one value from a maker's table, a
+    datasheet or a measurement (a generic part's values are assumed, bar a
+    setting such as the seed's loop rate)."""
+    return any(text.split(":", 1)[0].strip() in REAL for text in entry.status.values())
+
+
+def _real_design(catalog, c) -> bool:
+    for ident in c.get("components", {}).values():
+        if not isinstance(ident, str):
+            continue
+        try:
+            _, entry = catalog.get(ident)
+        except KeyError:
+            return False
+        if not is_real(entry):
+            return False
+    return True
+
+
+def _brief(c) -> dict:
+    m = c.get("margins", {})
+    driver = c.get("driver") or (min(m, key=m.get) if m else None)
+    sim = c.get("simulated") or {}
+    return {"id": c["id"], "components": c.get("components", {}), "mass_kg": c["metrics"].get("mass_kg"),
+            "cost_usd": c["metrics"].get("cost_usd"), "driver": driver,
+            "binding_margin": m.get(driver) if driver else None,
+            "blocked_force_N": (c.get("static") or {}).get("blocked_force_N"),
+            "winding_temperature_degC": sim.get("winding_temperature_degC"),
+            "speed_m_s": [case.get("speed_m_s") for case in sim.get("cases", [])],
+            "rests_on_assumed": c.get("rests_on_assumed", []), "rests_on_rules": c.get("rests_on_rules", [])}
+
+
+def dc_sourced(catalog, candidates: list[dict]) -> dict:
+    """``summary.dc_sourced``: {"best_on_sourced_parts", "best_on_any_parts",
+    "feasible_on_sourced_parts", "feasible_on_any_parts", "text"}; a best is
+    null when no feasible DC design exists on such parts."""
+    dc = [c for c in candidates if c.get("technology") == "dc_motor" and c.get("variant") == "parts"
+          and c.get("feasible") and c.get("metrics")]
+    key = lambda c: (c["metrics"].get("mass_kg", float("inf")), c["metrics"].get("cost_usd", float("inf")))
+    real = [c for c in dc if _real_design(catalog, c)]
+    best_any = min(dc, key=key) if dc else None
+    best_real = min(real, key=key) if real else None
+    out = {"feasible_on_sourced_parts": len(real), "feasible_on_any_parts": len(dc),
+           "best_on_sourced_parts": _brief(best_real) if best_real else None,
+           "best_on_any_parts": _brief(best_any) if best_any else None}
+    out["text"] = _text(out)
+    return out
+
+
+def _text(out: dict) -> str:
+    a, r = out["best_on_any_parts"], out["best_on_sourced_parts"]
+    if a is None:
+        return "No feasible DC design from parts."
+    line = (f"Best DC design on any parts: {a['id']} ({a['mass_kg']:.2f} kg, binding {a['driver']} "
+            f"{a['binding_margin']:+.1%}), resting on {sum(x['decides'] for x in a['rests_on_assumed'])} assumed "
+            f"value(s) that enter its binding margin.")
+    if r is None:
+        return line + " No feasible DC design on sourced parts."
+    if r["id"] == a["id"]:
+        return line + " It is also the best on sourced parts."
+    return line + (f" Best on sourced parts: {r['id']} ({r['mass_kg']:.2f} kg, binding {r['driver']} "
+                   f"{r['binding_margin']:+.1%}).")

@@ -5,7 +5,7 @@ continuous variables are the amplification ratio R, the wide piston area
 A_w and the drive voltage as a fraction v of the stack's rating. With the
 stack stroke x = x0 v, the oil volume A_w (g + x) (wide gap g plus the
 narrow bore over the stroke) and the fluid spring beta A_w / (g + x) in
-series with the stacks (PHYSICS-NOTES), every static requirement is a
+series with the stacks (docs/models.md), every static requirement is a
 posynomial <= 1 (m: the design margin):
 
     stroke             S (1+m) / (R x)                                   <= 1

@@ -17,7 +17,7 @@ from ..physics.bouc_wen import BoucWen, transfer
 
 # Values used when a design names no fluid or seal (seed section 2.3.2-2.3.3).
 SEED_FRICTION_N = (10.0, 0.2)            # wide, narrow: seed's assumption
-DEFAULT_PRESSURE_RATING_PA = 21e6        # PHYSICS-NOTES: seal and casing rating
+DEFAULT_PRESSURE_RATING_PA = 21e6        # docs/models.md (force path): seal and casing rating
 FALLBACK_FLUID = {                       # ISO VG 15 mineral oil, typical values
     "density": 870.0, "bulk_modulus": 1.5e9, "thermal_expansion": 7e-4,
     "viscosity": 15e-6, "cost_usd": 0.0,
@@ -142,7 +142,7 @@ def reference_bouc_wen(stacks: dict[str, Stack]) -> Stack | None:
 
 def stack_bouc_wen(stack: Stack, reference: Stack | None) -> tuple[BoucWen, str]:
     """Bouc-Wen parameters of ``stack``: its own, or transferred in
-    normalised form from the reference stack (PHYSICS-NOTES item 4)."""
+    normalised form from the reference stack (docs/models.md, corrections to the seed, item 4)."""
     if stack.bouc_wen is not None:
         b = stack.bouc_wen
         return BoucWen(b.d33, b.alpha, b.beta, b.gamma, b.delta, b.n), "measured (catalog)"

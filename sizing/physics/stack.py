@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 
 # Large-signal capacitance runs well above the small-signal datasheet value
-# (PHYSICS-NOTES, "Drive current"); PI quotes up to +70% for full-range drive
+# (docs/models.md, "Piezohydraulic sizing"); PI quotes up to +70% for full-range drive
 # of PZT stacks. Assumed factor, applied to every stack.
 LARGE_SIGNAL_CAPACITANCE_FACTOR = 1.7
 
@@ -31,7 +31,7 @@ def work_capacity(n_stacks, stiffness, stack_free_stroke):
     """Upper bound of the work n stacks can do on a matched load, J:
     n k_s x_free^2 (= blocked force x free stroke of the stack group).
     A design can meet force F and stroke S only if this >= F S
-    (PHYSICS-NOTES, "Work bound")."""
+    (docs/models.md, "Piezohydraulic sizing")."""
     return np.asarray(n_stacks) * np.asarray(stiffness) * np.asarray(stack_free_stroke) ** 2
 
 

@@ -74,3 +74,44 @@ def test_no_bus_voltage_keeps_the_seed_model():
     # a bus far above what the step needs changes nothing either
     b = simulate(DCMotorModel(**base, bus_voltage=1e4, back_emf_constant=0.05, winding_resistance=0.5), t, ref)["position_m"]
     np.testing.assert_allclose(a, b, rtol=0, atol=1e-15)
+
+
+# --- ratings at temperature ---------------------------------------------------
+def test_torque_constant_derating_ndfeb_and_smco():
+    """NdFeB remanence falls 0.12 %/K (e-magnetsuk.com, N and M grades), SmCo
+    0.035 %/K (PHYSICS-NOTES): 100 K above 25 degC, k_t is 12 % and 3.5 % lower."""
+    assert motor.torque_constant_at(0.1, -0.0012, 125.0) == pytest.approx(0.088)
+    assert motor.torque_constant_at(0.1, -0.00035, 125.0) == pytest.approx(0.0965)
+    # maxon EC-4pole 32 HD datasheet columns: 70.5 mNm/A at 25 degC, 68.7 at 100 degC
+    beta = (68.7 / 70.5 - 1) / 75
+    assert motor.torque_constant_at(70.5, beta, 100.0) == pytest.approx(68.7)
+
+
+def test_derated_winding_is_the_fixed_point():
+    """0.3 N m RMS, k_t 0.1 N m/A (NdFeB), R 1 ohm, alpha 0.004, R_th 2 K/W, 100 degC:
+    without derating i = 3 A and dT = 18 (1.3 + 0.004 dT) -> 25.21 K; with the
+    magnets at the winding, T_w solves T_w = 100 + 2 R(T_w) (0.3 / k_t(T_w))^2
+    (found here by bisection, independently of the iteration)."""
+    from scipy.optimize import brentq
+    f = lambda Tw: Tw - 100 - 2 * (1 + 0.004 * (Tw - 25)) * (0.3 / (0.1 * (1 - 0.0012 * (Tw - 25)))) ** 2
+    Tw_ref = brentq(f, 100.0, 300.0)
+    Tw, kt, i = motor.derated_winding(2.0, 1.0, 0.004, 0.1, -0.0012, 100.0, 0.3)
+    assert float(Tw) == pytest.approx(Tw_ref, rel=1e-6)
+    assert float(i) == pytest.approx(0.3 / kt) and float(kt) < 0.1
+    Tw0, kt0, i0 = motor.derated_winding(2.0, 1.0, 0.004, 0.1, 0.0, 100.0, 0.3)
+    assert float(Tw0) == pytest.approx(100 + 23.4 / (1 - 0.072)) and float(i0) == pytest.approx(3.0)
+    assert Tw > Tw0 + 4.0          # the weaker magnets cost current, the current heat
+
+
+def test_continuous_torque_derating_exlar_note():
+    """Exlar's elevated-ambient de-rating (catalog-sources.md 2b): a 130 degC
+    stator keeps sqrt((130 - 55) / 105) = 84.5 % at 55 degC and 53 % at 100 degC."""
+    assert motor.continuous_torque_at(1.0, 130.0, 55.0) == pytest.approx(0.845, abs=5e-4)
+    assert motor.continuous_torque_at(1.0, 130.0, 100.0) == pytest.approx(0.5345, abs=5e-4)
+    assert motor.continuous_torque_at(1.0, 130.0, 140.0) == 0.0
+
+
+def test_holding_temperature_first_order():
+    """From 120 degC towards 150 degC for one time constant: 150 - 30 / e."""
+    assert motor.holding_temperature(120.0, 150.0, 600.0, 600.0) == pytest.approx(150 - 30 / math.e)
+    assert motor.holding_temperature(120.0, np.inf, 60.0, 600.0) == np.inf

@@ -43,6 +43,7 @@ def _brief(c) -> dict:
 
 def dc_sourced(catalog, candidates: list[dict]) -> dict:
     """``summary.dc_sourced``: {"best_on_sourced_parts", "best_on_any_parts",
+    "best_on_sourced_parts_binding_on_no_assumed_value",
     "feasible_on_sourced_parts", "feasible_on_any_parts", "text"}; a best is
     null when no feasible DC design exists on such parts."""
     dc = [c for c in candidates if c.get("technology") == "dc_motor" and c.get("variant") == "parts"
@@ -51,9 +52,13 @@ def dc_sourced(catalog, candidates: list[dict]) -> dict:
     real = [c for c in dc if _real_design(catalog, c)]
     best_any = min(dc, key=key) if dc else None
     best_real = min(real, key=key) if real else None
+    # real parts whose binding margin rests on no assumed value (a maker's rule may enter it)
+    firm = [c for c in real if not any(x["decides"] for x in c.get("rests_on_assumed", []))]
+    best_firm = min(firm, key=key) if firm else None
     out = {"feasible_on_sourced_parts": len(real), "feasible_on_any_parts": len(dc),
            "best_on_sourced_parts": _brief(best_real) if best_real else None,
-           "best_on_any_parts": _brief(best_any) if best_any else None}
+           "best_on_any_parts": _brief(best_any) if best_any else None,
+           "best_on_sourced_parts_binding_on_no_assumed_value": _brief(best_firm) if best_firm else None}
     out["text"] = _text(out)
     return out
 
@@ -68,6 +73,12 @@ def _text(out: dict) -> str:
     if r is None:
         return line + " No feasible DC design on sourced parts."
     if r["id"] == a["id"]:
-        return line + " It is also the best on sourced parts."
-    return line + (f" Best on sourced parts: {r['id']} ({r['mass_kg']:.2f} kg, binding {r['driver']} "
-                   f"{r['binding_margin']:+.1%}).")
+        line += " It is also the best on sourced parts."
+    else:
+        line += (f" Best on sourced parts: {r['id']} ({r['mass_kg']:.2f} kg, binding {r['driver']} "
+                 f"{r['binding_margin']:+.1%}).")
+    f = out["best_on_sourced_parts_binding_on_no_assumed_value"]
+    if f is not None and f["id"] != r["id"]:
+        line += (f" Best on sourced parts whose binding margin rests on no assumed value: {f['id']} "
+                 f"({f['mass_kg']:.2f} kg, binding {f['driver']} {f['binding_margin']:+.1%}).")
+    return line

@@ -12,6 +12,7 @@ from ..io.requirements import RequirementsFile
 from ..physics import stack as stack_phys
 from . import dc as dc_engine
 from .dc_candidates import dc_duration
+from .dc_verdict import dc_sourced
 from ..sim.dc_motor import DCMotorModel
 from .comparison import technology_comparison
 from .verify import simulate_cases
@@ -134,7 +135,8 @@ def _summary(req: RequirementsFile, candidates: list[dict], catalog, piezo_prune
     return {"groups": groups, "thermal": _thermal_statement(req, candidates),
             "comparison": technology_comparison(req, candidates, catalog),
             "feasible": sum(1 for c in candidates if c["feasible"]),
-            "pareto": [c["id"] for c in candidates if c["pareto"]]}
+            "pareto": [c["id"] for c in candidates if c["pareto"]],
+            "dc_sourced": dc_sourced(catalog, candidates)}
 
 
 def _amplifier_caveat(req: RequirementsFile, feasible: list[dict], catalog) -> str:

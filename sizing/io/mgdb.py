@@ -395,7 +395,7 @@ def _mounts(maker: str, compat: dict[str, set], motor_keys: list[str]) -> tuple[
     for motor in motor_keys:
         for g in compat.get(motor, ()):
             fits.setdefault(g, set()).add(motor)
-    groups = sorted({frozenset(v) for v in fits.values()}, key=lambda s: (sorted(s)[0], len(s)))
+    groups = sorted({frozenset(v) for v in fits.values()}, key=lambda s: tuple(sorted(s)))
     name = {grp: f"{maker}-mount-{i + 1:03d}" for i, grp in enumerate(groups)}
     gear_mount = {g: name[frozenset(v)] for g, v in fits.items()}
     motor_mounts = {m: sorted({gear_mount[g] for g in compat.get(m, ())}) for m in motor_keys}

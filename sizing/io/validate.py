@@ -31,6 +31,13 @@ STROKE_PER_VOLT_TOLERANCE = 0.05
 # hysteresis term lowers the slope, catalogs/stacks.toml notes) but not by more.
 BOUC_WEN_D33_FACTOR = 4.0
 DEFAULT_MAX_AGE_DAYS = 730
+# a motor's catalog continuous torque and the one its R, R_th and winding
+# limit imply differ by datasheet rounding and the housing's mounting (maxon
+# rates on a plastic flange): more than this factor is a contradiction
+MOTOR_SELF_CONSISTENCY = 1.5
+KT_KE_TOLERANCE = 0.15       # k_t (N m/A) against a bus-referred k_e (V s/rad), SI
+SIZE_FACTOR = 1.25           # motors of a mass within this factor are of the same size
+POPULATION_SLACK = 1.0       # outside the sourced range
 WARNING = "warning: "    # prefix of a message that flags, but does not fail
 
 # Broad physical ranges, SI (temperatures in degC): (low, high) inclusive.
@@ -131,6 +138,8 @@ def problems(catalog: Catalog, today: dt.date | None = None, warnings: list[str]
                     warnings.append(str(problem))
             else:
                 found.append(problem)
+    if warnings is not None:
+        warnings.extend(str(w) for w in motor_population_warnings(catalog))
     return found
 
 
@@ -236,6 +245,61 @@ def _dc(a):
 def _motor(m):
     if m.continuous_torque > m.peak_torque * (1 + 1e-9):
         yield "continuous_torque", f"expected at most peak_torque ({m.peak_torque:g} N m), got {m.continuous_torque:g} N m"
+    implied = implied_continuous_torque(m)
+    if not 1 / MOTOR_SELF_CONSISTENCY <= m.continuous_torque / implied <= MOTOR_SELF_CONSISTENCY:
+        yield "continuous_torque", (WARNING + f"{m.continuous_torque:.3g} N m contradicts winding_resistance and "
+                                    f"thermal_resistance: at the {m.max_winding_temperature:g} degC winding limit "
+                                    f"and 25 degC they give {implied:.3g} N m")
+    if abs(m.torque_constant / m.back_emf_constant - 1) > KT_KE_TOLERANCE:
+        yield "torque_constant", (WARNING + f"{m.torque_constant:.4g} N m/A against back_emf_constant "
+                                  f"{m.back_emf_constant:.4g} V s/rad: in SI they agree within "
+                                  f"{KT_KE_TOLERANCE:.0%} for a brushless motor with a bus-referred k_e")
+
+
+def implied_continuous_torque(m) -> float:
+    """The continuous torque (N m) at 25 degC ambient that the motor's own
+    R, R_th and winding limit give: k_t sqrt((T_max - 25) / (R_th R(T_max)))
+    (physics/motor.py: rms_current_allowed)."""
+    from ..physics.motor import rms_current_allowed
+    i = rms_current_allowed(m.thermal_resistance, m.winding_resistance, m.resistance_temperature_coefficient,
+                            25.0, m.max_winding_temperature)
+    return float(m.torque_constant * i)
+
+
+def motor_population_warnings(catalog: Catalog) -> list[InputError]:
+    """Motors not from a maker's table whose torque per root watt (k_t /
+    sqrt(R)) or continuous torque per kilogram lies outside the range of the
+    sourced motors of their size (mass within a factor SIZE_FACTOR), by more
+    than the factor POPULATION_SLACK: such a part is likely optimistic."""
+    import numpy as np
+    motors = list(catalog.motors.values())
+    sourced = [m for m in motors if m.status.get("torque_constant", "").startswith("sourced")]
+    if len(sourced) < 10:
+        return []
+    mass = np.array([m.mass for m in sourced])
+    km = np.array([m.torque_constant / m.winding_resistance ** 0.5 for m in sourced])
+    tpk = np.array([m.continuous_torque / m.mass for m in sourced])
+    # a housed motor is compared with housed ones (winding-housing and housing-ambient
+    # resistances given), a frameless one with all
+    housed = np.array(["Rth1 + Rth2" in m.status.get("thermal_resistance", "") for m in sourced])
+    out = []
+    for m in motors:
+        if m in sourced:
+            continue
+        kind = np.ones(len(sourced), bool) if "frameless" in (m.id + m.name).lower() else housed
+        size = kind & (mass >= m.mass / SIZE_FACTOR) & (mass <= m.mass * SIZE_FACTOR)
+        if size.sum() < 3:
+            continue
+        for name, value, pool, what, unit in (
+                ("torque_constant", m.torque_constant / m.winding_resistance ** 0.5, km, "torque per root watt k_t/sqrt(R)", "N m/sqrt(W)"),
+                ("continuous_torque", m.continuous_torque / m.mass, tpk, "continuous torque per kg", "N m/kg")):
+            lo, hi = pool[size].min(), pool[size].max()
+            if not lo / POPULATION_SLACK <= value <= hi * POPULATION_SLACK:
+                out.append(_problem(catalog, "motor", m, name,
+                                    f"{what} {value:.3g} {unit} is outside the {lo:.3g} to {hi:.3g} of the "
+                                    f"{int(size.sum())} sourced {'' if kind is not housed else 'housed '}motors of {m.mass / SIZE_FACTOR:.2g} to "
+                                    f"{m.mass * SIZE_FACTOR:.2g} kg"))
+    return out
 
 
 def _drive(d):

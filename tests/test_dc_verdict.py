@@ -1,0 +1,94 @@
+"""The best DC design on sourced parts, recomputed by hand from its parts'
+catalog values: blocked force, top speed under each load case and winding
+temperature within 2 %; and the summary entry beside the best on any parts."""
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+
+from sizing.engine import dc_sizing, dc_verdict
+from sizing.engine.evaluate import load_cases
+from sizing.engine.rank import verdict
+from sizing.io.catalog import load_catalog
+from sizing.io.requirements import load_requirements
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+@pytest.fixture(scope="module")
+def solved():
+    req, _ = load_requirements(ROOT / "studies" / "seed-requirements.toml")
+    cat = load_catalog()
+    loads = [c["load_N"] for c in load_cases(req.load)]
+    cands = dc_sizing.dc_parts_candidates(req, cat, loads)["candidates"]
+    for c in cands:
+        c["feasible"], c["driver"] = verdict(c["margins"])
+    return req, cat, loads, cands, dc_verdict.dc_sourced(cat, cands)
+
+
+def _hot(m, ambient, torque):
+    """Winding temperature and k_t with the magnets at the winding, by plain iteration."""
+    Tw = ambient
+    for _ in range(60):
+        kt = m.torque_constant * (1 + m.torque_constant_temperature_coefficient * (Tw - 25))
+        i = torque / kt
+        Tw = ambient + m.thermal_resistance * m.winding_resistance * (1 + m.resistance_temperature_coefficient * (Tw - 25)) * i**2
+    return Tw, m.torque_constant * (1 + m.torque_constant_temperature_coefficient * (Tw - 25))
+
+
+def test_best_on_sourced_parts_by_hand(solved):
+    req, cat, loads, cands, summary = solved
+    best = summary["best_on_sourced_parts"]
+    assert best is not None and summary["feasible_on_sourced_parts"] >= 1
+    cand = next(c for c in cands if c["id"] == best["id"])
+    comp = cand["components"]
+    m, s, d = cat.motors[comp["motor"]], cat.screws[comp["screw"]], cat.drives[comp["drive"]]
+    g = cat.gears[comp["gear"]] if comp["gear"] else None
+    for part in (m, s, d) + ((g,) if g else ()):
+        assert dc_verdict.is_real(part)
+    N, eta_g = (g.ratio, g.efficiency) if g else (1.0, 1.0)
+    eta, lead = s.efficiency * eta_g, s.lead
+    T = req.requirements.max_temperature
+    # holding the worst load case heats the winding; k_t at that temperature
+    F_hold = max(loads)
+    Tw_hold, kt = _hot(m, T, F_hold * lead / (2 * math.pi * eta * N))
+    # blocked force: the drive's peak current (or the motor's peak torque) through gear and screw
+    i_max = min(d.peak_current, m.peak_torque / kt)
+    F = 2 * math.pi * eta * N * kt * i_max / lead
+    if g:
+        F = min(F, 2 * math.pi * s.efficiency * g.max_output_torque / lead)
+    assert cand["static"]["blocked_force_N"] == pytest.approx(F, rel=0.02)
+    assert F >= req.requirements.blocked_force
+    # top speed under each load: (U - R_hot i_load) / k_e through the screw, U capped by the ratings
+    R_hot = m.winding_resistance * (1 + m.resistance_temperature_coefficient * (Tw_hold - 25))
+    w_mech = min(m.max_speed, s.max_speed * N, g.max_input_speed if g else math.inf)
+    U = min(d.bus_voltage, m.back_emf_constant * w_mech)
+    for case in cand["simulated"]["cases"]:
+        i_load = case["load_N"] * lead / (2 * math.pi * eta * kt * N)
+        v = min((U - R_hot * i_load) / m.back_emf_constant, w_mech) * lead / (2 * math.pi * N)
+        assert case["peak_speed_m_s"] == pytest.approx(v, rel=0.02)
+        assert req.requirements.speed <= case["speed_m_s"] <= v
+    # winding temperature at the simulated duty's RMS torque
+    torque_rms = kt * max(c["rms_current_A"] for c in cand["simulated"]["cases"])
+    Tw, _ = _hot(m, T, torque_rms)
+    assert cand["simulated"]["winding_temperature_degC"] == pytest.approx(Tw, rel=0.02)
+    assert Tw <= m.max_winding_temperature
+
+
+def test_summary_sets_the_two_side_by_side(solved):
+    *_, summary = solved
+    any_, real = summary["best_on_any_parts"], summary["best_on_sourced_parts"]
+    assert any_["mass_kg"] <= real["mass_kg"]
+    assert summary["feasible_on_any_parts"] >= summary["feasible_on_sourced_parts"]
+    assert isinstance(any_["rests_on_assumed"], list) and any_["rests_on_assumed"]
+    assert any_["id"] in summary["text"] and real["id"] in summary["text"]
+
+
+def test_a_generic_part_is_not_real(solved):
+    _, cat, *_ = solved
+    assert not dc_verdict.is_real(cat.motors["gen-bldc42-28v-h"])
+    assert not dc_verdict.is_real(cat.drives["servo-48v-10a"])        # only its loop rate is the seed's
+    assert dc_verdict.is_real(cat.drives["tgdrives-tgz-d-48-13-26"])
+    assert dc_verdict.is_real(cat.motors["maxon-597974"])

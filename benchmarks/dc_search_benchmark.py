@@ -1,0 +1,67 @@
+"""The DC parts search at catalog scale: catalog load time (parsed, and from
+its cache), the pruned search over every motor x mountable gear x screw x
+drive, and the whole DC-from-parts step (search, screen, simulation of the
+best), each the best of a few runs.
+
+    python benchmarks/dc_search_benchmark.py [--repeat 3] [--requirements studies/seed-requirements.toml]
+
+Exits 1 when the DC step takes longer than LIMIT_S warm (the seed solve's
+budget leaves it a few seconds) or the catalog, from its cache, longer than
+LOAD_LIMIT_S (every command loads it).
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+LIMIT_S = 5.0
+LOAD_LIMIT_S = 0.5
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def _best(fn, repeat):
+    times, out = [], None
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        out = fn()
+        times.append(time.perf_counter() - t0)
+    return min(times), out
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--requirements", default=str(ROOT / "studies" / "seed-requirements.toml"))
+    args = parser.parse_args()
+    with tempfile.TemporaryDirectory() as cache:
+        os.environ["SIZING_CACHE_DIR"] = cache          # a cold cache first
+        from sizing.engine import dc_search
+        from sizing.engine.dc_sizing import dc_parts_candidates
+        from sizing.engine.evaluate import load_cases
+        from sizing.io.catalog import load_catalog
+        from sizing.io.requirements import load_requirements
+        t0 = time.perf_counter()
+        catalog = load_catalog()
+        parsed = time.perf_counter() - t0
+        cached, _ = _best(load_catalog, args.repeat)
+    req, _ = load_requirements(args.requirements)
+    loads = [c["load_N"] for c in load_cases(req.load)]
+    t_search, found = _best(lambda: dc_search.search(catalog, req, loads), args.repeat)
+    t_dc, out = _best(lambda: dc_parts_candidates(req, catalog, loads), args.repeat)
+    print(f"catalog: {len(catalog.motors)} motors, {len(catalog.gears)} gears, {len(catalog.screws)} screws, "
+          f"{len(catalog.drives)} drives; load parsed {parsed:.2f} s, from its cache {cached:.3f} s "
+          f"(limit {LOAD_LIMIT_S:g} s)")
+    print(f"search: {found.combinations:,} combinations, {found.screened:,} screened, {found.n_feasible:,} "
+          f"statically feasible, {t_search:.2f} s")
+    print(f"DC from parts (search, screen, {len(out['candidates'])} simulated): {t_dc:.2f} s (limit {LIMIT_S:g} s)")
+    print("ruled out: " + ", ".join(f"{k} {v:,}" for k, v in sorted(out["ruled_out"].items(), key=lambda x: -x[1])))
+    print(f"load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores")
+    return 0 if t_dc <= LIMIT_S and cached <= LOAD_LIMIT_S else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -72,3 +72,16 @@ def test_gear_continuous_torque_and_hold(seed):
     t_screw = max(loads) * 0.005 / (2 * math.pi * 0.9)
     assert m["gear_torque"][0] == pytest.approx(gear.continuous_output_torque / t_screw - 1)
     assert np.isfinite(m["holding"][0]) and m["holding"][0] >= m["winding_temperature"][0] - 1e-12
+
+
+def test_evaluate_refuses_a_gearhead_that_does_not_mount(tmp_path):
+    from .conftest import run_cli
+    cat = load_catalog()
+    motor = next(m for m in cat.motors.values() if m.gear_mounts)
+    gear = next(g for g in cat.gears.values() if g.mount and g.mount not in motor.gear_mounts)
+    path = tmp_path / "dc.toml"
+    path.write_text(f'technology = "dc_motor"\nmotor = "{motor.id}"\nscrew = "thk-bnk1202-3"\ngear = "{gear.id}"\n'
+                    f'drive = "servo-48v-10a"\nstep = 0.04\n[load]\ndynamic_pressure = ["10 kPa"]\n')
+    code, _, err = run_cli("evaluate", path)
+    assert code == 2 and len(err.strip().splitlines()) == 1
+    assert "dc.toml" in err and "gear" in err and "does not mount" in err

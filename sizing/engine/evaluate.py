@@ -170,6 +170,10 @@ def evaluate_dc(design: DCDesignFile, catalog: Catalog, file: str) -> dict:
         if parts["drive"].bus_voltage < parts["motor"].rated_voltage:
             raise InputError(file, "drive", f"drive {parts['drive'].id} has a {parts['drive'].bus_voltage:g} V bus, "
                              f"below the {parts['motor'].rated_voltage:g} V rated voltage of motor {parts['motor'].id}")
+        gear, motor = parts["gear"], parts["motor"]
+        if gear is not None and gear.mount is not None and gear.mount not in (motor.gear_mounts or ()):
+            raise InputError(file, "gear", f"gearhead {gear.id} (mount {gear.mount}) does not mount on motor {motor.id} "
+                             f"(its mounts: {', '.join(motor.gear_mounts or ()) or 'none'})")
         return evaluate_parts(design, catalog, parts, cases)
     act = _lookup(catalog, catalog.dc_actuators, design.actuator, file, "actuator")
     cases = load_cases(design.load)

@@ -92,3 +92,18 @@ def test_a_generic_part_is_not_real(solved):
     assert not dc_verdict.is_real(cat.drives["servo-48v-10a"])        # only its loop rate is the seed's
     assert dc_verdict.is_real(cat.drives["tgdrives-tgz-d-48-13-26"])
     assert dc_verdict.is_real(cat.motors["maxon-597974"])
+
+
+def test_the_lowest_ambient_rating_decides(solved):
+    """A design bound by the ambient margin rests on the rating of the part
+    rated lowest, not on every part's rating."""
+    from sizing.engine import dc_assumed
+    _, cat, *_ = solved
+    parts = {"motor": cat.motors["allied-mf0127008-48v"], "screw": cat.screws["ball-12x2"], "gear": None,
+             "drive": cat.drives["servo-48v-10a"]}
+    out = dc_assumed.rests_on(parts, "temperature")
+    deciding = {(x["part"], x["field"]) for x in out if x["decides"]}
+    assert deciding == {("allied-mf0127008-48v", "max_temperature")}     # 100 degC, below the screw's 120
+    assert ("ball-12x2", "max_temperature") in {(x["part"], x["field"]) for x in out}
+    rules = dc_assumed.rests_on({"motor": cat.motors["maxon-597974"]}, "temperature", "rule")
+    assert {"part": "maxon-597974", "field": "max_temperature", "decides": True} in rules

@@ -64,13 +64,18 @@ def rests_on(parts: dict, driver: str | None, status: str = "assumed") -> list[d
     """``[{"part", "field", "decides"}]`` for every value of ``parts`` (kind
     -> catalog entry or None) whose status starts with ``status``."""
     entering = INPUTS.get(driver or "", {})
+    # the ambient margin is the lowest rating's: only the parts that hold it decide
+    rated = {k: p.max_temperature for k, p in parts.items() if p is not None and k in entering
+             and getattr(p, "max_temperature", None) is not None} if driver == "temperature" else {}
+    lowest = min(rated.values(), default=None)
     out = []
     for kind, part in parts.items():
         if part is None:
             continue
         for name, text in part.status.items():
             if text.split(":", 1)[0].strip() == status:
-                out.append({"part": part.id, "field": name, "decides": name in entering.get(kind, ())})
+                decides = name in entering.get(kind, ()) and (not rated or rated.get(kind) == lowest)
+                out.append({"part": part.id, "field": name, "decides": decides})
     return out
 
 

@@ -43,8 +43,8 @@ def _brief(c) -> dict:
 
 def dc_sourced(catalog, candidates: list[dict]) -> dict:
     """``summary.dc_sourced``: {"best_on_sourced_parts", "best_on_any_parts",
-    "best_on_sourced_parts_binding_on_no_assumed_value",
-    "feasible_on_sourced_parts", "feasible_on_any_parts", "text"}; a best is
+    "best_on_sourced_parts_binding_on_no_assumed_value" (else
+    "closest_on_sourced_parts_binding_on_no_assumed_value"), "feasible_on_sourced_parts", "feasible_on_any_parts", "text"}; a best is
     null when no feasible DC design exists on such parts."""
     dc = [c for c in candidates if c.get("technology") == "dc_motor" and c.get("variant") == "parts"
           and c.get("feasible") and c.get("metrics")]
@@ -52,13 +52,19 @@ def dc_sourced(catalog, candidates: list[dict]) -> dict:
     real = [c for c in dc if _real_design(catalog, c)]
     best_any = min(dc, key=key) if dc else None
     best_real = min(real, key=key) if real else None
-    # real parts whose binding margin rests on no assumed value (a maker's rule may enter it)
-    firm = [c for c in real if not any(x["decides"] for x in c.get("rests_on_assumed", []))]
+    # real parts whose binding margin rests on no assumed value (a maker's rule may enter it);
+    # when none is feasible, the closest such design
+    firm_of = lambda pool: [c for c in pool if not any(x["decides"] for x in c.get("rests_on_assumed", []))]
+    firm = firm_of(real)
     best_firm = min(firm, key=key) if firm else None
+    tried = firm_of([c for c in candidates if c.get("technology") == "dc_motor" and c.get("variant") == "parts"
+                     and c.get("stage") == "simulated" and c.get("driver") and _real_design(catalog, c)])
+    closest = max(tried, key=lambda c: c["margins"][c["driver"]]) if tried and best_firm is None else None
     out = {"feasible_on_sourced_parts": len(real), "feasible_on_any_parts": len(dc),
            "best_on_sourced_parts": _brief(best_real) if best_real else None,
            "best_on_any_parts": _brief(best_any) if best_any else None,
-           "best_on_sourced_parts_binding_on_no_assumed_value": _brief(best_firm) if best_firm else None}
+           "best_on_sourced_parts_binding_on_no_assumed_value": _brief(best_firm) if best_firm else None,
+           "closest_on_sourced_parts_binding_on_no_assumed_value": _brief(closest) if closest else None}
     out["text"] = _text(out)
     return out
 
@@ -81,4 +87,8 @@ def _text(out: dict) -> str:
     if f is not None and f["id"] != r["id"]:
         line += (f" Best on sourced parts whose binding margin rests on no assumed value: {f['id']} "
                  f"({f['mass_kg']:.2f} kg, binding {f['driver']} {f['binding_margin']:+.1%}).")
+    c = out["closest_on_sourced_parts_binding_on_no_assumed_value"]
+    if f is None and c is not None:
+        line += (f" No feasible design on sourced parts has a binding margin free of assumed values; the closest, "
+                 f"{c['id']} ({c['mass_kg']:.2f} kg), misses {c['driver']} by {c['binding_margin']:+.1%}.")
     return line

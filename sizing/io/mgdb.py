@@ -81,10 +81,11 @@ MAY_BE_ZERO = {"I_nl", "inertia"}
 NDFEB_KT_COEFFICIENT = -0.0012
 NDFEB_RULE = ("rule: NdFeB rotor magnets; remanence -0.12 %/K (e-magnetsuk.com Neodymium temperature ratings, "
               "N/M grades; advancedmagnets.com: sintered NdFeB -0.09 to -0.12 %/K)")
-# an outer-rotor (flat) maxon motor carries its magnets on a wide bell: rotor inertia per motor
-# mass above this (m^2) marks one (EC 45 flat: 181 g cm^2 at 0.11 kg = 1.6e-4; EC-i 40:
-# 44 g cm^2 at 0.39 kg = 1.1e-5; EC 22: 1.8e-6)
-FLAT_INERTIA_PER_MASS = 8e-5
+# an outer-rotor (flat) maxon motor carries its magnets on a wide bell: its rotor inertia over
+# mass^(5/3) (size-free for similar shapes, J ~ m r^2, m ~ r^3) is above this, kg^(-2/3) m^2.
+# The 338 maxon brushless rows split with a gap from 2.6e-5 to 1.2e-4 (EC 45 flat: 181 g cm^2 at
+# 0.11 kg = 7.2e-4; EC-i 40: 44 g cm^2 at 0.39 kg = 2.1e-5; EC 22: 7e-6)
+FLAT_INERTIA_PER_MASS = 5e-5
 
 
 @dataclass(frozen=True)
@@ -99,11 +100,11 @@ class FamilyRule:
 FAMILY_RULES = {
     "maxon-flat": FamilyRule(
         125.0, "rule: maxon EC flat (outer rotor) motors, max winding +125 degC (EC 45 flat 50 W and 70 W "
-               "datasheets, online.flippingbook.com/view/1042987/321 and /324); outer rotor inferred from J/m",
+               "datasheets, online.flippingbook.com/view/1042987/321 and /324); outer rotor inferred from J / m^(5/3)",
         100.0, "rule: maxon EC flat motors, ambient -40...+100 degC (same datasheets)"),
     "maxon": FamilyRule(
         155.0, "rule: maxon inner-rotor EC motors, max winding +155 degC (EC 22 datasheet, "
-               "scribd 364113018 p. 214; EC-i 40 488607 in mujoco-motors); inner rotor inferred from J/m",
+               "scribd 364113018 p. 214; EC-i 40 488607 in mujoco-motors); inner rotor inferred from J / m^(5/3)",
         100.0, "rule: maxon EC motors, ambient up to +100 degC (EC 22 -20...+100, EC 45 flat -40...+100 degC)"),
     "faulhaber": FamilyRule(
         125.0, "assumed: no Faulhaber winding limit found; the lower of maxon's brushless classes (125 degC)",
@@ -251,7 +252,7 @@ def _slug(text: str) -> str:
 
 def _family(maker: str, row: dict) -> str:
     if maker == "maxon":
-        return "maxon-flat" if row["inertia"] / row["mass"] > FLAT_INERTIA_PER_MASS else "maxon"
+        return "maxon-flat" if row["inertia"] / row["mass"] ** (5 / 3) > FLAT_INERTIA_PER_MASS else "maxon"
     return maker
 
 

@@ -58,7 +58,7 @@ class SearchResult:
 
 
 def _add(counts: dict, reason: str, n) -> None:
-    n = int(n)
+    n, reason = int(n), str(reason)
     if n:
         counts[reason] = counts.get(reason, 0) + n
 

@@ -204,6 +204,48 @@ def lag1_correlation(residual: np.ndarray, lengths: list[int]) -> float:
     return float(np.sum(r[:-1][keep] * r[1:][keep]) / denominator) if denominator > 0 else 0.0
 
 
+def ess_inflation(residual: np.ndarray, lengths: list[int]) -> float:
+    """Factor on a least-squares covariance for residuals correlated in
+    time: n / n_eff = (1 + rho) / (1 - rho) for an AR(1) residual of lag-1
+    autocorrelation rho (``lag1_correlation``), the effective-sample-size
+    correction; 1 for rho <= 0. The Gauss-Newton covariance treats the n
+    residuals as independent; a dynamic model's residuals are not, and
+    its intervals shrink as if they were."""
+    rho = min(lag1_correlation(residual, lengths), 0.999)
+    return float((1 + rho) / (1 - rho)) if rho > 0 else 1.0
+
+
+TREND_SHARE = 0.5     # a trend: a straight line holds this share of the residual's variance in every run
+
+
+def residual_structure(runs) -> list[str]:
+    """Messages for structure in fit residuals that the model lacks, over
+    runs [(t, residual, simulated output)]: a spectral line common to the
+    runs (sizing.diagnose.spectrum.lines: in every run above LINE_FACTOR x
+    the periodogram's local median, not a line of the simulated output),
+    and a trend (a straight line in time holding TREND_SHARE of the
+    residual's variance in every run). Confidence intervals assume the
+    residual has neither."""
+    from ..diagnose import spectrum
+
+    out = []
+    for freq, ratio in spectrum.lines([(t, r) for t, r, _ in runs], [y for _, _, y in runs]):
+        out.append(f"the residuals hold a spectral line at {freq:.1f} Hz ({ratio:.0f} x the local level) that "
+                   "the model lacks (a sensor-mount vibration or another resonance); the 95% intervals assume "
+                   "residuals without it")
+    shares = []
+    for t, r, _ in runs:
+        r = np.asarray(r, float) - np.mean(r)
+        slope = np.polyfit(t, r, 1)[0]
+        fitted = slope * (np.asarray(t) - np.mean(t))
+        shares.append(float(fitted @ fitted / max(float(r @ r), 1e-300)))
+    if shares and min(shares) >= TREND_SHARE:
+        out.append(f"the residuals drift: a straight line in time holds {100 * min(shares):.0f}% or more of their "
+                   "variance in every run (a thermal drift or an offset the model lacks); the 95% intervals "
+                   "assume residuals without it")
+    return out
+
+
 def correlation(cov: np.ndarray) -> np.ndarray:
     sd = np.sqrt(np.clip(np.diag(cov), 0, None))
     with np.errstate(invalid="ignore", divide="ignore"):

@@ -25,7 +25,7 @@ from ..sim.metrics import step_metrics
 from . import dc_controller as ctl
 from .dc import OUTPUT_RATE_HZ, SETTLED
 from . import dc_assumed, dc_search, dc_verdict
-from .dc_parts import enumerate_parts, metrics, static_screen, temperature_margin
+from .dc_parts import enumerate_parts, metrics, mountable, static_screen, temperature_margin
 from .dc_candidates import dc_duration
 from .rank import nondominated_levels, verdict
 
@@ -96,10 +96,13 @@ def dc_parts_candidates(req, catalog, loads, progress=None, duration=None, exhau
     The catalog-scale search (``dc_search``) screens what no bound rules
     out and simulates the best; only simulated designs get a record, the
     rest are counted by reason in ``ruled_out``. ``exhaustive`` (a catalog
-    of one design, ``sizing evaluate``): every combination, each a record."""
+    of one design, ``sizing evaluate``), or a catalog of at most
+    MIN_SIMULATED combinations: every combination, each a record."""
     duration = dc_duration(req) if duration is None else duration
     ruled_out, combinations = {}, None
-    if exhaustive:
+    small = sum(1 + len(g) for g in mountable(catalog)) * len(catalog.screws) * len(catalog.drives)
+    if exhaustive or small <= MIN_SIMULATED:      # a few parts (evaluate, robust): every one simulated
+        exhaustive = True
         p = enumerate_parts(catalog)
     else:
         found = dc_search.search(catalog, req, loads)

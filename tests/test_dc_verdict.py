@@ -107,3 +107,15 @@ def test_the_lowest_ambient_rating_decides(solved):
     assert ("ball-12x2", "max_temperature") in {(x["part"], x["field"]) for x in out}
     rules = dc_assumed.rests_on({"motor": cat.motors["maxon-597974"]}, "temperature", "rule")
     assert {"part": "maxon-597974", "field": "max_temperature", "decides": True} in rules
+
+
+def test_every_dc_candidate_says_what_it_rests_on(solved):
+    """Catalog actuators too: a list, never null; each entry names a field of
+    the part with an assumed status."""
+    from sizing.engine.dc_candidates import dc_candidates
+    req, cat, loads, cands, _ = solved
+    for c in dc_candidates(req, cat, loads)["candidates"] + cands:
+        assert isinstance(c["rests_on_assumed"], list), c["id"]
+        for x in c["rests_on_assumed"]:
+            assert cat.get(x["part"])[1].status[x["field"]].startswith("assumed"), (c["id"], x)
+            assert isinstance(x["decides"], bool)

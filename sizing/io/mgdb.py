@@ -270,6 +270,8 @@ def motor_entry(maker: str, file_name: str, row: dict, mounts: list[str] | None)
     raw["back_emf_constant"] = V / row["omega_nl"]
     status["back_emf_constant"] = f"sourced: {file_name} {key} V / omega_nl (no-load speed at the nominal voltage)"
     raw["winding_resistance"], status["winding_resistance"] = R, src("R")
+    raw["resistance_temperature_coefficient"] = 0.00393
+    status["resistance_temperature_coefficient"] = "rule: copper winding, 0.00393 1/K (the makers' terminal resistance at 25 degC)"
     raw["torque_constant_temperature_coefficient"], status["torque_constant_temperature_coefficient"] = \
         NDFEB_KT_COEFFICIENT, NDFEB_RULE
     raw["inductance"], status["inductance"] = row["L"], src("L")

@@ -29,11 +29,8 @@ _ACTUATOR_DYNAMIC = {"dc_actuator": {"c1", "c2", "current_limit", "supply_voltag
 
 
 def _merge(*maps) -> dict[str, set[str]]:
-    out: dict[str, set[str]] = {}
-    for m in maps:
-        for kind, names in m.items():
-            out.setdefault(kind, set()).update(names)
-    return out
+    """Union per part kind."""
+    return {kind: set().union(*(m.get(kind, ()) for m in maps)) for kind in set().union(*maps)}
 
 
 INPUTS: dict[str, dict[str, set[str]]] = {

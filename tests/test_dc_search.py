@@ -40,8 +40,19 @@ def _feasible_ids(p, margins) -> set:
     return {dc_sizing.design_id(p, i) for i in np.flatnonzero(ok)}
 
 
-def test_pruned_search_matches_brute_force(seed):
+def _variant(req, which):
+    """The seed's requirements, or a milder set (1 kN, 70 degC, 150 mm/s, drive at the actuator)."""
+    if which == "seed":
+        return req
+    r = req.requirements.model_copy(update={"blocked_force": 1000.0, "max_temperature": 70.0, "speed": 0.15})
+    o = req.options.model_copy(update={"amplifier_location": "actuator"})
+    return req.model_copy(update={"requirements": r, "options": o})
+
+
+@pytest.mark.parametrize("which", ["seed", "mild"])
+def test_pruned_search_matches_brute_force(seed, which):
     req, cat, loads = seed
+    req = _variant(req, which)
     sub = _subset(cat)
     brute = dc_parts.enumerate_parts(sub)
     _, _, margins = dc_parts.static_screen(brute, req, loads)

@@ -314,8 +314,18 @@ def motor_entry(maker: str, file_name: str, row: dict, mounts: list[str] | None)
     status["cost_usd"] = "assumed: no price in the table; 150 USD + 600 USD/kg, the order of a catalog maxon EC motor"
     if mounts:
         raw["gear_mounts"] = mounts
+    raw["notes"] = FAMILY_NOTES[_family(maker, row)]
     raw["status"] = status
     return raw
+
+
+FAMILY_NOTES = {
+    "maxon-flat": "Outer-rotor (flat) construction, inferred from the rotor inertia over mass^(5/3).",
+    "maxon": "Inner-rotor construction, inferred from the rotor inertia over mass^(5/3).",
+    "faulhaber": "Housed brushless motor; no thermal rating of the family was found.",
+    "allied": ("Frameless (stator and rotor, built into the actuator's housing, which the mass model counts); "
+               "the table gives one lumped thermal resistance, which depends on that housing."),
+}
 
 
 def gear_entry(maker: str, file_name: str, row: dict, mount: str) -> dict:

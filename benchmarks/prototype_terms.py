@@ -28,6 +28,8 @@ def variants(base: str) -> list[tuple[str, str]]:
         *[(f"+ PTFE O-rings + {a:.1%} air", air(seal("ptfe-o-ring"), a)) for a in (0.005, 0.01, 0.02)],
         ("FKM O-rings at pressure", seal("fkm-o-ring")),
         ("seed seals, rigid, ramped in 3.03 s", rigid.replace('rise_time = "1 s"', 'rise_time = "3.03 s"')),
+        ("seed seals, rigid, ramped in 14.55 s", rigid.replace('rise_time = "1 s"', 'rise_time = "14.55 s"')),
+        ("seed seals, rigid, ramped in 16.9 s", rigid.replace('rise_time = "1 s"', 'rise_time = "16.9 s"')),
     ]
 
 

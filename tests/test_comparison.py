@@ -1,8 +1,11 @@
 """The technology comparison (engine/comparison.py): an infeasible technology
 is compared through its lightest design that misses only one check."""
-from types import SimpleNamespace
+import pytest
 
 from sizing.engine.comparison import technology_comparison
+from sizing.io.requirements import load_requirements
+
+from .conftest import STUDIES
 
 
 def _cand(id_, tech, feasible, margins, mass, rank, stage="simulated"):
@@ -12,7 +15,7 @@ def _cand(id_, tech, feasible, margins, mass, rank, stage="simulated"):
 
 
 def test_infeasible_side_is_counted_by_its_lightest_one_miss_design():
-    req = SimpleNamespace(objectives=SimpleNamespace(minimize=["mass", "cost"]))
+    req, _ = load_requirements(STUDIES / "seed-requirements.toml")
     cands = [
         _cand("dc", "dc_motor", True, {"speed": 0.1}, 2.0, 1),
         # smallest miss, but heavy: the "closest" by margin
@@ -26,3 +29,23 @@ def test_infeasible_side_is_counted_by_its_lightest_one_miss_design():
     assert ph["best"] == "ph-heavy" and ph["one_miss"]["id"] == "ph-light"
     # by hand: 150 kg / 2 kg = 75, 1500 USD / 20 USD = 75
     assert "mass x75" in out["text"] and "cost x75" in out["text"]
+
+
+def test_what_would_flip_each_verdict():
+    """A feasible technology flips when every feasible design misses: the
+    requirement tightened past the largest margin on it (speed +10 % and
+    +25 %: 0.1 m/s -> 0.125 m/s, 25 %). An infeasible one flips when one
+    design's only miss closes: blocked force -4 % (2500 N -> 2400 N) beats
+    stroke -20 % (40 mm -> 32 mm)."""
+    req, _ = load_requirements(STUDIES / "seed-requirements.toml")
+    cands = [
+        _cand("dc-a", "dc_motor", True, {"speed": 0.1, "stroke": 0.5}, 2.0, 1),
+        _cand("dc-b", "dc_motor", True, {"speed": 0.25, "stroke": 0.6}, 3.0, 2),
+        _cand("ph-a", "piezohydraulic", False, {"blocked_force": -0.04, "stroke": 0.2}, 100.0, 3),
+        _cand("ph-b", "piezohydraulic", False, {"stroke": -0.2, "blocked_force": 0.1}, 90.0, 4),
+        _cand("ph-c", "piezohydraulic", False, {"stroke": -0.01, "speed": -0.01}, 80.0, 5),   # two misses
+    ]
+    out = technology_comparison(req, cands)["technologies"]
+    dc, ph = out["dc_motor"]["flip"], out["piezohydraulic"]["flip"]
+    assert dc["what"] == "requirement speed" and dc["to"] == pytest.approx(0.125) and dc["relative_change"] == pytest.approx(0.25)
+    assert ph["what"] == "requirement blocked_force" and ph["to"] == pytest.approx(2400.0) and ph["design"] == "ph-a"

@@ -65,8 +65,13 @@ def test_stroke_tolerance_gives_the_closed_form_probability(tmp_path, small_cata
     s = 0.30
     sized_for, _ = load_requirements(_requirements(tmp_path))
     _, nominal, _ = _nominal(sized_for, small_catalog)
-    judged = _requirements(tmp_path, f'\n[tolerances]\n"stack.stroke" = "{s * 100:g} %"\n')
-    judged.write_text(judged.read_text().replace('stroke = "40 mm"', 'stroke = "26 mm"', 1))
+    # judged at the fill temperature and without the natural-frequency floor, so that
+    # no check the stack stroke does not move (the thermal budget, the compensator's
+    # volume, the stiffness) sits below the stroke margin and hides its sensitivity
+    judged = _requirements(tmp_path, f'\n[tolerances]\n"stack.stroke" = "{s * 100:g} %"\n'
+                                     '\n[options]\nmin_natural_frequency = "1 Hz"\n')
+    judged.write_text(judged.read_text().replace('stroke = "40 mm"', 'stroke = "26 mm"', 1)
+                      .replace('max_temperature = "100 degC"', 'max_temperature = "20 degC"', 1))
     req, _ = load_requirements(judged)
     design = next(c for c in nominal if c["variant"] == "compensated")
     cand = next(c for c in verify_sized(req, small_catalog, _sized(req, small_catalog, design),
@@ -88,7 +93,7 @@ def test_stroke_tolerance_gives_the_closed_form_probability(tmp_path, small_cata
     # a spread of zero leaves the nominal verdict: compliance certain
     req0, _ = load_requirements(_requirements(tmp_path, '\n[tolerances]\n"stack.stroke" = "0 %"\n'))
     zero = robust(req0, small_catalog, [design], samples=20, seed=3, executor=Executor(0))["designs"][0]
-    assert zero["p_compliance"] == 1.0 and zero["sensitivity"]["stack.stroke"] == 0.0
+    assert zero["p_compliance"] == (1.0 if design["feasible"] else 0.0) and zero["sensitivity"]["stack.stroke"] == 0.0
 
 
 def _sized(req, catalog, cand):

@@ -240,6 +240,7 @@ def _check_bounded_and_valid(r):
     q a^2 / (8 k G t) mean shear) within 5 %; every candidate says what
     assumed values it rests on."""
     for c in r["candidates"]:
+        assert 0 < len(c["name"]) <= 32, c["id"]
         assert isinstance(c["rests_on_assumed"], list), c["id"]
         assert all({"part", "field", "decides"} <= set(x) for x in c["rests_on_assumed"])
         mass = c["metrics"].get("mass_kg")

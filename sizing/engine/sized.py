@@ -39,7 +39,7 @@ def sized_designs(req: RequirementsFile, catalog: Catalog, candidates: list[dict
                            wide_area=math.pi / 4 * float(design["wide_diameter"]) ** 2,
                            voltage_fraction=float(design["voltage"]) / combo.stack.max_voltage,
                            cap_thickness=float(design["end_cap_thickness"]),
-                           frame_area=float(design["frame_area"]),
+                           frame_area=float(design["frame_area"]), wide_gap=float(design["wide_gap"]),
                            slack=dict(gp.get("slack", {})), binding=list(gp.get("binding", [])),
                            status=str(gp.get("status", "")))
         out.append((combo, variant, res))

@@ -36,7 +36,7 @@ from ..io.catalog import Catalog
 from ..io.requirements import RequirementsFile
 from ..physics import fluid as fluid_props
 from ..physics import stack as stack_phys, thermal
-from . import assumed, piezo_designs
+from . import assumed, names, piezo_designs
 from .dc_candidates import dc_candidates
 from .dc_sizing import dc_parts_candidates
 from .evaluate import load_cases
@@ -110,6 +110,7 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
     _rank(req, candidates)
     candidates.sort(key=lambda c: c["rank"])
     assumed.fill(catalog, candidates)
+    names.fill(candidates)
     results = {
         "tool_version": __version__,
         "requirements_sha256": requirements_sha256,

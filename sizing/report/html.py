@@ -191,6 +191,40 @@ def _dc_parts_line(counts: dict) -> str:
             f"static screen, {p['simulated']} verified by simulation)")
 
 
+def _answer(summary: dict) -> str:
+    """The first section: per technology its best design, binding check,
+    what it rests on and what would flip its verdict; what was ruled out."""
+    techs = summary.get("comparison", {}).get("technologies", {})
+    if not techs:
+        return ""
+    rows = []
+    for tech, t in techs.items():
+        metrics = ", ".join(_objective_text(k, v) for k, v in t.get("metrics", {}).items())
+        margin = t.get("binding_margin")
+        binding = f"{_e(t.get('binding'))} ({margin:+.1%})" if margin is not None else _e(t.get("binding"))
+        deciding = t.get("deciding_assumed") or []
+        rests = (f"{len(t.get('rests_on_assumed') or [])} assumed values; in its binding margin: "
+                 + (_e(", ".join(deciding)) if deciding else "none"))
+        f = t.get("flip")
+        flip = (f"{_e(f['what'])}: {f['from']:.4g} &rarr; {f['to']:.4g} ({f['relative_change']:.1%})" if f else "none known")
+        rows.append(f"<tr><td class='l'><b>{_e(tech)}</b></td><td class='l'>{'feasible' if t.get('feasible') else 'infeasible'}"
+                    f"</td><td class='l'>{_e(t.get('best'))}<br>{_e(metrics)}</td><td class='l'>{binding}</td>"
+                    f"<td class='l'>{rests}</td><td class='l'>{flip}</td></tr>")
+    ruled = summary.get("ruled_out") or {}
+    ruled_text = ("Ruled out before ranking: " + ", ".join(f"{_e(k)} {v}" for k, v in ruled.items()) + "."
+                  if ruled else "")
+    return ("<h2>The answer</h2><table><tr><th class='l'>technology</th><th class='l'>verdict</th>"
+            "<th class='l'>best design</th><th class='l'>binding check</th><th class='l'>rests on</th>"
+            "<th class='l'>what would flip the verdict</th></tr>" + "".join(rows) + f"</table><p>{ruled_text}</p>")
+
+
+def _objective_text(key: str, value) -> str:
+    if value is None:
+        return f"{key}: n/a"
+    unit = {"mass_kg": "kg", "cost_usd": "USD", "volume_m3": "m^3", "power_W": "W"}.get(key, "")
+    return f"{value:,.4g} {unit}".strip()
+
+
 def render(results: dict, traces: list[dict]) -> str:
     cands = results["candidates"]
     figs = [pareto_figure(results), traces_figure(results, traces), comparison_figure(results, _pick_comparison(cands))]
@@ -234,6 +268,7 @@ def render(results: dict, traces: list[dict]) -> str:
     body = f"""
 <h1>Sizing report</h1>
 <p class="stamp">{stamp}</p>
+{_answer(summary)}
 <p>Requirements: stroke {req['stroke_m'] * 1e3:g} mm, blocked force {req['blocked_force_N'] / 1e3:g} kN,
 speed {req['speed_m_s'] * 1e3:g} mm/s (stroke within {req['stroke_time_s']:g} s), every component to
 {req['max_temperature_degC']:g} degC. Load cases: {_e(loads)}. Objectives: minimise {_e(', '.join(results['objectives']))}.

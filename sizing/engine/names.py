@@ -1,0 +1,79 @@
+"""Short human names of candidates (at most 32 characters): what an
+engineer would say of the design, the ``id`` staying the machines' key.
+
+    piezohydraulic   "17xP056.90 87257 PTFE-OR Al orif"   stacks, fluid, seal, structure, compensation
+    DC from parts    "DC EC-45 ball-12x2 g1:4"         motor, screw, gear
+    DC catalog       "DC exlar-gsx20-0301"
+"""
+from __future__ import annotations
+
+import re
+
+MAX_NAME = 32
+_MAKERS = ("pi-", "thorlabs-", "maxon-", "faulhaber-", "allied-", "gen-", "thk-", "hiwin-")
+
+
+def _short(part_id: str | None, keep: int = 14) -> str:
+    """A part id without its maker's prefix, at most ``keep`` characters."""
+    text = str(part_id or "")
+    for prefix in _MAKERS:
+        if text.startswith(prefix):
+            text = text[len(prefix):]
+            break
+    return text[:keep]
+
+
+# words an engineer abbreviates; any other id token is cut to its first letters
+_WORDS = {"ptfe": "PTFE", "fkm": "FKM", "o": "O", "ring": "R", "spring": "S", "energised": "E", "al": "Al",
+          "steel": "St", "ti": "Ti", "invar": "Inv", "orifice": "orif", "reservoir": "", "bellows": "bell",
+          "accumulator": "", "silicone": "sil", "mil": "", "prf": "", "iso": "", "vg": "VG", "mineral": ""}
+
+
+def _abbr(part_id: str | None, tokens: int = 2) -> str:
+    """A few letters for a part: its first ``tokens`` id tokens, known words
+    abbreviated, numbers kept short (mil-prf-87257 -> 87257, ptfe-o-ring -> PTFE-OR)."""
+    out = []
+    for tok in str(part_id or "").split("-"):
+        word = _WORDS.get(tok, tok if any(ch.isdigit() for ch in tok) else tok[:3])
+        if word:
+            out.append(word)
+        if len(out) == tokens:
+            break
+    if len(out) > 1 and all(len(w) <= 1 for w in out[1:]):
+        return out[0] + "-" + "".join(out[1:])          # ptfe-o-ring -> PTFE-OR
+    return "-".join(out)
+
+
+def _piezo(c: dict) -> str:
+    comp = c["components"]
+    stack = _short(comp.get("stack"))
+    stack = stack.upper().replace("-", "", 1) if re.match(r"^[a-z]-\d", stack) else stack
+    parts = [f"{comp.get('n_stacks')}x{stack}", _abbr(comp.get("fluid"), 1), _abbr(comp.get("seal"), 3),
+             _abbr(comp.get("material"), 1)]
+    variant = c.get("variant")
+    if variant == "passive":
+        parts.append("sp")
+    elif variant == "compensated":
+        parts.append(_abbr(comp.get("compensator"), 1))
+    return " ".join(p for p in parts if p)
+
+
+def _dc(c: dict) -> str:
+    comp = c["components"]
+    if "actuator" in comp:
+        return "DC " + _short(comp["actuator"], 28)
+    gear = comp.get("gear")
+    return " ".join(x for x in ("DC", _short(comp.get("motor"), 12), _short(comp.get("screw"), 10),
+                                _short(gear, 6) if gear else "") if x)
+
+
+def name(c: dict) -> str:
+    """The candidate's short name, at most MAX_NAME characters."""
+    text = _piezo(c) if c.get("technology") == "piezohydraulic" else _dc(c)
+    return text[:MAX_NAME]
+
+
+def fill(candidates: list[dict]) -> None:
+    """Every candidate's ``name`` (in place)."""
+    for c in candidates:
+        c["name"] = name(c)

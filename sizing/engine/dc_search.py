@@ -124,16 +124,15 @@ def search(catalog, req, loads) -> SearchResult:
     _add(counts, "speed", np.sum(~direct & (n_force <= 1.0 + 1e-9)))
     keep_m.append(mi[direct]); keep_s.append(si[direct]); keep_g.append(np.zeros(int(direct.sum()), int))
     keep_d.append(di[direct])
-    bounds = np.searchsorted  # per motor, gears sorted by ratio
-    start = 0
+    start = 0                 # per motor: its gearheads sorted by ratio, bisected
     for m in good_m:
         stop = start + len(good_s) * len(good_d)
         gears = gears_of[m]
         if len(gears):
             ratios = g_ratio[gears + 1]
-            below = bounds(ratios, n_force[start:stop] * (1 - 1e-9), "left")
-            a = np.maximum(bounds(ratios, lo[start:stop] * (1 - 1e-9), "left"), below)
-            b = np.maximum(bounds(ratios, hi[start:stop] * (1 + 1e-9), "right"), a)
+            below = np.searchsorted(ratios, n_force[start:stop] * (1 - 1e-9), "left")
+            a = np.maximum(np.searchsorted(ratios, lo[start:stop] * (1 - 1e-9), "left"), below)
+            b = np.maximum(np.searchsorted(ratios, hi[start:stop] * (1 + 1e-9), "right"), a)
             _add(counts, "blocked_force", below.sum())
             _add(counts, "speed", (len(gears) - below).sum() - (b - a).sum())
             n = b - a
@@ -158,7 +157,7 @@ def search(catalog, req, loads) -> SearchResult:
     im, isc, ig, idr = im[ok], isc[ok], ig[ok], idr[ok]
 
     # 4. the static screen, in chunks
-    feasible, near, near_worst = [], np.zeros(0, int), np.zeros(0)
+    feasible, near, near_worst, near_reason = [], np.zeros(0, int), np.zeros(0), np.zeros(0, object)
     for begin in range(0, len(im), CHUNK):
         sl = slice(begin, begin + CHUNK)
         p = parts_at(lists, im[sl], isc[sl], ig[sl], idr[sl])
@@ -169,18 +168,16 @@ def search(catalog, req, loads) -> SearchResult:
         good = worst >= 0
         feasible.append(begin + np.flatnonzero(good))
         bad = np.flatnonzero(~good)
-        for k, name in enumerate(names):
-            _add(counts, name, np.sum(Mx[:, bad].argmin(axis=0) == k))
+        reason = np.array(names, dtype=object)[Mx[:, bad].argmin(axis=0)]
+        for name in names:
+            _add(counts, name, np.sum(reason == name))
         pool = np.concatenate([near, begin + bad])
         pool_worst = np.concatenate([near_worst, np.maximum(worst[bad], -1e300)])
+        pool_reason = np.concatenate([near_reason, reason])
         order = np.argsort(-pool_worst, kind="stable")[:NEAR_KEPT]
-        near, near_worst = pool[order], pool_worst[order]
+        near, near_worst, near_reason = pool[order], pool_worst[order], pool_reason[order]
     feasible = np.concatenate(feasible) if feasible else np.zeros(0, int)
-    # the near ones are counted under their reasons; the simulation may take them back
-    for j in near:
-        p1 = parts_at(lists, im[[j]], isc[[j]], ig[[j]], idr[[j]])
-        _, _, m1 = dc_parts.static_screen(p1, req, loads)
-        name = min(m1, key=lambda k: np.nan_to_num(m1[k][0], nan=-np.inf))
+    for name in near_reason:             # kept for the simulation's minimum: no longer ruled out
         counts[name] -= 1
         if not counts[name]:
             del counts[name]

@@ -131,3 +131,12 @@ def test_a_unit_in_the_header_is_converted(tmp_path):
     shutil.copytree(ROOT / "catalogs", folder)
     import_mgdb(tables, None, folder)
     assert load_catalog(folder).motors["allied-mf0076008-48v"].torque_constant == pytest.approx(0.1)
+
+
+@need_tables
+def test_a_unit_slip_exits_2(tmp_path):
+    """k_t in mN m/A under a header without unit: 136 N m/A is no motor's."""
+    tables = _tables(tmp_path)
+    path = tables / "maxon_motors.csv"
+    path.write_text(path.read_text().replace("MM_597974,Maxon,597974,BLDC,30,0.136,", "MM_597974,Maxon,597974,BLDC,30,136,", 1))
+    _exit_2_nothing_written(tmp_path, tables, "maxon_motors.csv", "MM_597974", "torque_constant", "unit error")

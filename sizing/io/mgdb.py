@@ -473,6 +473,20 @@ def _file_text(array: str, entries: list[dict], command: str) -> str:
     return head + "\n".join("\n" + entry_toml(array, e) for e in entries)
 
 
+def _plausible(catalog, data: MgdbImport) -> None:
+    """The first implausible imported value (a unit slip, ``validate.RANGES``)
+    as an InputError naming the table, the row's key and the field."""
+    from .validate import problems
+    origin = {raw["id"]: raw["source"].rsplit(", ", 2)[-2:] for raw in data.motors + data.gears}
+    origin.update({raw["id"]: [raw["name"], ""] for raw in data.screws})
+    for problem in problems(catalog):
+        ident = problem.field.split("]] ", 1)[-1].split(":", 1)[0]
+        if ident in origin:
+            where, key = origin[ident]
+            field_name = problem.field.split(": ", 1)[-1]
+            raise InputError(where, f"{key.removeprefix('key ')}: {field_name}".strip(": "), problem.message)
+
+
 def import_mgdb(mgdb_dir: str | Path, screws_csv: str | Path | None = None,
                 catalog_dir: str | Path | None = None) -> dict:
     """Write motors-mgdb.toml, gears-mgdb.toml (and screws-sourced.toml when
@@ -490,7 +504,7 @@ def import_mgdb(mgdb_dir: str | Path, screws_csv: str | Path | None = None,
                 shutil.copy(folder / name, Path(tmp) / name)
         for name, text in texts.items():
             (Path(tmp) / name).write_text(text, encoding="utf-8")
-        load_catalog(tmp)       # the written text reads back with the rest of the catalog
+        _plausible(load_catalog(tmp), data)     # the written text reads back, and is physically plausible
     write_files({folder / name: text for name, text in texts.items()}, (), "--catalog")
     return {"motors": len(data.motors), "gears": len(data.gears), "screws": len(data.screws),
             "skipped": data.skipped, "files": sorted(texts)}

@@ -94,6 +94,11 @@ def test_an_envelope_rules_designs_out_and_none_is_ranked(tmp_path):
     assert "envelope" in reasons and set(reasons) <= {"envelope", "structure_out_of_range"}
     assert all(c["metrics"]["mass_kg"] <= 150 * (1 + 1e-9) for c in r["candidates"] if c["metrics"].get("mass_kg"))
     assert r["summary"]["ruled_out"]["envelope"] == reasons.count("envelope")
+    # robust picks only ranked designs: none ruled out, none outside the envelope
+    from sizing.studies.robust import pick_designs
+    picked = pick_designs(r, 10, "piezohydraulic")
+    assert not {c["id"] for c in picked} & {x["id"] for x in r["ruled_out"]}
+    assert all(c["metrics"]["mass_kg"] <= 150 * (1 + 1e-9) for c in picked)
 
 
 @pytest.mark.parametrize("extra, field", [

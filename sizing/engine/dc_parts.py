@@ -19,8 +19,16 @@ a combination is ruled out by every margin below zero, and keeps them:
 - temperature: motor, screw and gear rated ambient against the requirement;
   drive_temperature: the drive where it sits (options.amplifier_location);
 - drive_current: the drive's continuous current against the duty's RMS;
-- buckling: Euler load of the screw (fixed-pinned) against the blocked force;
-- screw_life: L10 life at the duty against REQUIRED_LIFE_H.
+- buckling: Euler load of the screw (fixed-pinned) against the peak force
+  the drive can push (at least the required blocked force);
+- screw_life: L10 life at the duty against REQUIRED_LIFE_H;
+- static_safety: the screw's C0 over that peak force against THK's 2.0;
+- continuous_torque: the motor's continuous rating derated to the ambient
+  (physics/motor.py) against the duty's torque;
+- gear_torque: the gear's continuous output torque against the holding load;
+- holding: the winding after holding the steady load on the back-driven
+  screw for the hold time (no brake).
+k_t is taken with the magnets at the holding duty's winding temperature.
 Continuous choices are catalog values (lead, ratio): the feasible ratios of
 a motor-screw pair form an interval (force needs N >= N_min, speed N <=
 N_max; ``ratio_interval``, reported as static.ratio_low / ratio_high), and
@@ -267,7 +275,7 @@ def static_screen(p: PartArrays, req, loads, ambient=None, settings=None) -> tup
                                                              v["gear_max_temperature"]]), T),
         "drive_temperature": temperature_margin(v["drive_max_temperature"], drive_ambient),
         "drive_current": v["drive_continuous_current"] / np.maximum(i_load, 1e-12) - 1.0,
-        "buckling": P_cr / r.blocked_force - 1.0,
+        "buckling": P_cr / np.maximum(F_peak, r.blocked_force) - 1.0,   # the screw carries what the drive can push
         "screw_life": life_h / REQUIRED_LIFE_H - 1.0,
         "static_safety": static["static_safety"] / STATIC_SAFETY_REQUIRED - 1.0,
         "gear_torque": v["gear_continuous_output_torque"] / np.maximum(screw_phys.torque_for_force(

@@ -119,3 +119,23 @@ def test_every_dc_candidate_says_what_it_rests_on(solved):
         for x in c["rests_on_assumed"]:
             assert cat.get(x["part"])[1].status[x["field"]].startswith("assumed"), (c["id"], x)
             assert isinstance(x["decides"], bool)
+
+
+def test_evaluate_reproduces_the_best_real_design(solved, tmp_path):
+    """Its `design` entry through `sizing evaluate` (a one-design catalog of
+    makers' parts) gives the same speeds, winding and margins."""
+    from sizing import api
+    *_, cands, summary = solved
+    best = next(c for c in cands if c["id"] == summary["best_on_sourced_parts"]["id"])
+    d = best["design"]
+    lines = ['technology = "dc_motor"'] + [f'{k} = "{d[k]}"' for k in ("motor", "screw", "drive")]
+    lines += [f'gear = "{d["gear"]}"'] if d["gear"] else []
+    lines += [f"{k} = {d[k]!r}" for k in ("step", "duration", "temperature", "speed", "strokes_per_second",
+                                          "electronics_bay_temperature")]
+    lines += [f'amplifier_location = "{d["amplifier_location"]}"', "[load]", 'dynamic_pressure = ["10 kPa", "25 kPa"]']
+    path = tmp_path / "dc.toml"
+    path.write_text("\n".join(lines) + "\n")
+    ev = api.evaluate(path)
+    assert ev["margins"] == pytest.approx({k: v for k, v in best["margins"].items() if k != "blocked_force"}, rel=1e-9)
+    for a, b in zip(ev["simulated"]["cases"], best["simulated"]["cases"]):
+        assert a["speed_m_s"] == pytest.approx(b["speed_m_s"], rel=1e-9)

@@ -73,9 +73,10 @@ def _text(out: dict) -> str:
     a, r = out["best_on_any_parts"], out["best_on_sourced_parts"]
     if a is None:
         return "No feasible DC design from parts."
+    deciding = [f"{x['part']} {x['field']}" for x in a["rests_on_assumed"] if x["decides"]]
     line = (f"Best DC design on any parts: {a['id']} ({a['mass_kg']:.2f} kg, binding {a['driver']} "
-            f"{a['binding_margin']:+.1%}), resting on {sum(x['decides'] for x in a['rests_on_assumed'])} assumed "
-            f"value(s) that enter its binding margin.")
+            f"{a['binding_margin']:+.1%}); its binding margin rests on "
+            + (f"the assumed {', '.join(deciding)}." if deciding else "no assumed value."))
     if r is None:
         return line + " No feasible DC design on sourced parts."
     if r["id"] == a["id"]:

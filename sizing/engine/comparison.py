@@ -47,7 +47,7 @@ def technology_comparison(req, candidates: list[dict], catalog=None) -> dict:
             continue
         best, ok = _best(members)
         m = best["margins"].get(best["driver"]) if best.get("driver") else None
-        out[tech] = {"best": best["id"], "feasible": ok, "binding": best.get("driver"), "binding_margin": m,
+        out[tech] = {"best": best["id"], "name": best.get("name", best["id"]), "feasible": ok, "binding": best.get("driver"), "binding_margin": m,
                      "metrics": {k: best["metrics"].get(k) for k in keys},
                      "n_feasible": sum(1 for c in members if c["feasible"])}
         out[tech]["flip"] = flip(req, catalog, members)
@@ -60,13 +60,13 @@ def technology_comparison(req, candidates: list[dict], catalog=None) -> dict:
                                      "metrics": {k: near["metrics"].get(k) for k in keys}}
         figures = ", ".join(_fmt(k, best["metrics"].get(k)) for k in keys)
         if ok:
-            lines.append(f"{label}: best {best['id']} ({figures}); binding check {best['driver']} "
+            lines.append(f"{label}: best {best.get('name', best['id'])} ({figures}); binding check {best['driver']} "
                          f"(margin {m:+.1%})")
         else:
-            lines.append(f"{label}: no feasible design; the closest, {best['id']} ({figures}), "
+            lines.append(f"{label}: no feasible design; the closest, {best.get('name', best['id'])} ({figures}), "
                          f"misses {best['driver']} by {_miss(m)}")
             if near is not None:
-                lines.append(f"the best {label} design that misses only one check, {near['id']} "
+                lines.append(f"the best {label} design that misses only one check, {near.get('name', near['id'])} "
                              f"({', '.join(_fmt(k, near['metrics'].get(k)) for k in keys)}), misses "
                              f"{near['driver']}")
     for tech, label in (("piezohydraulic", "piezohydraulic"), ("dc_motor", "DC motor")):
@@ -108,6 +108,8 @@ def _fmt(key, value) -> str:
     if value is None or not math.isfinite(value):
         return f"{key}: n/a"
     unit = {"mass_kg": "kg", "cost_usd": "USD", "volume_m3": "m^3", "power_W": "W"}[key]
+    if key == "cost_usd":
+        return f"{value:,.0f} {unit}"
     return f"{value:.4g} {unit}"
 
 

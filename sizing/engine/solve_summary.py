@@ -122,7 +122,7 @@ def _summary(req: RequirementsFile, candidates: list[dict], catalog, piezo_prune
         entry["best"] = best["id"]
         entry["drivers"] = dict(Counter(c["driver"] for c in members if not c["feasible"]).most_common())
         if feasible:
-            entry["text"] = f"{len(feasible)} feasible; best ranked {best['id']} (driver: {best['driver']})"
+            entry["text"] = f"{len(feasible)} feasible; best ranked {_label(best)} (driver: {best['driver']})"
             if key[0] == "piezohydraulic":
                 entry["text"] += _amplifier_caveat(req, feasible, catalog)
         else:
@@ -130,7 +130,7 @@ def _summary(req: RequirementsFile, candidates: list[dict], catalog, piezo_prune
             entry["blocking"] = furthest["driver"]
             entry["closest"] = furthest["id"]
             entry["text"] = (f"no feasible design: blocked by {furthest['driver']} - the candidate that gets furthest, "
-                             f"{furthest['id']} ({furthest['stage']}), misses it by {_pct(m)}")
+                             f"{_label(furthest)} ({furthest['stage']}), misses it by {_pct(m)}")
         groups.append(entry)
     return {"groups": groups, "thermal": _thermal_statement(req, candidates),
             "comparison": technology_comparison(req, candidates, catalog),
@@ -165,6 +165,11 @@ def _progress_key(c):
     return STAGES.get(c.get("stage"), 0), (m if m is not None and math.isfinite(m) else -math.inf)
 
 
+def _label(c: dict) -> str:
+    """What people read: the candidate's short name (the id is for machines)."""
+    return c.get("name") or c["id"]
+
+
 def _pct(margin) -> str:
     if margin is None or not math.isfinite(margin):
         return "an unbounded amount"
@@ -182,7 +187,7 @@ def _thermal_statement(req, candidates) -> str:
     text = (f"Thermal budget from {req.options.drift_reference_temperature:g} to {T:g} degC (oil, casing, stacks, "
             f"pistons, frame; net against {req.options.max_drift_fraction:.0%} of the "
             f"{req.requirements.stroke * 1e3:g} mm stroke): the smallest net drift of any sized as-built design is "
-            f"{drift * 1e3:.1f} mm ({smallest['id']}); its oil term alone is "
+            f"{drift * 1e3:.1f} mm ({_label(smallest)}); its oil term alone is "
             f"{smallest.get('thermal_budget', {}).get('oil_m', math.nan) * 1e3:.1f} mm. ")
     if len(drifting) == len(plain):
         text += ("The drift makes EVERY uncompensated piezohydraulic design infeasible. "

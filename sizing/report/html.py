@@ -208,7 +208,8 @@ def _answer(summary: dict) -> str:
         f = t.get("flip")
         flip = (f"{_e(f['what'])}: {f['from']:.4g} &rarr; {f['to']:.4g} ({f['relative_change']:.1%})" if f else "none known")
         rows.append(f"<tr><td class='l'><b>{_e(tech)}</b></td><td class='l'>{'feasible' if t.get('feasible') else 'infeasible'}"
-                    f"</td><td class='l'>{_e(t.get('best'))}<br>{_e(metrics)}</td><td class='l'>{binding}</td>"
+                    f"</td><td class='l' title='{_e(t.get('best'))}'>{_e(t.get('name') or t.get('best'))}<br>{_e(metrics)}</td>"
+                    f"<td class='l'>{binding}</td>"
                     f"<td class='l'>{rests}</td><td class='l'>{flip}</td></tr>")
     ruled = summary.get("ruled_out") or {}
     ruled_text = ("Ruled out before ranking: " + ", ".join(f"{_e(k)} {v}" for k, v in ruled.items()) + "."

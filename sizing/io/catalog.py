@@ -407,6 +407,9 @@ def _parse_file(path: Path, array_name: str, model: type[Entry]) -> list[tuple[s
 _SCHEMA_HASH = hashlib.sha256(Path(__file__).read_bytes()).hexdigest()[:16]
 
 
+CACHE_KEEP = 200               # cached files kept, the most recently written
+
+
 def _cache_path(digest: str) -> Path:
     root = os.environ.get("SIZING_CACHE_DIR") or Path.home() / ".cache" / "sizing" / "catalog"
     return Path(root) / f"{digest}-{_SCHEMA_HASH}.pickle"
@@ -431,6 +434,9 @@ def _store(digest: str, parsed: list) -> None:
         with os.fdopen(fd, "wb") as handle:
             pickle.dump(parsed, handle, protocol=pickle.HIGHEST_PROTOCOL)
         os.replace(tmp, target)
+        kept = sorted(target.parent.glob("*.pickle"), key=lambda f: f.stat().st_mtime, reverse=True)
+        for old in kept[CACHE_KEEP:]:
+            old.unlink(missing_ok=True)
     except OSError:
         pass                    # no cache: the next load parses again
 

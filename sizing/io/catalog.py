@@ -404,7 +404,9 @@ def _parse_file(path: Path, array_name: str, model: type[Entry]) -> list[tuple[s
 # the unit strings of the small files in a third of one; the validated
 # entries unpickle in a few hundredths. SIZING_CACHE_DIR moves the
 # cache; an unreadable or stale cache entry is parsed again.
-_SCHEMA_HASH = hashlib.sha256(Path(__file__).read_bytes()).hexdigest()[:16]
+# the models, their quantity parsing and the units: a change to any of them re-parses
+_SCHEMA_HASH = hashlib.sha256(b"".join(p.read_bytes() for p in (
+    Path(__file__), Path(__file__).with_name("schema.py"), Path(__file__).parents[1] / "units.py"))).hexdigest()[:16]
 
 
 CACHE_KEEP = 200               # cached files kept, the most recently written

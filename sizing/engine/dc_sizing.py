@@ -31,7 +31,7 @@ from .rank import nondominated_levels, verdict
 
 MAX_SIMULATED = 300     # designs simulated per solve (each under every load case)
 REAL_SHARE = 1 / 3      # of the simulation budget, first for designs whose parts all exist (dc_verdict)
-NOT_SIMULATED = "not simulated: statically feasible, beyond the simulation budget (later Pareto level)"
+NOT_SIMULATED = "not simulated (feasible, later Pareto level)"   # statically feasible, beyond the simulation budget
 MIN_SIMULATED = 24      # filled with the closest-to-feasible when fewer pass the screen
 SIM_CHUNK = 64          # rows (design x load case) per batched simulation
 OBJECTIVE_KEYS = {"mass": "mass_kg", "cost": "cost_usd", "volume": "volume_m3", "power": "power_W"}

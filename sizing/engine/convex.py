@@ -94,6 +94,9 @@ class SizingInput:
     max_length: float = NO_LIMIT        # m, envelope
     max_diameter: float = NO_LIMIT      # m, envelope (outer diameter of the wide cylinder)
     max_mass: float = DEFAULT_MAX_MASS  # kg, envelope
+    amp_unit_mass: float = 0.0          # kg, one amplifier unit (the drive's mass scales with the units)
+    amp_unit_cost: float = 0.0          # USD, one unit
+    amp_unit_current: float = math.inf  # A, what one unit holds over the planned ramp
 
 
 @dataclass
@@ -137,7 +140,7 @@ class GPSizer:
         self.M = cp.Variable(pos=True, name="reflected_mass")
         names = ["nk", "x0", "V0", "vmax", "F", "S", "beta", "g", "p", "w2", "cur", "m0", "c0", "vol0",
                  "rho", "coil", "pw", "E", "pc", "ps", "sig", "Ls", "knk", "rhom", "cm", "Apack", "cacc",
-                 "f0", "fc", "msurf", "sh", "gmin", "gfloor", "tv", "Lmax", "Dmax", "Mmax", "wall"]
+                 "f0", "fc", "msurf", "sh", "gmin", "gfloor", "tv", "Lmax", "Dmax", "Mmax", "wall", "uam", "uac"]
         self.par = {k: cp.Parameter(pos=True, name=k) for k in names}
         terms = self._constraint_terms()
         bounds = ([self.v <= self.par["vmax"], MIN_RATIO / self.R <= 1] + self._structure_bounds() + self._gap_bounds()
@@ -252,7 +255,14 @@ class GPSizer:
 
     def _mass(self):
         metal, oil, structure = self._parts()
-        return self.par["m0"] + metal + self.par["rho"] * oil + structure
+        return self.par["m0"] + metal + self.par["rho"] * oil + structure + self.par["uam"] * self._units()
+
+    def _units(self):
+        """Amplifier units the planned ramp needs, as a continuous count
+        (physics/amplifier.py): the ramp reaches the stroke in half the
+        stroke time, t_r = t_S R x0 v / (2 S), so i_r = n C_L v V0 / t_r =
+        2 n C_L V0 S / (t_S R x0): units = k / R (``uam`` = k x unit mass)."""
+        return 1 / self.R
 
     def _objective(self):
         P, R, A, v = self.par, self.R, self.A, self.v
@@ -261,7 +271,8 @@ class GPSizer:
         metal, oil, structure = self._parts()
         exprs = {
             "mass": self._mass(),
-            "cost": P["c0"] + geometry.MACHINING_USD_PER_KG * metal + P["coil"] * oil + P["cm"] * structure,
+            "cost": (P["c0"] + geometry.MACHINING_USD_PER_KG * metal + P["coil"] * oil + P["cm"] * structure
+                     + P["uac"] * self._units()),
             "volume": P["vol0"] + geometry.hydraulic_volume(A, narrow, p, g, stroke),
             "power": P["pw"] * v / R,
         }
@@ -273,6 +284,7 @@ class GPSizer:
     # solving -----------------------------------------------------------
     def set(self, s: SizingInput) -> None:
         c_large = s.n_capacitance * LARGE_SIGNAL_CAPACITANCE_FACTOR
+        units_per_R = 2 * c_large * s.rated_voltage * s.stroke / (s.stroke_time * s.stack_stroke * s.amp_unit_current)
         values = {
             "nk": s.n_stiffness, "x0": s.stack_stroke, "V0": s.rated_voltage, "vmax": s.max_fraction,
             "F": s.force * (1 + s.margin), "S": s.stroke * (1 + s.margin), "beta": s.bulk_modulus,
@@ -294,6 +306,7 @@ class GPSizer:
             "tv": math.sqrt(math.pi) / structure.MINDLIN_MAX_THICKNESS_RATIO,
             "Lmax": s.max_length, "Dmax": s.max_diameter, "Mmax": s.max_mass,
             "wall": 2 / math.sqrt(math.pi) * (1 + s.pressure_rating / geometry.DESIGN_STRESS),
+            "uam": max(s.amp_unit_mass * units_per_R, 1e-12), "uac": max(s.amp_unit_cost * units_per_R, 1e-12),
         }
         for k, val in values.items():
             self.par[k].value = float(val)

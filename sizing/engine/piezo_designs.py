@@ -82,8 +82,10 @@ def sizing_input(req: RequirementsFile, c: Combo, material=None, compensator=Non
         natural_frequency=req.natural_frequency, stroke_time=req.stroke_time,
         n_capacitance=c.n * st.capacitance, max_current=_drive_limit(req, c.amplifier),
         margin=req.options.design_margin,
-        fixed_mass=c.n * st.mass + c.amplifier.mass + (compensator.mass if compensator else 0.0),
-        fixed_cost=(c.n * st.cost_usd + c.amplifier.cost_usd + 2 * s.cost_usd + geometry.FIXED_HYDRAULIC_USD
+        fixed_mass=c.n * st.mass + (compensator.mass if compensator else 0.0),
+        amp_unit_mass=c.amplifier.mass, amp_unit_cost=c.amplifier.cost_usd,
+        amp_unit_current=_unit_current(req, c.amplifier),
+        fixed_cost=(c.n * st.cost_usd + 2 * s.cost_usd + geometry.FIXED_HYDRAULIC_USD
                     + (compensator.cost_usd if compensator else 0.0)),
         fixed_volume=1.5 * c.n * stack_volume,
         oil_density=float(fluid_props.density_at(f.density, f.thermal_expansion, T)),
@@ -97,12 +99,17 @@ def sizing_input(req: RequirementsFile, c: Combo, material=None, compensator=Non
         surface_mass=_surface_mass(req))
 
 
+def _unit_current(req: RequirementsFile, amp) -> float:
+    """What one amplifier unit holds over the planned ramp (half the stroke
+    time), A: its peak within the rated pulse, else its continuous rating."""
+    return float(amplifier.usable_ramp_current(amp.max_current, amp.continuous_current, amp.peak_duration,
+                                               req.stroke_time / 2))
+
+
 def _drive_limit(req: RequirementsFile, amp) -> float:
     """The most current the drive may carry over the stroke time, A: every
     unit the options allow, each at what it holds for that long."""
-    each = float(amplifier.usable_ramp_current(amp.max_current, amp.continuous_current, amp.peak_duration,
-                                               req.stroke_time))
-    return req.options.max_amplifier_units * each
+    return req.options.max_amplifier_units * _unit_current(req, amp)
 
 
 def _surface_mass(req: RequirementsFile) -> float:

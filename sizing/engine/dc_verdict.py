@@ -32,7 +32,7 @@ def _brief(c) -> dict:
     m = c.get("margins", {})
     driver = c.get("driver") or (min(m, key=m.get) if m else None)
     sim = c.get("simulated") or {}
-    return {"id": c["id"], "components": c.get("components", {}), "mass_kg": c["metrics"].get("mass_kg"),
+    return {"id": c["id"], "name": c.get("name"), "components": c.get("components", {}), "mass_kg": c["metrics"].get("mass_kg"),
             "cost_usd": c["metrics"].get("cost_usd"), "driver": driver,
             "binding_margin": m.get(driver) if driver else None,
             "blocked_force_N": (c.get("static") or {}).get("blocked_force_N"),

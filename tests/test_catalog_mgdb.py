@@ -105,12 +105,24 @@ def test_gearhead_key_matching_no_motor_exits_2(tmp_path):
     _exit_2_nothing_written(tmp_path, tables, "faulhaber_compatibility.csv", "FH_NO_SUCH_GEARHEAD", "matches no gearhead")
 
 
+BAD_CELLS = {
+    # a negative resistance
+    "negative": ("allied_motion_motors.csv", ",48.0,0.1,0.92,", ",48.0,0.1,-0.92,",
+                 ("allied_motion_motors.csv", "column R", "positive resistance", "-0.92")),
+    # k_t in mN m/A under a header without unit: 136 N m/A is no motor's
+    "unit slip": ("maxon_motors.csv", "MM_597974,Maxon,597974,BLDC,30,0.136,", "MM_597974,Maxon,597974,BLDC,30,136,",
+                  ("maxon_motors.csv", "MM_597974", "torque_constant", "unit error")),
+}
+
+
 @need_tables
-def test_negative_resistance_exits_2(tmp_path):
+@pytest.mark.parametrize("case", sorted(BAD_CELLS))
+def test_a_bad_cell_exits_2(tmp_path, case):
+    name, old, new, words = BAD_CELLS[case]
     tables = _tables(tmp_path)
-    path = tables / "allied_motion_motors.csv"
-    path.write_text(path.read_text().replace(",48.0,0.1,0.92,", ",48.0,0.1,-0.92,", 1))
-    _exit_2_nothing_written(tmp_path, tables, "allied_motion_motors.csv", "column R", "positive resistance", "-0.92")
+    path = tables / name
+    path.write_text(path.read_text().replace(old, new, 1))
+    _exit_2_nothing_written(tmp_path, tables, *words)
 
 
 @need_tables
@@ -131,12 +143,3 @@ def test_a_unit_in_the_header_is_converted(tmp_path):
     shutil.copytree(ROOT / "catalogs", folder)
     import_mgdb(tables, None, folder)
     assert load_catalog(folder).motors["allied-mf0076008-48v"].torque_constant == pytest.approx(0.1)
-
-
-@need_tables
-def test_a_unit_slip_exits_2(tmp_path):
-    """k_t in mN m/A under a header without unit: 136 N m/A is no motor's."""
-    tables = _tables(tmp_path)
-    path = tables / "maxon_motors.csv"
-    path.write_text(path.read_text().replace("MM_597974,Maxon,597974,BLDC,30,0.136,", "MM_597974,Maxon,597974,BLDC,30,136,", 1))
-    _exit_2_nothing_written(tmp_path, tables, "maxon_motors.csv", "MM_597974", "torque_constant", "unit error")

@@ -148,7 +148,10 @@ def catalog_show(entry_id: str = typer.Argument(..., help="Catalog id, e.g. pi-p
     try:
         kind, entry = cat.get(entry_id)
     except KeyError:
-        raise InputError(str(cat.folder), "id", f"no entry {entry_id!r} in the catalog") from None
+        import difflib
+        near = difflib.get_close_matches(entry_id, [e.id for _, e in cat.entries()], n=3, cutoff=0.6)
+        hint = f"; did you mean {', '.join(near)}?" if near else "; `sizing catalog list` lists them"
+        raise InputError(str(cat.folder), "id", f"no entry {entry_id!r} in the catalog{hint}") from None
     if json_out:
         _print_json({"kind": kind, **entry.model_dump(mode="json")})
         return

@@ -163,7 +163,8 @@ def _temperature(quantity: pint.Quantity, value: str, word: str) -> float:
     if quantity.unitless:
         return float(quantity.magnitude)
     if not quantity.check("[temperature]"):
-        raise UnitError(f'expected {word}, got "{_shown(value)}"')
+        hint = ' (write degC or degF: "C" is the coulomb)' if re.search(r"\d\s*[CF]\s*$", value) else ""
+        raise UnitError(f'expected {word}, got "{_shown(value)}"{hint}')
     return float(quantity.to("degC").magnitude)
 
 

@@ -19,6 +19,7 @@ from .schema import Qty, Strict, load_toml, parse_model, read_input_bytes
 
 OBJECTIVES = ("mass", "cost", "volume", "power")
 ABSOLUTE_ZERO_DEGC = -273.15
+MIN_STROKE_M = 1e-4
 
 
 class RequirementsTable(Strict):
@@ -26,6 +27,17 @@ class RequirementsTable(Strict):
     blocked_force: Qty("force", positive=True)
     speed: Qty("speed", positive=True)
     max_temperature: Qty("temperature")
+
+    @field_validator("stroke")
+    @classmethod
+    def _amplified_scale(cls, value: float) -> float:
+        # below a tenth of a millimetre a stack drives the surface directly (PICA
+        # stacks give 0.1-0.2 mm): the amplified actuators sized here have no
+        # design there, and the search would size thousands of them first
+        if value < MIN_STROKE_M:
+            raise ValueError(f"expected a stroke of at least {MIN_STROKE_M * 1e3:g} mm (an amplified actuator; "
+                             f"below it a piezo stack drives the surface directly), got {value * 1e3:g} mm")
+        return value
 
     @field_validator("max_temperature")
     @classmethod
@@ -193,12 +205,39 @@ class RequirementsFile(Strict):
         return f if f is not None else 10.0 / self.stroke_time
 
 
+# A bare number is SI (docs/formats.md), so stroke = 40 is 40 m, which its
+# author meant as 40 mm. Bare numbers beyond what a control-surface actuator
+# could ask are refused with the unit to write: (SI unit, largest plausible, example)
+BARE_LIMITS = {"requirements": {"stroke": ("m", 1.0, '"40 mm"'), "speed": ("m/s", 10.0, '"100 mm/s"'),
+                                "blocked_force": ("N", 1e7, '"2.5 kN"')},
+               "envelope": {"max_length": ("m", 10.0, '"300 mm"'), "max_diameter": ("m", 5.0, '"120 mm"'),
+                            "max_width": ("m", 5.0, '"120 mm"')}}
+
+
+def _check_bare_numbers(data: dict, path: Path) -> None:
+    """Refuse a bare (SI) number far beyond its field's scale: most likely
+    written in another unit (exit 2, naming the unit to write)."""
+    from ..errors import InputError
+    for table, fields in BARE_LIMITS.items():
+        section = data.get(table)
+        if not isinstance(section, dict):
+            continue
+        for key, (unit, largest, example) in fields.items():
+            value = section.get(key)
+            if isinstance(value, (int, float)) and not isinstance(value, bool) and abs(value) > largest:
+                raise InputError(str(path), f"[{table}].{key}",
+                                 f"a bare number is SI: {value!r} means {value!r} {unit}; write the unit, "
+                                 f"e.g. {example}")
+
+
 def load_requirements(path: str | Path) -> tuple[RequirementsFile, str]:
     """Read and validate requirements.toml; returns the model and the
     file's sha256. Raises InputError naming the file and the field."""
     path = Path(path)
     data = load_toml(path)
-    return parse_requirements(data, path), hashlib.sha256(read_input_bytes(path)).hexdigest()
+    req = parse_requirements(data, path)
+    _check_bare_numbers(data, path)
+    return req, hashlib.sha256(read_input_bytes(path)).hexdigest()
 
 
 def parse_requirements(data: dict, path: str | Path) -> RequirementsFile:

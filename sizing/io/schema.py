@@ -115,9 +115,12 @@ def field_path(loc: tuple) -> str:
     return "[" + ".".join(names[:-1]) + "]." + names[-1]
 
 
-def first_error(exc: ValidationError) -> tuple[str, str]:
-    """The first pydantic error as (field path, message for a person)."""
-    err = exc.errors()[0]
+def first_error(exc: ValidationError, model=None) -> tuple[str, str]:
+    """The first pydantic error as (field path, message for a person). An
+    unknown key is reported before a missing one (a misspelt key causes
+    both), with the nearest known key of its table when ``model`` is given."""
+    errors = exc.errors()
+    err = next((e for e in errors if e.get("type") == "extra_forbidden"), errors[0])
     loc = tuple(err.get("loc", ()))
     message = err.get("msg", "invalid value")
     message = message.removeprefix("Value error, ")
@@ -125,17 +128,38 @@ def first_error(exc: ValidationError) -> tuple[str, str]:
     if kind == "missing":
         message = "required field is missing"
     elif kind == "extra_forbidden":
-        message = "unknown field (check the spelling against the documentation)"
+        near = _nearest_key(model, loc)
+        message = (f'unknown field; did you mean "{near}"?' if near else
+                   "unknown field (check the spelling against docs/formats.md)")
     elif "input" in err and "expected" not in message:
         message = f"{message}, got {err['input']!r}"
     return field_path(loc), message
+
+
+def _nearest_key(model, loc: tuple) -> str | None:
+    """The known key of the table at ``loc[:-1]`` closest to the unknown ``loc[-1]``."""
+    import difflib
+    table = model
+    for part in loc[:-1]:
+        field = getattr(table, "model_fields", {}).get(part) if isinstance(part, str) else None
+        if field is None:
+            return None
+        table = field.annotation
+        if not hasattr(table, "model_fields"):       # Optional[...] and the like
+            args = [a for a in getattr(table, "__args__", ()) if hasattr(a, "model_fields")]
+            table = args[0] if args else None
+    known = list(getattr(table, "model_fields", {}))
+    if not known or not loc or not isinstance(loc[-1], str):
+        return None
+    match = difflib.get_close_matches(loc[-1], known, n=1, cutoff=0.6)
+    return match[0] if match else None
 
 
 def parse_model(model: type[M], data: Any, file: str | Path, prefix: tuple = ()) -> M:
     try:
         return model.model_validate(data)
     except ValidationError as exc:
-        field, message = first_error(exc)
+        field, message = first_error(exc, model)
         if prefix:
             field = field_path(prefix + tuple(_split(field)))
         raise InputError(str(file), field or None, message) from None

@@ -2,7 +2,7 @@
 engineer would say of the design, the ``id`` staying the machines' key.
 
     piezohydraulic   "17xP056.90 87257 PTFE-OR Al orif"   stacks, fluid, seal, structure, compensation
-    DC from parts    "DC EC-45 ball-12x2 g1:4"         motor, screw, gear
+    DC from parts    "DC MF0127008 R12-05K4 belt-2"    motor, screw, gear
     DC catalog       "DC exlar-gsx20-0301"
 """
 from __future__ import annotations
@@ -63,8 +63,13 @@ def _dc(c: dict) -> str:
     if "actuator" in comp:
         return "DC " + _short(comp["actuator"], 28)
     gear = comp.get("gear")
-    return " ".join(x for x in ("DC", _short(comp.get("motor"), 12), _short(comp.get("screw"), 10),
-                                _short(gear, 6) if gear else "") if x)
+    return " ".join(x for x in ("DC", _tokens(comp.get("motor"), 1).upper(), _tokens(comp.get("screw"), 2).upper(),
+                                _tokens(gear, 2) if gear else "") if x)
+
+
+def _tokens(part_id: str | None, n: int) -> str:
+    """The first ``n`` tokens of a part id after its maker (maxon-606793 -> 606793)."""
+    return "-".join(_short(part_id, 64).split("-")[:n])
 
 
 def name(c: dict) -> str:

@@ -83,6 +83,7 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
     pruned = [c for c in combos if c.pruned]
     ruled_out = Counter(_pruned_reason(c) for c in pruned)
     piezo_pruned = Counter(ruled_out)
+    dc_ruled = Counter()
     candidates = []
     if detail == "full":
         candidates = [_pruned_candidate(req, c) for c in pruned]
@@ -99,12 +100,13 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
     candidates.extend(dc["candidates"] if dc else [])
     parts = dc_parts_candidates(req, catalog, loads, progress) if req.options.dc_motors else {}
     for reason, count in parts.get("ruled_out", {}).items():
-        ruled_out[reason] += count
+        dc_ruled[reason] += count
     for c in parts.get("candidates", []):
         if c.get("stage") == "pruned" and detail != "full":
-            ruled_out[_dc_pruned_reason(c)] += 1
+            dc_ruled[_dc_pruned_reason(c)] += 1
         else:
             candidates.append(c)
+    ruled_out.update(dc_ruled)
     if dc:
         dc["models"] = parts.get("models", {})
     _rank(req, candidates)
@@ -121,13 +123,16 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
         "load_cases": cases,
         "objectives": list(req.objectives.minimize),
         "assumptions": _assumptions(req),
-        "summary": dict(_summary(req, candidates, catalog, piezo_pruned), ruled_out=dict(ruled_out.most_common())),
+        "summary": dict(_summary(req, candidates, catalog, piezo_pruned), ruled_out=dict(ruled_out.most_common()),
+                        ruled_out_by_technology={
+                            "piezohydraulic": dict((piezo_pruned + Counter(x["reason"] for x in excluded)).most_common()),
+                            "dc_motor": dict(dc_ruled.most_common())}),
         "disagreements": _disagreements(designs),
         "hysteresis_time_scales": piezo_designs.hysteresis_time_scales(catalog),
         "counts": {"combinations": len(combos), "pruned": len(combos) - len(to_size), "sized": len(to_size),
                    "gp_feasible": sum(1 for d in designs if d["gp_success"]),
                    "simulated": sum(1 for d in designs if d["simulated"] is not None),
-                   "dc_parts": _dc_counts(parts.get("candidates", []))},
+                   "dc_parts": _dc_counts(parts)},
     }
     traces = _traces(req, candidates, designs, dc, loads)
     results["runtime_s"] = time.perf_counter() - start
@@ -347,9 +352,14 @@ def _rank(req, candidates) -> None:
         c["pareto_level"] = int(level[i]) if feasible[i] else None
 
 
-def _dc_counts(parts: list[dict]) -> dict:
-    stages = [c["stage"] for c in parts]
-    return {"combinations": len(parts), "pruned": stages.count("pruned"), "simulated": stages.count("simulated")}
+def _dc_counts(parts: dict) -> dict:
+    """DC combinations from parts: all of them, those ruled out (by reason,
+    before or after the static screen) and those simulated."""
+    records = parts.get("candidates", [])
+    stages = [c["stage"] for c in records]
+    ruled = sum(parts.get("ruled_out", {}).values()) + stages.count("pruned")
+    return {"combinations": int(parts.get("combinations", len(records))), "pruned": ruled,
+            "simulated": stages.count("simulated")}
 
 
 def _objective(value) -> float:

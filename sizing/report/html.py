@@ -211,19 +211,29 @@ def _answer(summary: dict) -> str:
                     f"</td><td class='l' title='{_e(t.get('best'))}'>{_e(t.get('name') or t.get('best'))}<br>{_e(metrics)}</td>"
                     f"<td class='l'>{binding}</td>"
                     f"<td class='l'>{rests}</td><td class='l'>{flip}</td></tr>")
-    ruled = summary.get("ruled_out") or {}
-    ruled_text = ("Ruled out before ranking: " + ", ".join(f"{_e(k)} {v}" for k, v in ruled.items()) + "."
-                  if ruled else "")
+    by_tech = summary.get("ruled_out_by_technology") or {"": summary.get("ruled_out") or {}}
+    ruled_text = " ".join(f"{_e(tech) or 'Ruled out'}: " + ", ".join(f"{_e(k)} {v:,}" for k, v in counts.items()) + "."
+                          for tech, counts in by_tech.items() if counts)
+    ruled_text = ("Ruled out before ranking (by the check each misses most) &mdash; " + ruled_text) if ruled_text else ""
+    sourced = (summary.get("dc_sourced") or {}).get("text")
+    if sourced:
+        ruled_text = f"{_e(sourced)}</p><p>{ruled_text}"
     return ("<h2>The answer</h2><table><tr><th class='l'>technology</th><th class='l'>verdict</th>"
             "<th class='l'>best design</th><th class='l'>binding check</th><th class='l'>rests on</th>"
             "<th class='l'>what would flip the verdict</th></tr>" + "".join(rows) + f"</table><p>{ruled_text}</p>")
+
+
+def _names(cands: list[dict], ids: list[str]) -> list[str]:
+    """Short names of the candidates ``ids``, in order (the id where none)."""
+    by_id = {c["id"]: c.get("name", c["id"]) for c in cands}
+    return [by_id.get(i, i) for i in ids]
 
 
 def _objective_text(key: str, value) -> str:
     if value is None:
         return f"{key}: n/a"
     unit = {"mass_kg": "kg", "cost_usd": "USD", "volume_m3": "m^3", "power_W": "W"}.get(key, "")
-    return f"{value:,.4g} {unit}".strip()
+    return (f"{value:,.0f} {unit}" if key == "cost_usd" else f"{value:.4g} {unit}").strip()
 
 
 def render(results: dict, traces: list[dict]) -> str:
@@ -245,7 +255,7 @@ def render(results: dict, traces: list[dict]) -> str:
                 shown_ids.add(cid)
     verdicts = "".join(f"<li><b>{_e(g['label'])}</b>: {_e(g['text'])}</li>" for g in summary["groups"])
     headline = ("<div class='box ok'>" + f"{len(feasible)} feasible designs; Pareto front: "
-                + _e(", ".join(summary["pareto"]) or "empty") + "</div>") if feasible else (
+                + _e(", ".join(_names(cands, summary["pareto"])) or "empty") + "</div>") if feasible else (
         "<div class='box'><b>No design meets every requirement.</b> What blocks each technology is listed below.</div>")
     comp = [c for c in cands if c.get("variant") == "compensated" and c.get("stage") != "pruned"][:10]
     plain = [c for c in cands if c.get("variant") == "uncompensated" and c.get("stage") not in ("pruned",)][:10]

@@ -77,11 +77,15 @@ def holdout_score(bench, fit: fitting.EffectFit) -> None:
     E = bench.channel_nrmse(Y, runs)[0]               # (n_runs, n_ch)
     fit.nrmse_channels = {c: float(np.mean(E[:, k])) for k, c in enumerate(bench.channels)}
     fit.residual_blocks = block_energy(bench, [y[0] for y in Y], runs)
+    if len(bench.channels) > 1:
+        fit.channel_blocks = {c: block_energy(bench, [y[0] for y in Y], runs, channel=k)
+                              for k, c in enumerate(bench.channels)}
     fit.holdout_position = [y[0][0] for y in Y]
     fit.holdout_residual = [(bench.runs[i].t, bench.runs[i].y - y[0][0]) for i, y in zip(runs, Y)]
 
 
-def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 0, pairs: bool = True):
+def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 0, pairs: bool = True,
+              form_floor: float | None = None):
     """Screen, fit and rank every effect. Returns (fits sorted best first,
     verdict dict)."""
     effects = [e for e in library(bench.kind) if e.applicable(bench.rig, bench.model)]
@@ -127,7 +131,7 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
     # may still leave a spectral line (a mount ringing under a current
     # limit or a backlash whose broadband gap is far larger): pairs are
     # tried then too
-    enough = (explained(baseline_holdout, best.nrmse_holdout, total_floor(floor_holdout)) >= EXPLAINED
+    enough = (explained(baseline_holdout, best.nrmse_holdout, total_floor(floor_holdout, form_floor)) >= EXPLAINED
               and best.nrmse_holdout <= RESIDUAL_FACTOR * floor_holdout
               and not spectrum.lines(best.holdout_residual, best.holdout_position))
     if pairs and not enough:

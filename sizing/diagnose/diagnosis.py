@@ -13,7 +13,7 @@ import numpy as np
 
 from ..errors import InputError
 from . import attribution, judge, spectrum, where
-from .floor import noise_floor, total_floor
+from .floor import form_floor, noise_floor, total_floor
 from .bench import Bench
 from .effects import library
 from .recalibrate import DEFAULT, nuisance, recalibrate as recalibrate_model
@@ -95,6 +95,26 @@ def check_runs(kind: str, bench: Bench, runs) -> None:
                              f"time constant {longest:.3g} s ({which}); record longer runs")
 
 
+def floors_by_channel(bench, nominal, noise_position: float, forms) -> dict:
+    """{channel: {"baseline", "noise", "form", "blocks"}} of the holdout runs:
+    the nominal's NRMSE, the noise floor (the position's from
+    floor.noise_floor, another channel's from its second differences), the
+    model-form floor and the baseline's residual block energies of the
+    channel. The model-form floor of the position is the prior
+    (settings.form_floor_prior: what independent simulators' null cases
+    leave, which the campaign cannot measure); that of another channel is
+    estimated from the campaign (floor.form_floor), because the prior is a
+    share of the position's span and says nothing of a current's."""
+    E = bench.channel_nrmse([nominal[i][None] for i in bench.holdout], bench.holdout)[0]
+    noise = np.mean([bench.channel_floor(i) for i in bench.holdout], axis=0)
+    out = {}
+    for k, c in enumerate(bench.channels):
+        out[c] = {"baseline": float(np.mean(E[:, k])), "noise": noise_position if k == 0 else float(noise[k]),
+                  "form": float(forms[k]) if forms is not None and k > 0 else judge.DEFAULT.form_floor_prior,
+                  "blocks": judge.block_energy(bench, [nominal[i] for i in bench.holdout], bench.holdout, channel=k)}
+    return out
+
+
 def diagnose_runs(kind: str, rig, runs, holdout: list[str], recalibrate: list[str] | None = None,
                   seed: int = 0, pairs: bool = True) -> Diagnosis:
     """``recalibrate``: None re-fits the default parameters (recalibrate.DEFAULT)
@@ -127,14 +147,19 @@ def diagnose_runs(kind: str, rig, runs, holdout: list[str], recalibrate: list[st
     base_channels = {c: float(np.mean(E[:, k])) for k, c in enumerate(bench.channels)}
     floor = noise_floor(bench)
     floor_ho = float(np.mean(floor[bench.holdout]))
-    fits = attribution.attribute(bench, base_ho, floor_ho, seed=seed, pairs=pairs)
+    channels = floors_by_channel(bench, nominal, floor_ho, form_floor(bench))
+    form_ho = None      # the combined measure keeps the prior model-form floor (docs/diagnosis.md)
+    fits = attribution.attribute(bench, base_ho, floor_ho, seed=seed, pairs=pairs, form_floor=form_ho)
     base_blocks = judge.block_energy(bench, [nominal[i] for i in bench.holdout], bench.holdout)
     shortest = min((float(bench.runs[i].t[-1] - bench.runs[i].t[0]) for i in bench.train), default=None)
-    chosen = judge.pick(fits, seed, total_floor(floor_ho))
+    chosen = judge.pick(fits, seed, total_floor(floor_ho, form_ho))
     best_sim = [y[0] for y in bench.simulate_channels(chosen.effects, chosen.z[None, :])] if chosen else None
     line = spectrum.gap_lines(bench, [nominal[i][0] for i in bench.holdout],
                               None if best_sim is None else [best_sim[i][0] for i in bench.holdout])
-    verdict = judge.verdict(base_ho, floor_ho, fits, base_blocks, seed=seed, run_length=shortest, line=line)
+    inputs = dict(baseline_holdout=base_ho, floor_holdout=floor_ho, fits=fits, baseline_blocks=base_blocks,
+                  seed=seed, run_length=shortest, line=line, form_floor=form_ho, channels=channels)
+    verdict = judge.verdict(**inputs)
+    verdict["floors"] = {c: {k: v for k, v in ch.items() if k != "blocks"} for c, ch in channels.items()}
     if verdict["status"] in ("explained", "partial") and best_sim is not None:
         verdict["remaining"] = [{k: e[k] for k in ("run", "label", "share", "t_start_s", "t_end_s", "channel")}
                                 for e in where.gap_map(bench, best_sim, max_entries=5)]
@@ -147,4 +172,4 @@ def diagnose_runs(kind: str, rig, runs, holdout: list[str], recalibrate: list[st
                      residual_tests=where.residual_tests(bench, sims), fits=fits, verdict=verdict,
                      best_sim=[y[0] for y in best_sim] if best_sim is not None else None,
                      recalibration=recal, seconds=time.perf_counter() - start,
-                     extra={"best_channels": best_sim}, baseline_channels=base_channels)
+                     extra={"best_channels": best_sim, "verdict_inputs": inputs}, baseline_channels=base_channels)

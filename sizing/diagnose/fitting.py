@@ -36,6 +36,7 @@ class EffectFit:
     residual_blocks: np.ndarray = field(default_factory=lambda: np.zeros(0))
     holdout_position: list = field(default_factory=list)     # simulated position (n,) of each holdout run
     holdout_residual: list = field(default_factory=list)     # (t, measured - simulated position) of each
+    channel_blocks: dict = field(default_factory=dict)       # {channel: residual block energies} (holdout)
 
     @property
     def named(self) -> tuple:

@@ -2,22 +2,24 @@
 the model-form floor (what a well-fitted nominal of another form leaves).
 
 Noise floor of each run, from the data: the white part of the position
-measurement (second differences, robust) plus, on a piezo rig, the
-spread of the simulated output when the logged voltage is logged again
-with its own noise and treated the same way (``noise_floor``).
-Model-form floor: FORM_FLOOR, of the span; a stated assumption, see the
-README: 0.3-0.5 % on other simulators' null cases, 0.1-0.7 % between the
-two piezo generators of this project on their noise-free null runs. The
-floor an effect is judged against is
-floor = sqrt(noise^2 + FORM_FLOOR^2) (``total_floor``).
+measurement (second differences, robust, where the output is at rest:
+``rest_noise``) plus, on a piezo rig, the spread of the simulated output
+when the logged voltage is logged again with its own noise and treated
+the same way (``noise_floor``).
+Model-form floor of the position: the prior FORM_FLOOR, of the span
+(settings.form_floor_prior; rationale in docs/diagnosis.md); of another
+logged channel (the current): estimated from the campaign
+(``form_floor``). The floor an effect is judged against is
+floor = sqrt(noise^2 + form^2) (``total_floor``).
 """
 from __future__ import annotations
 
 import numpy as np
 
-from .inputs import noise_sigma
+from .inputs import noise_sigma, second_difference_sigma
+from .settings import DEFAULT
 
-FORM_FLOOR = 0.002     # NRMSE a well-fitted nominal of another form leaves (assumed, see README)
+FORM_FLOOR = DEFAULT.form_floor_prior   # NRMSE a nominal of another form leaves (docs/diagnosis.md)
 
 
 def noise_floor(bench, replicas: int = 3, seed: int = 0) -> np.ndarray:
@@ -31,7 +33,7 @@ def noise_floor(bench, replicas: int = 3, seed: int = 0) -> np.ndarray:
     rng = np.random.default_rng(seed)
     out = []
     for i, r in enumerate(bench.runs):
-        sy = noise_sigma(r.y - bench.nominal()[i])     # high-frequency residual
+        sy = rest_noise(r.y - bench.nominal()[i], bench.nominal()[i], r.span)[0]
         su = 0.0
         if bench.kind == "piezohydraulic":
             sigma_v = noise_sigma(r.u_raw)
@@ -43,6 +45,72 @@ def noise_floor(bench, replicas: int = 3, seed: int = 0) -> np.ndarray:
     return np.array(out)
 
 
-def total_floor(noise: float) -> float:
-    """Noise floor and model-form floor together."""
-    return float(np.hypot(noise, FORM_FLOOR))
+def rest_noise(residual: np.ndarray, nominal: np.ndarray, span: float,
+               settings=None) -> tuple[float, str]:
+    """(robust rms of the white noise on ``residual``, where it was
+    estimated). Where the nominal output is at rest (it moves less than
+    settings.rest_step of the span per sample over the REST_HALF_WIDTH samples
+    either side), the measured output of a rig whose unmodelled effect is
+    non-smooth (stick-slip, backlash, cogging) is at rest too, or held
+    against its friction: the residual's second differences there are the
+    sensor's noise alone. During motion a stick-slip adds a sample-scale
+    staircase that a second-difference estimate takes for noise. The
+    whole run's estimate (``noise_sigma``, more samples) is kept unless it
+    exceeds the at-rest one by more than settings.rest_sigmas times the
+    latter's relative sampling error 1/sqrt(n) (n second differences at
+    rest): only then is it inflated by something other than noise. With
+    fewer than settings.rest_samples second differences at rest, the whole
+    run is used."""
+    from .settings import DEFAULT
+
+    settings = settings or DEFAULT
+    residual = np.asarray(residual, float)
+    step = np.abs(np.diff(np.asarray(nominal, float)))
+    moving = np.concatenate([step, [0.0]]) > settings.rest_step * span
+    moving = np.convolve(moving.astype(float), np.ones(2 * REST_HALF_WIDTH + 1), mode="same") > 0
+    d2 = np.diff(residual, 2)
+    still = ~moving[1:-1] if len(moving) > 2 else np.zeros(0, bool)
+    whole = noise_sigma(residual)
+    n = int(np.sum(still))
+    if n < settings.rest_samples:
+        return whole, "whole run"
+    rest = second_difference_sigma(d2[still])
+    if whole <= rest * (1.0 + settings.rest_sigmas / np.sqrt(n)):
+        return whole, "whole run"
+    return rest, f"at rest ({n} samples; the whole run's {whole:.3g} is inflated)"
+
+
+REST_HALF_WIDTH = 10   # samples either side that must be at rest too (the hardware settles later)
+
+
+def total_floor(noise: float, form: float | None = None) -> float:
+    """Noise floor and model-form floor together (``form`` None: the prior
+    FORM_FLOOR, for a campaign whose form floor could not be estimated)."""
+    return float(np.hypot(noise, FORM_FLOOR if form is None else form))
+
+
+def form_floor(bench) -> np.ndarray | None:
+    """(n_ch,) model-form floor of each channel (NRMSE of the channel's
+    span, mean over the holdout runs), from the campaign: the difference
+    between the nominal and the nominal half a sample later. Two faithful
+    simulators of one rig differ by where they put a sample (integrator,
+    zero-order hold, the log's clock against the controller's), so a gap
+    of that size is not evidence of an effect; it is large where the
+    output moves fast against the sample rate (steps) and small where it
+    is slow or held. The current's gap already carries a one-sample timing
+    tolerance (bench.timing_band), so its floor is taken through it.
+    None without a holdout run (the prior FORM_FLOOR is used then).
+
+    (The run-to-run consistency of the re-calibrated nominal, fitted on
+    each training run alone, was considered and is not used: an unmodelled
+    effect bends the nominal's parameters differently on each run, so it
+    would raise the floor by the very gap it is to judge.)"""
+    if not bench.holdout:
+        return None
+    timing = np.zeros(len(bench.channels))
+    for i in bench.holdout:
+        S0 = bench.nominal_channels()[i]
+        half = 0.5 * (S0 + np.concatenate([S0[:, :1], S0[:, :-1]], axis=1))
+        G = bench.gap(i, half[None])[0] - bench.gap(i, S0[None])[0]
+        timing += np.mean(G ** 2, axis=-1) / bench.spans(i) ** 2
+    return np.sqrt(timing / len(bench.holdout))

@@ -37,7 +37,11 @@ REVERSAL_SIGMAS = 6.0
 
 def noise_sigma(x: np.ndarray) -> float:
     """Robust rms of white noise on x: MAD of second differences / sqrt(6)."""
-    d2 = np.diff(np.asarray(x, float), 2)
+    return second_difference_sigma(np.diff(np.asarray(x, float), 2))
+
+
+def second_difference_sigma(d2: np.ndarray) -> float:
+    """Robust rms of the white noise whose second differences are ``d2``."""
     if d2.size == 0:
         return 0.0
     return float(1.4826 * np.median(np.abs(d2 - np.median(d2))) / np.sqrt(6.0))

@@ -32,6 +32,15 @@ Verdict (all measures are the combined measure of bench.py, holdout runs):
   longer than the shortest training run does not settle within a run,
   so it cannot be told from a slow drift: it is at most "partial";
 - "unexplained" otherwise. Both null verdicts name no effect.
+Channel rule (``channel_verdict``): on a campaign that logs more than the
+position (a DC servo's current), a verdict short of "explained" on the
+combined measure is judged again on each channel against that channel's
+own floors; an effect that explains one channel and worsens none is
+named from it.
+Parsimony (``pick``, ``beyond_form``): a pair is taken over its single
+only when its partner removes more than the other partners of the same
+single take of the single's own form error.
+The thresholds are declared in settings.py (rationale: docs/diagnosis.md).
 Significance (separation test): moving-block bootstrap over the holdout
 runs cut into BLOCK_S blocks; the statistic is the difference of the
 weighted squared residual energy of two candidates; B = N_BOOT
@@ -44,26 +53,30 @@ import numpy as np
 
 from . import spectrum
 from .floor import total_floor
+from .settings import DEFAULT, Settings
 
-GAP_FACTOR = 1.5
-EXPLAINED = 0.75
-PARTIAL = 0.3
-RESIDUAL_FACTOR = 2.5  # an explaining effect leaves at most this times the floor
-BLOCK_S = 0.1
-N_BOOT = 1000
-ALPHA = 0.05
-NOISE_MATCH = 1.2  # within the band, a candidate leaving at most this times the noise floor is judged on it
-PAIR_GAIN = 0.25   # a pair must remove this share of what its best single leaves above the floor
-LINE_GAIN = 0.5    # ... or this share of the energy of a spectral line its best single leaves
+# the thresholds (settings.py; rationale in docs/diagnosis.md), as names
+GAP_FACTOR = DEFAULT.gap_factor
+EXPLAINED = DEFAULT.explained
+PARTIAL = DEFAULT.partial
+RESIDUAL_FACTOR = DEFAULT.residual_factor
+BLOCK_S = DEFAULT.block_s
+N_BOOT = DEFAULT.n_boot
+ALPHA = DEFAULT.alpha
+NOISE_MATCH = DEFAULT.noise_match
+PAIR_GAIN = DEFAULT.pair_gain
+LINE_GAIN = DEFAULT.line_gain
 
 
-def block_energy(bench, sims, runs) -> np.ndarray:
+def block_energy(bench, sims, runs, channel: int | None = None) -> np.ndarray:
     """Weighted squared residual energy of each BLOCK_S block of the runs
-    (sims: (n_ch, n) per run), one array over all runs."""
+    (sims: (n_ch, n) per run), one array over all runs; ``channel``: of
+    that channel alone (unweighted)."""
     out = []
     for i, S in zip(runs, sims):
         r = bench.runs[i]
-        e2 = np.sum(bench.weights(i)[:, None] * (bench.gap(i, S) / bench.spans(i)[:, None]) ** 2, axis=0)
+        g2 = (bench.gap(i, S) / bench.spans(i)[:, None]) ** 2
+        e2 = g2[channel] if channel is not None else np.sum(bench.weights(i)[:, None] * g2, axis=0)
         dt = float(np.median(np.diff(r.t)))
         size = max(int(round(BLOCK_S / dt)), 1)
         n_blocks = max(len(e2) // size, 1)
@@ -71,14 +84,14 @@ def block_energy(bench, sims, runs) -> np.ndarray:
     return np.concatenate(out)
 
 
-def bootstrap_p(better: np.ndarray, worse: np.ndarray, seed: int = 0) -> float:
+def bootstrap_p(better: np.ndarray, worse: np.ndarray, seed: int = 0, n_boot: int = N_BOOT) -> float:
     """One-sided bootstrap p-value that ``better`` (block energies) is not
     smaller than ``worse``: share of block resamples in which it is not."""
     d = np.asarray(worse) - np.asarray(better)
     if d.size == 0:
         return 1.0
     rng = np.random.default_rng(seed)
-    idx = rng.integers(0, d.size, size=(N_BOOT, d.size))
+    idx = rng.integers(0, d.size, size=(n_boot, d.size))
     return float(np.mean(d[idx].sum(axis=1) <= 0.0))
 
 
@@ -90,23 +103,20 @@ def explained(base: float, after: float, floor: float) -> float:
     return float(1.0 - max(after ** 2 - floor ** 2, 0.0) / excess)
 
 
-def pick(fits, seed: int = 0, floor: float = 0.0):
+def pick(fits, seed: int = 0, floor: float = 0.0, settings: Settings = DEFAULT):
     """The candidate the verdict judges: the best fitted candidate, except
     that a pair is taken only when it is significantly better on the
     holdout (block bootstrap) than the best single of its two effects,
     removes at least PAIR_GAIN of the gap energy that single leaves above
     the floor, fits the training runs at least as well as it and names a
-    partner no other family replaces (``partner_identified``); otherwise
-    that single is (parsimony). The pair holds the single (its partner at
-    no size), so a pair that fits the training runs worse is a fit stuck
-    short of its optimum, and its better holdout is chance or form error
-    taken up elsewhere (pz-h5-pade: a 9.5 ms Pade delay as delay +
-    amplifier, worse than the delay alone on training, 0.0059 against
-    0.0045). A candidate only screened, not fitted (not promising on the
-    training runs), is never taken, whatever its holdout: on a null piezo
-    campaign a screened 1.2 % creep with a 2.9 s time constant fitted the
-    training runs worse than every fitted candidate (0.0050 against
-    0.0041) and ranked first on the holdout by chance."""
+    partner no other family replaces (``partner_identified``) and that
+    removes more than the other partners of that single take of its form
+    error (``beyond_form``); otherwise that single is (parsimony). The pair holds
+    the single (its partner at no size), so a pair that fits the training
+    runs worse is a fit stuck short of its optimum, and its better holdout
+    is chance or form error taken up elsewhere. A candidate only screened,
+    not fitted (not promising on the training runs), is never taken,
+    whatever its holdout: its holdout rank is chance."""
     fitted = [f for f in fits if f.message != "screened only"]
     if not fitted:
         return None
@@ -118,46 +128,42 @@ def pick(fits, seed: int = 0, floor: float = 0.0):
     if singles:
         single = singles[0]
         gain = explained(single.nrmse_holdout, best.nrmse_holdout, floor)
-        earned = gain >= PAIR_GAIN or removes_what_is_left(single, best)
-        if (bootstrap_p(best.residual_blocks, single.residual_blocks, seed) >= ALPHA or not earned
+        earned = gain >= settings.pair_gain or removes_what_is_left(single, best, settings)
+        if (bootstrap_p(best.residual_blocks, single.residual_blocks, seed) >= settings.alpha or not earned
                 or best.nrmse_train > single.nrmse_train
-                or not partner_identified(fits, best, single, seed)):
+                or not partner_identified(fits, best, single, seed, settings)
+                or not beyond_form(fits, best, single, settings)):
             return single
     return best
 
 
-def removes_what_is_left(single, pair) -> bool:
+def removes_what_is_left(single, pair, settings: Settings = DEFAULT) -> bool:
     """Whether the single leaves a spectral line on the holdout runs
     (spectrum.line_removal of its residuals) of which the pair removes at
-    least LINE_GAIN of the energy. A second effect whose
-    energy is a narrow band can take a small share of the broadband gap
-    the single leaves (PAIR_GAIN, measured against the whole floor) and
-    still be plain in the spectrum: a 36 Hz mount ringing behind a 0.1 mm
-    backlash in a closed loop (dc-h9-backlash+mount: a line 38 x the local
-    level of which backlash removes 14 %). LINE_GAIN asks more than
-    PAIR_GAIN, because a line is a narrow band; less than EXPLAINED,
-    because the library's mount is not the hardware's: behind a current
-    limit (dc-h5-mount+ilimit, a 31 Hz mount with 2.2 % damping) the
-    fitted mount settles at 6.7-7.6 % damping and removes 65-68 % of the
-    145 x line the limit leaves (alone, at the noise, 92-100 %)."""
+    least LINE_GAIN of the energy. A second effect whose energy is a
+    narrow band (a sensor mount ringing behind a backlash or a current
+    limit) can take a small share of the broadband gap the single leaves
+    (PAIR_GAIN, measured against the whole floor) and still be plain in
+    the spectrum. LINE_GAIN asks more than PAIR_GAIN, because a line is a
+    narrow band; less than EXPLAINED, because the library's form of the
+    second effect is not the hardware's (a fitted mount settles at another
+    damping than the hardware's and removes part of the line only)."""
     if not single.holdout_residual or not pair.holdout_residual:
         return False
     left = spectrum.line_removal(single.holdout_residual, single.holdout_position, pair.holdout_residual)
-    return left is not None and left["removed"] >= LINE_GAIN
+    return left is not None and left["removed"] >= settings.line_gain
 
 
-def partner_identified(fits, pair, single, seed: int = 0) -> bool:
+def partner_identified(fits, pair, single, seed: int = 0, settings: Settings = DEFAULT) -> bool:
     """Whether ``pair`` is significantly better on the holdout than the
     best other pair built on the same ``single`` with another family: when a
     different partner does as well, the data say "this single and
-    something", not which (pz-h5-pade: a 9.5 ms delay with a laminar leak
-    or with a 9 Hz mount, p = 0.17 between them; the delay alone is the
-    truth)."""
+    something", not which."""
     lead = single.named[0].name
     partner = {e.name for e in pair.named} - {lead}
     rivals = [f for f in fits if len(f.named) == 2 and lead in {e.name for e in f.named}
               and not partner & {e.name for e in f.named}]
-    return not rivals or bootstrap_p(pair.residual_blocks, rivals[0].residual_blocks, seed) < ALPHA
+    return not rivals or bootstrap_p(pair.residual_blocks, rivals[0].residual_blocks, seed) < settings.alpha
 
 
 def runner_up(fits, best):
@@ -182,71 +188,82 @@ def unsettled(fit, run_length: float | None) -> dict:
             if k.endswith("time_s") and not k.startswith("recalibration.") and v > run_length}
 
 
-def noise_matched(best, noise_floor: float, p_second: float) -> bool:
+def noise_matched(best, noise_floor: float, p_second: float, settings: Settings = DEFAULT) -> bool:
     """Within the model-form floor, a candidate that leaves no more than
     NOISE_MATCH x the noise floor on the holdout runs, separated from the
     runner-up, is judged against the noise floor alone: nominal and effect
     then leave nothing but measurement noise on runs they were not fitted
     to, so this campaign shows no model-form error to allow for. (Above
     the band the ordinary rules ask less: an effect may leave up to
-    RESIDUAL_FACTOR x the floor.) A small backlash in a stiff DC loop,
-    0.2-0.3 % of the span against a 0.08 % noise floor, was left at
-    0.88-0.93 x the noise and refused in five held-out sets; the piezo null
-    campaigns within the band left 1.37-2.45 x."""
-    return best.nrmse_holdout <= NOISE_MATCH * noise_floor and p_second < ALPHA
+    RESIDUAL_FACTOR x the floor.) NOISE_MATCH is a little above 1, the
+    sampling spread of a noise estimate from a few thousand samples; a
+    nominal of another form leaves more than that on runs it was not
+    fitted to."""
+    return best.nrmse_holdout <= settings.noise_match * noise_floor and p_second < settings.alpha
 
 
-def tied(share: float, separated: bool) -> bool:
+def tied(share: float, separated: bool, settings: Settings = DEFAULT) -> bool:
     """Whether a candidate is too weak on two counts to be named even as
     partial: it removes less than most (EXPLAINED) of the gap energy above
     the floor and is not separated from the runner-up, another
     explanation. Either alone still names it "partial"; both together
     mean the data neither pin the gap on it nor prefer it to another
-    family. A null piezo campaign of the second generator (pz-h8-null-
-    3stacks-3.5in: the nominal's model-form error 2.0 x the floor) was
-    named leakage, partial, removing 43 % and tied with fluid
-    compressibility at p = 0.22."""
-    return share < EXPLAINED and not separated
+    family: what a candidate removes then is as likely model-form error
+    that any flexible family takes up."""
+    return share < settings.explained and not separated
 
 
-def narrowband_gap(line: dict | None, best, baseline_blocks, seed: int = 0) -> bool:
+def narrowband_gap(line: dict | None, best, baseline_blocks, seed: int = 0, settings: Settings = DEFAULT) -> bool:
     """Whether a holdout gap within GAP_FACTOR x the noise floor is still a
     gap: a spectral line of it (spectrum.gap_lines: in every holdout run,
     >= LINE_FACTOR x the local level, not a line of the nominal itself)
     that the best candidate removes for the most part (>= EXPLAINED of the
     lines' energy) while being significantly better than the baseline on
-    the holdout (block bootstrap). A lightly damped sensor mount at 38-56
-    Hz rings for a few cycles after each step: its broadband energy is at
-    the noise (0.9-1.5 x in eight held-out sets) and it was judged "no
-    significant gap" in all eight; in six its line is 31-76 x the local
-    level and the fitted mount, at the true frequency, removes 92-100 % of
-    it (in the other two the line stays below LINE_FACTOR and so does the
-    verdict: 13 x and 19 x). No null campaign of those sets has a line.
-    The noise-only same-form campaign's 32 x "line" (the input treatment's
-    error, tests/test_diagnose.py::
-    test_sensor_noise_alone_gives_no_gap) is halved by the mount form, not
-    removed, and stays no gap."""
+    the holdout (block bootstrap). A lightly damped sensor mount rings for
+    a few cycles after each step: its broadband energy can be at the noise
+    while its line stands far above the spectrum's local level, and a
+    fitted mount at the line's frequency removes it. The input
+    treatment's own error (not white) can show a line too, which an effect
+    halves but does not remove: EXPLAINED of the line's energy is asked."""
     if line is None or best is None or baseline_blocks is None:
         return False
-    return (line.get("removed", 0.0) >= EXPLAINED
-            and bootstrap_p(best.residual_blocks, baseline_blocks, seed) < ALPHA)
+    return (line.get("removed", 0.0) >= settings.explained
+            and bootstrap_p(best.residual_blocks, baseline_blocks, seed) < settings.alpha)
 
 
 def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks=None, seed: int = 0,
-            run_length: float | None = None, line: dict | None = None) -> dict:
+            run_length: float | None = None, line: dict | None = None, form_floor: float | None = None,
+            channels: dict | None = None, settings: Settings = DEFAULT) -> dict:
     """``run_length``: the shortest training run (s), for the settling rule.
     ``line``: the spectral lines of the holdout gap (spectrum.gap_lines),
-    for the line rule."""
-    floor = total_floor(floor_holdout)
-    best = pick(fits, seed, floor)
-    if baseline_holdout <= GAP_FACTOR * floor_holdout and not narrowband_gap(line, best, baseline_blocks, seed):
-        # decided before the line rule: a noise-only same-form campaign's gap
-        # (the voltage treatment's error carried through the model is not
-        # white) has shown a 32 x "line" that the mount form halves
-        # (tests/test_diagnose.py::test_sensor_noise_alone_gives_no_gap)
+    for the line rule. ``form_floor``: the model-form floor of the combined
+    measure (floor.form_floor; None: the prior). ``channels``: {channel:
+    {"baseline", "noise", "form", "blocks"}} of a campaign that logs more
+    than the position, for the channel rule (``channel_verdict``)."""
+    out = combined_verdict(baseline_holdout, floor_holdout, fits, baseline_blocks, seed, run_length, line,
+                           form_floor, settings)
+    if channels and len(channels) > 1 and out["status"] != "explained":
+        named = channel_verdict(fits, channels, seed, settings, floor=out.get("floor_holdout"))
+        if named is not None:
+            out.update(named)
+    return out
+
+
+def combined_verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks=None, seed: int = 0,
+                     run_length: float | None = None, line: dict | None = None, form_floor: float | None = None,
+                     settings: Settings = DEFAULT) -> dict:
+    """The verdict on the combined measure (module docstring)."""
+    floor = total_floor(floor_holdout, form_floor)
+    best = pick(fits, seed, floor, settings)
+    if (baseline_holdout <= settings.gap_factor * floor_holdout
+            and not narrowband_gap(line, best, baseline_blocks, seed, settings)):
+        # decided before the line rule: the voltage treatment's error
+        # carried through the model is not white and can show a line that
+        # an effect halves (tests/test_diagnose.py::
+        # test_sensor_noise_alone_gives_no_gap)
         return {"effect": None, "shrink_holdout": 0.0, "status": "no_significant_gap",
                 "floor_holdout": floor,
-                "reason": f"baseline holdout NRMSE {baseline_holdout:.4f} is within {GAP_FACTOR:g} x "
+                "reason": f"baseline holdout NRMSE {baseline_holdout:.4f} is within {settings.gap_factor:g} x "
                           f"the noise floor {floor_holdout:.4f}"}
     if best is None:
         return {"effect": None, "shrink_holdout": 0.0, "status": "unexplained",
@@ -254,70 +271,69 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
     shrink = 1.0 - best.nrmse_holdout / baseline_holdout
     share = explained(baseline_holdout, best.nrmse_holdout, floor)
     second = runner_up(fits, best)
-    p_base = bootstrap_p(best.residual_blocks, baseline_blocks, seed) if baseline_blocks is not None else 0.0
-    p_second = bootstrap_p(best.residual_blocks, second.residual_blocks, seed) if second is not None else 0.0
+    p_base = bootstrap_p(best.residual_blocks, baseline_blocks, seed, settings.n_boot) if baseline_blocks is not None else 0.0
+    p_second = bootstrap_p(best.residual_blocks, second.residual_blocks, seed, settings.n_boot) if second is not None else 0.0
     out = {"shrink_holdout": float(shrink), "explained_gap_energy": share, "floor_holdout": floor,
            "runner_up": None if second is None else {
                "effect": second.name, "form": second.form, "shrink_holdout": float(1.0 - second.nrmse_holdout / baseline_holdout),
                "explained_gap_energy": explained(baseline_holdout, second.nrmse_holdout, floor)},
-           "separation": {"test": f"block bootstrap over holdout segments ({BLOCK_S:g} s blocks, "
-                                  f"{N_BOOT} resamples, one-sided)",
-                          "p_vs_baseline": p_base, "p_vs_runner_up": p_second, "alpha": ALPHA}}
+           "separation": {"test": f"block bootstrap over holdout segments ({settings.block_s:g} s blocks, "
+                                  f"{settings.n_boot} resamples, one-sided)",
+                          "p_vs_baseline": p_base, "p_vs_runner_up": p_second, "alpha": settings.alpha}}
     # line rule: the model-form floor is broadband, smooth-model error; a
     # spectral line of the holdout gap (spectrum.py) is not covered by it.
     # Within that floor, a candidate is judged on the share of the lines'
     # energy above the local level that it removes.
-    on_line = line is not None and line.get("removed", 0.0) >= PARTIAL
+    on_line = line is not None and line.get("removed", 0.0) >= settings.partial
     if line is not None:
         out["line"] = dict(line, judged_on=False)
-    in_band = baseline_holdout <= GAP_FACTOR * floor     # above the noise, within the model-form floor
+    in_band = baseline_holdout <= settings.gap_factor * floor     # above the noise, within the model-form floor
     if on_line and in_band:
         share = float(line["removed"])
         out["explained_gap_energy"] = share
         out["line"]["judged_on"] = True          # within the model-form floor: judged on the lines
-    elif in_band and noise_matched(best, floor_holdout, p_second):
+    elif in_band and noise_matched(best, floor_holdout, p_second, settings):
         floor = floor_holdout                    # no model-form error left to allow for
         share = explained(baseline_holdout, best.nrmse_holdout, floor)
         out.update(explained_gap_energy=share, floor_holdout=floor, judged_on_noise_floor=True)
     elif in_band:
         out.update(effect=None, shrink_holdout=0.0, status="unexplained",
-                   reason=f"the gap ({baseline_holdout:.4f}) is above the noise floor but within {GAP_FACTOR:g} x "
+                   reason=f"the gap ({baseline_holdout:.4f}) is above the noise floor but within {settings.gap_factor:g} x "
                           f"the model-form floor {floor:.4f}: no effect is blamed for what a nominal of "
                           f"another form leaves")
         return out
     # what the effect removes must outweigh what a nominal of another form
-    # could leave: at a gap just above GAP_FACTOR x the floor, an effect that
+    # could leave: at a gap just above settings.gap_factor x the floor, an effect that
     # takes out less than the model-form floor's own energy may be fitting
-    # model-form error (a null campaign of the second generator, 1.53 x the
-    # floor, was named after removing 0.48 floor^2); not asked of the line
-    # rule, whose lines the broadband floor does not cover
+    # model-form error; not asked of the line rule, whose lines the
+    # broadband floor does not cover
     removed = baseline_holdout ** 2 - best.nrmse_holdout ** 2
     on_lines = out.get("line", {}).get("judged_on", False)
     substantial = removed >= floor ** 2 or on_lines
-    significant = shrink > 0 and p_base < ALPHA and substantial
-    separated = p_second < ALPHA
-    leaves = best.nrmse_holdout <= RESIDUAL_FACTOR * floor
+    significant = shrink > 0 and p_base < settings.alpha and substantial
+    separated = p_second < settings.alpha
+    leaves = best.nrmse_holdout <= settings.residual_factor * floor
     slow = unsettled(best, run_length)
-    if significant and share >= EXPLAINED and separated and leaves and not slow:
+    if significant and share >= settings.explained and separated and leaves and not slow:
         what = "of the energy of the gap's spectral lines" if on_lines else "of the holdout gap energy above the floor"
         out.update(effect=best.name, form=best.form, status="explained",
                    reason=f"{best.name} removes {100 * share:.0f} % {what}, "
                           f"separated from {second.name if second else 'every other effect'} (p = {p_second:.3f})")
         return out
-    if significant and share >= PARTIAL and tied(share, separated):    # another family matches what little it explains
+    if significant and share >= settings.partial and tied(share, separated, settings):    # another family matches what little it explains
         out.update(effect=None, shrink_holdout=0.0, status="unexplained",
-                   reason=f"{best.name} removes {100 * share:.0f} % < {100 * EXPLAINED:.0f} % of the holdout gap "
+                   reason=f"{best.name} removes {100 * share:.0f} % < {100 * settings.explained:.0f} % of the holdout gap "
                           f"energy above the floor and is not separated from {second.name} (p = {p_second:.3f}): "
                           f"the data do not say which")
         return out
-    if significant and share >= PARTIAL:
+    if significant and share >= settings.partial:
         why = []
-        if share < EXPLAINED:
-            why.append(f"it removes {100 * share:.0f} % < {100 * EXPLAINED:.0f} % of the gap energy above the floor")
+        if share < settings.explained:
+            why.append(f"it removes {100 * share:.0f} % < {100 * settings.explained:.0f} % of the gap energy above the floor")
         if not separated:
             why.append(f"not separated from {second.name} (p = {p_second:.3f})")
         if not leaves:
-            why.append(f"it leaves {best.nrmse_holdout:.4f} > {RESIDUAL_FACTOR:g} x the floor {floor:.4f}")
+            why.append(f"it leaves {best.nrmse_holdout:.4f} > {settings.residual_factor:g} x the floor {floor:.4f}")
         for k, v in slow.items():
             why.append(f"its fitted {k} = {v:.3g} s is longer than the shortest training run ({run_length:.3g} s): "
                        f"it does not settle within a run and cannot be told from a slow drift")
@@ -327,7 +343,83 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
     small = "" if substantial else (f"; it removes {removed:.3g} of gap energy, less than the model-form floor's "
                                     f"own {floor ** 2:.3g}")
     out.update(effect=None, shrink_holdout=0.0, status="unexplained",
-               reason=f"no effect of the library removes a significant part ({100 * PARTIAL:.0f} %) of the holdout "
+               reason=f"no effect of the library removes a significant part ({100 * settings.partial:.0f} %) of the holdout "
                       f"gap energy above the floor (best: {best.name}, {100 * share:.0f} %, p vs baseline "
                       f"{p_base:.3f}{small})")
     return out
+
+
+def channel_verdict(fits, channels: dict, seed: int = 0, settings: Settings = DEFAULT,
+                    floor: float | None = None) -> dict | None:
+    """The candidate ``pick`` chooses, judged on each logged channel on its
+    own floors: named "explained" from channel c when, on c alone, the
+    baseline is above GAP_FACTOR x the channel's floor (its noise and its
+    model-form floor, floor.form_floor), the candidate removes at least
+    EXPLAINED of the gap energy above that floor and at least the floor's
+    own energy, leaves at most RESIDUAL_FACTOR x it, is significantly
+    better than the baseline and separated from the runner-up on c (block
+    bootstrap of c's residual energy), and leaves no other channel worse
+    than its baseline beyond that channel's floor. A friction in a stiff
+    position loop shows in the current the controller adds to overcome it
+    and hardly in the position: the combined measure, normalised by each
+    channel's noise, can be ruled by a position gap within its model-form
+    floor while the current's gap is many times its own. On channel c the
+    candidates are ranked by their NRMSE on c (``pick`` and ``runner_up``
+    on that ranking). None when no channel names it."""
+    found = []
+    for c, ch in channels.items():
+        ranked = sorted((f for f in fits if c in f.channel_blocks), key=lambda f: f.nrmse_channels[c])
+        best = pick(ranked, seed, floor or 0.0, settings)
+        if best is None:
+            continue
+        second = runner_up(ranked, best)
+        base, after = ch["baseline"], best.nrmse_channels.get(c)
+        total = float(np.hypot(ch["noise"], ch["form"]))
+        if after is None or base <= settings.gap_factor * total or c not in best.channel_blocks:
+            continue
+        share = explained(base, after, total)
+        p_base = bootstrap_p(best.channel_blocks[c], ch["blocks"], seed, settings.n_boot)
+        p_second = (bootstrap_p(best.channel_blocks[c], second.channel_blocks[c], seed, settings.n_boot)
+                    if second is not None and c in getattr(second, "channel_blocks", {}) else 0.0)
+        others = all(best.nrmse_channels.get(d, 0.0) ** 2 <= o["baseline"] ** 2 + o["noise"] ** 2 + o["form"] ** 2
+                     for d, o in channels.items() if d != c)
+        if (share >= settings.explained and base ** 2 - after ** 2 >= total ** 2 and after <= settings.residual_factor * total
+                and p_base < settings.alpha and p_second < settings.alpha and others):
+            found.append((share, c, after, base, total, p_second, best, second))
+    if not found:
+        return None
+    share, c, after, base, total, p_second, best, second = max(found, key=lambda x: x[0])
+    return {"effect": best.name, "form": best.form, "status": "explained", "judged_on_channel": c,
+            "explained_gap_energy": share, "shrink_holdout": float(1.0 - after / base),
+            "reason": f"{best.name} removes {100 * share:.0f} % of the {c} gap energy above that channel's floor "
+                      f"{total:.4g} (noise and model form), separated from "
+                      f"{second.name if second else 'every other effect'} on it (p = {p_second:.3f})"}
+
+
+def beyond_form(fits, pair, single, settings: Settings = DEFAULT) -> bool:
+    """Whether the pair's partner removes a share of the gap that the
+    single's own form error cannot explain: the holdout gap energy the
+    pair removes beyond the single, single^2 - pair^2, must exceed
+    (1 + FORM_MARGIN) x the median that the other fitted partners of the
+    same single remove (pairs of that single with another family). What
+    any partner takes from the single's residual is the difference between
+    the single's form and the hardware's, which a flexible second effect
+    absorbs whatever its physics; a partner that is really there removes
+    what the others cannot. Estimated from the campaign's own fits; true
+    (no judgement) when the single has no other fitted partner."""
+    lead = single.named[0].name
+    partner = {e.name for e in pair.named} - {lead}
+    rivals = [f for f in fits if len(f.named) == 2 and lead in {e.name for e in f.named}
+              and not partner & {e.name for e in f.named} and f.message != "screened only"]
+    if not rivals:
+        return True
+    typical = float(np.median([max(energy(single) - energy(f), 0.0) for f in rivals]))
+    return energy(single) - energy(pair) > (1.0 + settings.form_margin) * typical
+
+
+def energy(fit) -> float:
+    """Holdout residual energy of a candidate: the sum of its block
+    energies (block_energy: the sum over holdout runs of the combined
+    measure squared), or its holdout measure squared without blocks."""
+    blocks = getattr(fit, "residual_blocks", None)
+    return float(np.sum(blocks)) if blocks is not None and len(blocks) else float(fit.nrmse_holdout ** 2)

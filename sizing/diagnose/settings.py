@@ -1,0 +1,50 @@
+"""The thresholds of the diagnosis, declared in one place.
+
+Every rule of the verdict (judge.py), of the parsimony test and of the
+floors (floor.py) reads its threshold from one ``Settings`` object; the
+rationale of each value is in docs/diagnosis.md, and the cross-form
+benchmark reports how its verdicts move when each is varied
+(``benchmarks/diagnose_benchmark.py --crossform --sensitivity``), so that
+no single threshold decides the benchmark. ``DEFAULT`` is what
+``sizing diagnose`` uses.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, fields, replace
+
+
+@dataclass(frozen=True)
+class Settings:
+    """Thresholds of the diagnosis (dimensionless unless stated)."""
+
+    gap_factor: float = 1.5        # a gap is a baseline above this x the floor
+    explained: float = 0.75        # share of the gap energy above the floor an explaining effect removes
+    partial: float = 0.3           # ... a partly explaining effect removes
+    residual_factor: float = 2.5   # an explaining effect leaves at most this x the floor
+    alpha: float = 0.05            # one-sided level of the block-bootstrap separation tests
+    noise_match: float = 1.2       # within the band, a candidate leaving <= this x the noise is judged on it
+    pair_gain: float = 0.25        # a pair removes this share of what its single leaves above the floor...
+    line_gain: float = 0.5         # ... or this share of a spectral line its single leaves
+    form_floor_prior: float = 0.002  # model-form floor (of the span) when the campaign cannot estimate one
+    form_margin: float = 1.0       # a partner must remove more than this x the single's own form error
+    rest_samples: int = 200        # second differences at rest needed for the at-rest noise estimate
+    rest_step: float = 1e-5        # at rest: the nominal moves less than this share of the span per sample
+    rest_sigmas: float = 3.0       # the whole run's noise estimate is inflated beyond this x the sampling error
+    block_s: float = 0.1           # block length of the bootstrap, s
+    n_boot: int = 1000             # bootstrap resamples
+
+    def varied(self, name: str, factor: float) -> "Settings":
+        """A copy with ``name`` multiplied by ``factor`` (the sensitivity table)."""
+        value = getattr(self, name) * factor
+        return replace(self, **{name: type(getattr(self, name))(value)})
+
+
+DEFAULT = Settings()
+
+# thresholds of the verdict varied by the benchmark's sensitivity table
+VERDICT_THRESHOLDS = ("gap_factor", "explained", "partial", "residual_factor", "alpha", "noise_match",
+                      "pair_gain", "line_gain", "form_margin")
+
+
+def names() -> list[str]:
+    return [f.name for f in fields(Settings)]

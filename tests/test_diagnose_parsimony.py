@@ -1,0 +1,54 @@
+"""Parsimony against the single's own form error (judge.beyond_form): a
+partner is named only when it removes what other partners of the same
+single cannot."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from sizing.diagnose import judge
+from sizing.diagnose.effects import get, library
+from sizing.diagnose.fitting import EffectFit
+from sizing.diagnose.floor import total_floor
+
+
+def _fits(leak_blocks: float, mount_blocks: float, slew_blocks: float):
+    """No-return alone leaves 4.0 per block; pairs with leakage, a mount
+    and a slew limit leave the given levels (40 blocks each)."""
+    noret = get("piezohydraulic", "no_return")
+    leak = get("piezohydraulic", "leakage")
+    slew = get("piezohydraulic", "amplifier_slew_limit")
+    mount = next(e for e in library("piezohydraulic") if e.name == "sensor_vibration" and e.form == "mount")
+    rng = np.random.default_rng(5)
+
+    def fit(effects, level, train):
+        z = np.concatenate([e.unit({p.name: p.lo + 0.3 * (p.hi - p.lo) for p in e.params}) for e in effects])
+        blocks = level + rng.normal(0.0, 0.05, 40)
+        return EffectFit(tuple(effects), z, train, nrmse_holdout=float(np.sqrt(np.sum(blocks))),
+                         residual_blocks=blocks)
+
+    single = fit((noret,), 4.0, 0.0045)
+    pairs = [fit((noret, leak), leak_blocks, 0.004), fit((noret, mount), mount_blocks, 0.0042),
+             fit((noret, slew), slew_blocks, 0.0043)]
+    return single, pairs
+
+
+@pytest.mark.parametrize("levels, chosen", [
+    ((2.5, 2.8, 2.9), "no_return"),                 # leakage removes 1.5, the others 1.2 and 1.1 per block
+    ((1.0, 3.6, 3.7), "no_return+leakage"),         # leakage removes 3.0, the others 0.4 and 0.3
+])
+def test_a_partner_must_remove_more_than_other_partners_take_of_the_single_form_error(levels, chosen):
+    """Energy removed beyond the single: leakage 40 x (4 - l); the median
+    of the other partners 40 x (4 - median of the others); the pair is
+    taken when its removal exceeds (1 + FORM_MARGIN) = 2 x that median:
+    1.5 against 2 x 1.15 refuses it (though it removes 37 % of what the
+    single leaves, above PAIR_GAIN), 3.0 against 2 x 0.35 keeps it."""
+    single, pairs = _fits(*levels)
+    fits = sorted(pairs + [single], key=lambda f: f.nrmse_holdout)
+    assert judge.beyond_form(fits, pairs[0], single) is (chosen != "no_return")
+    assert judge.pick(fits, floor=total_floor(0.001)).name == chosen
+
+
+def test_without_another_partner_there_is_nothing_to_judge_against():
+    single, pairs = _fits(3.0, 3.2, 3.3)
+    assert judge.beyond_form([pairs[0], single], pairs[0], single)

@@ -121,6 +121,8 @@ def solve(requirements: Path = typer.Argument(..., help="requirements.toml (docs
         typer.echo(results["summary"]["thermal"])
         if results["summary"].get("comparison", {}).get("text"):
             typer.echo(results["summary"]["comparison"]["text"])
+        if results["summary"].get("comparison", {}).get("recommendation"):
+            typer.echo(results["summary"]["comparison"]["recommendation"])
         typer.echo(f"{out}/report.html, results.json, candidates.csv written "
                    f"({results['runtime_s']:.1f} s)")
 

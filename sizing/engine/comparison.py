@@ -84,7 +84,31 @@ def technology_comparison(req, candidates: list[dict], catalog=None) -> dict:
                (False, True): "only DC motor feasible", (False, False): "neither feasible"}[(a["feasible"], b["feasible"])]
         stand_in = " (an infeasible side counted by its one-miss design)" if "one_miss" in a or "one_miss" in b else ""
         lines.append(f"piezohydraulic best over DC best ({tag}{stand_in}): " + (", ".join(ratios) or "not comparable"))
-    return {"technologies": out, "text": ". ".join(lines) + ("." if lines else "")}
+    return {"technologies": out, "text": ". ".join(lines) + ("." if lines else ""),
+            "recommendation": _recommendation(out, keys)}
+
+
+def _recommendation(out: dict, keys: list[str]) -> str:
+    """One sentence: the feasible technology best in the first objective,
+    against the other's best (or its one-miss design)."""
+    feasible = {t: e for t, e in out.items() if e["feasible"]}
+    if not feasible or not keys:
+        return "No technology meets every requirement: see what blocks each and what would flip it."
+    key = keys[0]
+    tech, best = min(feasible.items(), key=lambda kv: kv[1]["metrics"].get(key) or math.inf)
+    text = f"Choose {tech.replace('_', ' ')}: {best['name']} ({_fmt(key, best['metrics'].get(key))})"
+    for other, entry in out.items():
+        if other == tech:
+            continue
+        rival = entry if entry["feasible"] else entry.get("one_miss")
+        if rival and rival["metrics"].get(key) and best["metrics"].get(key):
+            ratio = rival["metrics"][key] / best["metrics"][key]
+            text += (f", {ratio:.3g} x lighter than the best {other.replace('_', ' ')} design" if key == "mass_kg"
+                     else f", {ratio:.3g} x better in {key.split('_')[0]} than the best {other.replace('_', ' ')} design")
+    deciding = best.get("deciding_assumed") or []
+    if deciding:
+        text += f"; its binding check rests on assumed {', '.join(deciding[:3])}"
+    return text + "."
 
 
 def _rests_text(entry) -> str:
@@ -101,7 +125,7 @@ def _rests_text(entry) -> str:
 def _flip_text(f) -> str:
     if f is None:
         return "no single change of a requirement or catalog value is known to flip its verdict"
-    return f"what would flip its verdict: {f['what']} from {f['from']:.4g} to {f['to']:.4g} ({f['relative_change']:.1%})"
+    return f"what would flip its verdict: {f['text']}"
 
 
 def _fmt(key, value) -> str:

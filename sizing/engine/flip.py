@@ -54,9 +54,22 @@ def _moved(value: float, margin: float, how: str) -> float:
     return value / (1.0 - margin) if margin < 1.0 else math.inf     # hold
 
 
+# how a person reads each changed value: (unit shown, factor from SI)
+DISPLAY = {"requirement stroke": ("mm", 1e3), "requirement speed": ("mm/s", 1e3), "requirement blocked_force": ("N", 1.0),
+           "requirement max_temperature": ("degC", 1.0), "duty hold_time": ("s", 1.0),
+           "option min_natural_frequency": ("Hz", 1.0), "continuous_current": ("A", 1.0), "max_current": ("A", 1.0),
+           "pressure_rating": ("MPa", 1e-6), "capacity": ("cm^3", 1e6), "max_temperature": ("degC", 1.0)}
+
+
+def _shown(what: str, value: float) -> str:
+    unit, factor = DISPLAY.get(what) or DISPLAY.get(what.split()[-1], ("", 1.0))
+    return f"{value * factor:.4g} {unit}".strip()
+
+
 def _change(what, old, new, design_id) -> dict:
     rel = abs(new / old - 1.0) if old else math.inf
-    return {"what": what, "from": old, "to": new, "relative_change": rel, "design": design_id}
+    return {"what": what, "from": old, "to": new, "relative_change": rel, "design": design_id,
+            "text": f"{what} from {_shown(what, old)} to {_shown(what, new)} ({rel:.1%})"}
 
 
 def _relaxations(req, catalog, c) -> list[dict]:

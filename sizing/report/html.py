@@ -206,7 +206,7 @@ def _answer(summary: dict) -> str:
         rests = (f"{len(t.get('rests_on_assumed') or [])} assumed values; in its binding margin: "
                  + (_e(", ".join(deciding)) if deciding else "none"))
         f = t.get("flip")
-        flip = (f"{_e(f['what'])}: {f['from']:.4g} &rarr; {f['to']:.4g} ({f['relative_change']:.1%})" if f else "none known")
+        flip = _e(f["text"]) if f else "none known"
         rows.append(f"<tr><td class='l'><b>{_e(tech)}</b></td><td class='l'>{'feasible' if t.get('feasible') else 'infeasible'}"
                     f"</td><td class='l' title='{_e(t.get('best'))}'>{_e(t.get('name') or t.get('best'))}<br>{_e(metrics)}</td>"
                     f"<td class='l'>{binding}</td>"
@@ -218,7 +218,8 @@ def _answer(summary: dict) -> str:
     sourced = (summary.get("dc_sourced") or {}).get("text")
     if sourced:
         ruled_text = f"{_e(sourced)}</p><p>{ruled_text}"
-    return ("<h2>The answer</h2><table><tr><th class='l'>technology</th><th class='l'>verdict</th>"
+    advice = summary.get("comparison", {}).get("recommendation")
+    return ("<h2>The answer</h2>" + (f"<div class='box ok'><b>{_e(advice)}</b></div>" if advice else "") + "<table><tr><th class='l'>technology</th><th class='l'>verdict</th>"
             "<th class='l'>best design</th><th class='l'>binding check</th><th class='l'>rests on</th>"
             "<th class='l'>what would flip the verdict</th></tr>" + "".join(rows) + f"</table><p>{ruled_text}</p>")
 

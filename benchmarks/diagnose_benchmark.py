@@ -175,11 +175,16 @@ def _same(a: str, b: str) -> bool:
     return set(a.split("+")) == set(b.split("+"))
 
 
-def run_crossform(verbose: bool = True, only: str = "", which: str = "dev") -> dict:
-    """``which``: a set of benchmarks/crossform/cases.py SETS."""
+def run_crossform(verbose: bool = True, only: str = "", which: str = "dev", generator: str = "crossform") -> dict:
+    """``which``: a set of the generator's cases.py SETS; ``generator``:
+    "crossform" (the second generator) or "published" (the third:
+    benchmarks/published, a published model with its published parameters)."""
+    import importlib
+
     sys.path.insert(0, str(ROOT))
-    from benchmarks.crossform import cases as xcases
     from benchmarks.crossform.common import write_campaign
+
+    xcases = importlib.import_module(f"benchmarks.{generator}.cases")
     from sizing import api
 
     rows, sensitivity = [], []
@@ -305,6 +310,9 @@ def main(argv=None) -> int:
                         help="inject only the first form of each family (the library still diagnoses with every form)")
     parser.add_argument("--json", type=Path, help="write every case and the summary here")
     parser.add_argument("--crossform", action="store_true", help="the second generator's campaigns instead")
+    parser.add_argument("--published", action="store_true",
+                        help="the third generator's campaigns instead (benchmarks/published: LuGre with the "
+                             "parameters of Canudas de Wit et al. 1995 under the paper's PID)")
     parser.add_argument("--only", default="",
                         help="with --crossform: only the cases whose name contains this (comma-separated: any of these)")
     sets = parser.add_mutually_exclusive_group()
@@ -312,9 +320,9 @@ def main(argv=None) -> int:
         sets.add_argument(f"--{name}", action="store_true", help=f"with --crossform: {what}")
     args = parser.parse_args(argv)
     start = time.perf_counter()
-    if args.crossform:
+    if args.crossform or args.published:
         which = next((name for name in HELDOUT_SETS if getattr(args, name)), "dev")
-        result = run_crossform(only=args.only, which=which)
+        result = run_crossform(only=args.only, which=which, generator="published" if args.published else "crossform")
         s = result["summary"]
         print(s["confusion"])
         print()

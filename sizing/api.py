@@ -72,7 +72,7 @@ def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-ou
     if out_dir is not None:
         files = {"results.json": json.dumps(results, indent=1, allow_nan=False) + "\n",
                  "candidates.csv": candidates_csv(results),
-                 "report.html": render(results, output.traces)}
+                 "report.html": render(results, output.traces), PLOTLY_FILE: plotly_js}
         # the catalog these results rest on, so a later --baseline can diff it
         files.update(_catalog_snapshot(cat.folder))
         write_folder(out_dir, files, inputs=inputs)
@@ -80,9 +80,19 @@ def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-ou
 
 
 # What ``solve --out DIR`` holds (check_folder needs it before any work).
-SOLVE_OUTPUTS = ("results.json", "candidates.csv", "report.html", "catalog/")
-ROBUST_OUTPUTS = ("robust.json", "robust.html")
-SWEEP_OUTPUTS = ("sweep.json", "sweep.html")
+# plotly.js once per output folder, beside the pages that use it (report/bundle.py)
+
+from .report.bundle import PLOTLY_FILE  # noqa: E402  (a constant; the bundle loads only when written)
+
+
+def plotly_js() -> str:
+    """The folder's plotly bundle (report/bundle.py), made only when written."""
+    from .report.bundle import plotly_js as bundle
+    return bundle()
+
+SOLVE_OUTPUTS = ("results.json", "candidates.csv", "report.html", "catalog/", PLOTLY_FILE)
+ROBUST_OUTPUTS = ("robust.json", "robust.html", PLOTLY_FILE)
+SWEEP_OUTPUTS = ("sweep.json", "sweep.html", PLOTLY_FILE)
 
 
 def _catalog_snapshot(folder: Path) -> dict[str, bytes]:
@@ -189,12 +199,13 @@ def diagnose(campaign_dir: str | Path, holdout: list[str], out_dir: str | Path |
     if out_dir is not None:
         from .report.diagnose_html import render
         files = {"diagnosis.json": json.dumps(result.to_json(), indent=2),
-                 "diagnosis.html": render(result, f"Sim-to-real gap: {Path(campaign_dir).name}")}
+                 "diagnosis.html": render(result, f"Sim-to-real gap: {Path(campaign_dir).name}"),
+                 PLOTLY_FILE: plotly_js}
         write_folder(out_dir, files, inputs=[campaign_dir])
     return result
 
 
-DIAGNOSE_OUTPUTS = ("diagnosis.json", "diagnosis.html")
+DIAGNOSE_OUTPUTS = ("diagnosis.json", "diagnosis.html", PLOTLY_FILE)
 
 
 def diagnose_check(campaign_dir: str | Path, holdout: list[str] | None = None, seed: int = 0, progress=None):
@@ -285,7 +296,7 @@ def robust(requirements_path: str | Path, out_dir: str | Path | None = "robust-o
     if out_dir is not None:
         from .report.robust_html import render
         write_folder(out_dir, {"robust.json": json.dumps(data, indent=1, allow_nan=False) + "\n",
-                               "robust.html": render(data)}, inputs=inputs)
+                               "robust.html": render(data), PLOTLY_FILE: plotly_js}, inputs=inputs)
     return data
 
 
@@ -313,5 +324,5 @@ def sweep(requirements_path: str | Path, vary: list[str], out_dir: str | Path | 
     if out_dir is not None:
         from .report.sweep_html import render
         write_folder(out_dir, {"sweep.json": json.dumps(result, indent=1, allow_nan=False) + "\n",
-                               "sweep.html": render(result)}, inputs=inputs)
+                               "sweep.html": render(result), PLOTLY_FILE: plotly_js}, inputs=inputs)
     return result

@@ -22,6 +22,7 @@ import pytest
 from sizing.engine.solve import solve
 from sizing.io.catalog import Catalog, load_catalog
 from sizing.io.requirements import load_requirements
+from sizing.report.bundle import PLOTLY_FILE, plotly_js
 from sizing.report.html import render
 
 from .conftest import CATALOGS, STUDIES
@@ -112,6 +113,7 @@ def report_file(tmp_path_factory):
     out = solve(req, sha, cat)
     path = tmp_path_factory.mktemp("report") / "report.html"
     path.write_text(render(out.results, out.traces), encoding="utf-8")
+    (path.parent / PLOTLY_FILE).write_text(plotly_js(), encoding="utf-8")     # the folder's one bundle
     return path
 
 

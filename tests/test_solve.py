@@ -278,7 +278,7 @@ def test_seed_solve_end_to_end(tmp_path, seed_requirements):
     assert code == 0, stderr
     # the three files of the contract, plus the catalog snapshot a later
     # --baseline diffs against
-    assert {p.name for p in out.iterdir()} == {"results.json", "candidates.csv", "report.html", "catalog"}
+    assert {p.name for p in out.iterdir()} == {"results.json", "candidates.csv", "report.html", "catalog", "plotly.min.js"}
     r = json.loads((out / "results.json").read_text())
     assert {"tool_version", "requirements_sha256", "catalog_sha256", "candidates"} <= set(r)
     assert r["requirements_sha256"] == seed_requirements[1]
@@ -362,7 +362,10 @@ def test_seed_solve_end_to_end(tmp_path, seed_requirements):
     assert "DC motor front (feasible)" in html and "piezohydraulic" in html
     piezo_feasible = any(c["feasible"] for c in r["candidates"] if c["technology"] == "piezohydraulic")
     assert ("piezohydraulic front (feasible)" in html) == piezo_feasible
-    assert "<script src=" not in html and "Plotly.newPlot" in html and r["catalog_sha256"] in html and r["requirements_sha256"] in html
+    # plotly.js once per folder, beside the page, never from a CDN; the page itself stays small
+    assert "<script type='text/javascript' src='plotly.min.js'" in html and "http" not in html.split("<body>")[0]
+    assert len(html.encode()) < 1.5e6 and (out / "plotly.min.js").stat().st_size > 1e6
+    assert "Plotly.newPlot" in html and r["catalog_sha256"] in html and r["requirements_sha256"] in html
     header = (out / "candidates.csv").read_text().splitlines()[0]
     assert header.startswith("rank,id,technology")
 

@@ -104,10 +104,13 @@ def _targets(out, report) -> list[Path]:
 def _write(out, report, toml, result, kind, inputs=(), extra: dict | None = None) -> list[str]:
     """Write the TOML, the report and any ``extra`` files (path -> text) as
     one set (``io.atomic.write_files``), never over an input."""
+    from ..report.bundle import PLOTLY_FILE, plotly_js
     from ..report.fit_html import render
     targets = _targets(out, report)
     files: dict[Path, object] = {path: toml for path in targets[:1 if out is not None else 0]}
-    files.update({path: render(result, kind=kind, toml=toml) for path in targets[1 if out is not None else 0:]})
+    pages = targets[1 if out is not None else 0:]
+    files.update({path: render(result, kind=kind, toml=toml) for path in pages})
+    files.update({path.parent / PLOTLY_FILE: plotly_js for path in pages})
     files.update(extra or {})
     write_files(files, inputs=inputs)
     return [str(p) for p in files]

@@ -9,6 +9,8 @@ import numpy as np
 import plotly.graph_objects as go
 from plotly.subplots import make_subplots
 
+from .bundle import plotly_tag
+
 
 def _traces(diagnosis) -> go.Figure:
     bench = diagnosis.bench
@@ -122,7 +124,7 @@ def render(diagnosis, title: str = "Sim-to-real gap diagnosis") -> str:
         f"<td>{t['cross_correlation_velocity']['max']:.2f} at {1e3 * t['cross_correlation_velocity']['lag_s']:.0f} ms</td></tr>"
         for run, t in data["residual_tests"].items())
     figs = [_traces(diagnosis), _gap_map(diagnosis), _ranking(diagnosis)]
-    body = [figs[0].to_html(full_html=False, include_plotlyjs=True)]
+    body = [figs[0].to_html(full_html=False, include_plotlyjs=False)]
     body += [f.to_html(full_html=False, include_plotlyjs=False) for f in figs[1:]]
     baseline = ", ".join(f"{k}: {val:.4f}" for k, val in data["baseline"]["nrmse"].items())
     recal = ""
@@ -133,7 +135,7 @@ def render(diagnosis, title: str = "Sim-to-real gap diagnosis") -> str:
                  f"after {html.escape(str({k: round(x, 4) for k, x in r['nrmse_after'].items()}))}.</p>")
     return f"""<!DOCTYPE html><html><head><meta charset="utf-8"><title>{html.escape(title)}</title>
 <style>body{{font-family:sans-serif;margin:2em;max-width:1100px}} td,th{{padding:2px 8px;text-align:left}}
-table{{border-collapse:collapse}} tr:nth-child(even){{background:#f4f4f4}}</style></head><body>
+table{{border-collapse:collapse}} tr:nth-child(even){{background:#f4f4f4}}</style>{plotly_tag()}</head><body>
 <h1>{html.escape(title)}</h1>
 <p>Verdict: {verdict}. {html.escape(v.get('reason', ''))}</p>
 {separation}

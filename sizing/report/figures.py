@@ -19,6 +19,9 @@ def _axes(objectives: list[str]) -> tuple[str, str]:
     return x, y
 
 
+HOVER_MARGINS = 3
+
+
 def hover_text(c: dict) -> str:
     comp = c["components"]
     if c["technology"] == "dc_motor" and "actuator" in comp:
@@ -33,9 +36,15 @@ def hover_text(c: dict) -> str:
                 f"{comp['amplifier']}" if ratio else f"{comp['n_stacks']} x {comp['stack']}")
         if c.get("variant") == "compensated":
             head += "<br>with thermal compensator"
-    margins = "<br>".join(f"{k}: {v:+.0%}" if v is not None else f"{k}: n/a" for k, v in c["margins"].items())
+    # the three smallest margins: what decides the design (the full list is in results.json)
+    shown = sorted(c["margins"].items(), key=lambda kv: kv[1] if kv[1] is not None else -float("inf"))[:HOVER_MARGINS]
+    margins = ", ".join(f"{k} {v:+.0%}" if v is not None else f"{k} n/a" for k, v in shown)
     state = "feasible" if c["feasible"] else "infeasible"
-    return f"<b>{c['id']}</b><br>{head}<br>rank {c['rank']}, {state}, driver {c['driver']}<br>{margins}"
+    m = c.get("metrics") or {}
+    figures = ", ".join(x for x in (f"{m['mass_kg']:.4g} kg" if m.get("mass_kg") is not None else "",
+                                    f"{m['cost_usd']:,.0f} USD" if m.get("cost_usd") is not None else "") if x)
+    return (f"<b>{c.get('name', c['id'])}</b> ({figures})<br>{head}<br>rank {c['rank']}, {state}, "
+            f"binding {c['driver']}<br>{margins}")
 
 
 def _front_2d(points):

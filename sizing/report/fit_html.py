@@ -8,6 +8,8 @@ import numpy as np
 import plotly.graph_objects as go
 from plotly.subplots import make_subplots
 
+from .bundle import plotly_tag
+
 MAX_POINTS = 4000
 COLORS = {"measured": "#222222", "bouc-wen": "#d62728", "prandtl-ishlinskii": "#1f77b4", "dc-motor": "#d62728"}
 UM = 1e6
@@ -125,14 +127,12 @@ def render(result: dict, kind: str, toml: str) -> str:
     warns = result["fit"].get("warnings") or []
     if warns:
         parts.append("<h2>Identifiability</h2><ul>" + "".join(f"<li>{html.escape(w)}</li>" for w in warns) + "</ul>")
-    first = True
     parts.append("<h2>Runs</h2>")
     for trace in result["traces"]:
         fig = _run_figure(trace, kind)
-        parts.append(fig.to_html(full_html=False, include_plotlyjs=True if first else False))
-        first = False
+        parts.append(fig.to_html(full_html=False, include_plotlyjs=False))
     parts.append("<h2>TOML written</h2><pre>" + html.escape(toml) + "</pre>")
     style = ("body{font-family:sans-serif;max-width:1200px;margin:auto;padding:1em}"
              "table{border-collapse:collapse;margin:0.5em 0}td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}")
     return (f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>sizing fit {html.escape(kind)}</title>"
-            f"<style>{style}</style></head><body>{''.join(parts)}</body></html>")
+            f"<style>{style}</style>{plotly_tag()}</head><body>{''.join(parts)}</body></html>")

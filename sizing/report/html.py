@@ -5,7 +5,7 @@ from __future__ import annotations
 import html
 from collections import Counter
 
-import plotly.offline
+from .bundle import plotly_tag
 
 from .figures import MARGIN_ORDER, comparison_figure, pareto_figure, traces_figure
 from .force_path_html import section as force_path_section
@@ -317,4 +317,4 @@ they exist. Top feasible designs, then the best candidate of each technology:</p
 <h2>Assumptions</h2><ul>{assumptions}</ul>
 """
     return (f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>sizing report</title><style>{CSS}</style>"
-            f"<script type='text/javascript'>{plotly.offline.get_plotlyjs()}</script></head><body>{body}</body></html>")
+            f"{plotly_tag()}</head><body>{body}</body></html>")

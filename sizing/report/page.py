@@ -1,11 +1,10 @@
-"""A self-contained HTML page (plotly.js embedded once, no CDN) for the
-study reports (robust.html, sweep.html)."""
+"""An HTML page for the study reports (robust.html, sweep.html): plotly.js
+from the output folder's own bundle (``bundle.py``), no CDN."""
 from __future__ import annotations
 
 import html
 
-import plotly.offline
-
+from .bundle import plotly_tag
 from .html import CSS
 
 
@@ -26,5 +25,5 @@ def table(header: list[str], rows: list[list]) -> str:
 
 def page(title: str, body: str) -> str:
     return (f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>{esc(title)}</title><style>{CSS}</style>"
-            f"<script type='text/javascript'>{plotly.offline.get_plotlyjs()}</script></head>"
+            f"{plotly_tag()}</head>"
             f"<body><h1>{esc(title)}</h1>{body}</body></html>")

@@ -205,7 +205,8 @@ def run_crossform(verbose: bool = True, only: str = "", which: str = "dev", gene
             truth = case[1]
             predicted = v["effect"] or NONE
             ok = _right(truth, v)
-            sensitivity.append((truth, d.extra["verdict_inputs"]))
+            if "verdict_inputs" in d.extra:          # the verdict's inputs, for the sensitivity table
+                sensitivity.append((truth, d.extra["verdict_inputs"]))
             rows.append({"case": case[0], "technology": technology, "truth": truth, "predicted": predicted,
                          "form": v.get("form"),
                          "status": v["status"], "first": d.fits[0].name if d.fits else NONE,

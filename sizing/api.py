@@ -67,7 +67,7 @@ def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-ou
     results = output.results
     results["catalog_dir"] = str(cat.folder.resolve())
     if old is not None:
-        results["changes"] = _rank_changes(old, results, baseline, cat.folder)
+        results["changes"], results["changes_summary"] = _rank_changes(old, results, baseline, cat.folder)
         results["baseline_sha256"] = old.get("requirements_sha256")
     if out_dir is not None:
         files = {"results.json": json.dumps(results, indent=1, allow_nan=False) + "\n",
@@ -168,15 +168,16 @@ def _load_baseline(path: str | Path) -> dict:
     return data
 
 
-def _rank_changes(baseline: dict, results: dict, baseline_path, catalog_folder: Path) -> list[dict]:
+def _rank_changes(baseline: dict, results: dict, baseline_path, catalog_folder: Path) -> tuple[list[dict], dict]:
     """Designs whose standing changed (engine/changes.py), with the
     catalog fields responsible when the baseline's catalog is known (the
     snapshot ``sizing solve`` writes beside its results.json)."""
-    from .engine.changes import rank_changes
+    from .engine.changes import change_causes, rank_changes
     from .io.catalog_diff import baseline_catalog, diff_catalogs
     old_catalog = baseline_catalog(baseline_path, baseline)
     diff = diff_catalogs(old_catalog, catalog_folder) if old_catalog is not None else None
-    return rank_changes(baseline, results, diff)
+    changes = rank_changes(baseline, results, diff)
+    return changes, change_causes(baseline, results, changes, diff)
 
 
 def diagnose(campaign_dir: str | Path, holdout: list[str], out_dir: str | Path | None = None,

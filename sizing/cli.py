@@ -116,6 +116,8 @@ def solve(requirements: Path = typer.Argument(..., help="requirements.toml (docs
     with use_limits(steps=max_steps):
         results = _solve(requirements, out, catalog, baseline, quiet, detail)
     if not quiet:
+        if results.get("changes_summary"):
+            typer.echo(f"what changed: {results['changes_summary']['text']}")
         for group in results["summary"]["groups"]:
             typer.echo(f"{group['label']}: {group['text']}")
         typer.echo(results["summary"]["thermal"])

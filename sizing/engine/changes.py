@@ -76,14 +76,14 @@ def _param_causes(old: dict | None, new: dict | None) -> list[dict]:
     return causes
 
 
-def _summary(cid: str, events: list[str], old_rank, new_rank, causes: list[dict], indirect: bool = False) -> str:
+def _summary(cid: str, events: list[str], old_rank, new_rank, causes: list[dict], indirect: str = "") -> str:
     words = {"entered_feasible": "became feasible", "left_feasible": "is no longer feasible",
              "entered_pareto": "entered the Pareto front", "left_pareto": "left the Pareto front",
              "new_candidate": "is a new candidate", "dropped_candidate": "is no longer a candidate"}
     parts = [words[e] for e in events if e in words]
     if old_rank is not None and new_rank is not None and old_rank != new_rank:
         parts.append(f"rank {old_rank} -> {new_rank}")
-    text = f"{cid}: " + ", ".join(parts)
+    text = ", ".join(parts)
     named = []
     for c in causes:
         if c.get("field") is None:
@@ -96,7 +96,7 @@ def _summary(cid: str, events: list[str], old_rank, new_rank, causes: list[dict]
     if named:
         text += "; because of " + ", ".join(named[:4]) + (f" and {len(named) - 4} more" if len(named) > 4 else "")
     elif indirect:
-        text += " (its own parts did not change: other designs moved)"
+        text += f" ({indirect})"
     return text
 
 
@@ -162,10 +162,71 @@ def rank_changes(baseline: dict, results: dict, catalog_diff=None) -> list[dict]
             "rank_move": move,
             "driver": [old.get("driver") if old else None, new.get("driver") if new else None],
             "causes": causes,
-            "summary": _summary(cid, events, old_rank, new_rank, causes, indirect=diff is not None),
+            "summary": _summary(cid, events, old_rank, new_rank, causes, indirect=_indirect(baseline, results, diff)),
         })
     changes.sort(key=_importance)
     return changes
+
+
+def _indirect(baseline: dict, results: dict, diff) -> str:
+    """Why a design whose own parts did not change moved anyway."""
+    if requirement_changes(baseline, results):
+        return "its parts did not change: the requirements did"
+    return "its own parts did not change: other designs moved" if diff is not None else ""
+
+
+def _flat(d: dict, prefix: str = "") -> dict:
+    out = {}
+    for k, v in (d or {}).items():
+        if isinstance(v, dict):
+            out.update(_flat(v, f"{prefix}{k}."))
+        else:
+            out[f"{prefix}{k}"] = v
+    return out
+
+
+def requirement_changes(baseline: dict, results: dict) -> list[dict]:
+    """The requirement, duty, envelope and option values (results.json
+    ``requirements``, SI) that differ between the two runs; a value only
+    one run records (an older results.json) is not called a change."""
+    old, new = _flat(baseline.get("requirements") or {}), _flat(results.get("requirements") or {})
+    out = []
+    for key in sorted(set(old) & set(new)):
+        a, b = old.get(key), new.get(key)
+        same = (isinstance(a, (int, float)) and isinstance(b, (int, float))
+                and math.isclose(a, b, rel_tol=_PARAM_TOL, abs_tol=0.0)) or a == b
+        if not same:
+            out.append({"field": key, "old": a, "new": b})
+    return out
+
+
+def change_causes(baseline: dict, results: dict, changes: list[dict], catalog_diff=None) -> dict:
+    """What changed between the runs, cause by cause, and how many designs
+    moved: ``requirements`` (field, old, new), ``catalog`` (entries changed,
+    added, removed; None when the baseline's catalog is unknown),
+    ``tool_version`` [old, new] when it differs, ``designs_moved`` and a
+    one-line ``text`` (the terminal prints it)."""
+    diff = _as_dict(catalog_diff)
+    reqs = requirement_changes(baseline, results)
+    catalog = None if diff is None else {k: len(diff.get(k, [])) for k in ("changed", "added", "removed")}
+    versions = [baseline.get("tool_version"), results.get("tool_version")]
+    parts = []
+    if reqs:
+        shown = ", ".join(f"{r['field']} {_value(r['old'])} -> {_value(r['new'])}" for r in reqs[:3])
+        parts.append(f"{len(reqs)} requirement value{'s' if len(reqs) > 1 else ''} changed ({shown}"
+                     + (f" and {len(reqs) - 3} more" if len(reqs) > 3 else "") + ")")
+    if catalog and any(catalog.values()):
+        parts.append(f"catalog: {catalog['changed']} entries changed, {catalog['added']} added, {catalog['removed']} removed")
+    if versions[0] != versions[1]:
+        parts.append(f"tool version {versions[0]} -> {versions[1]}")
+    moved = len(changes)
+    text = ("; ".join(parts) or "no requirement, catalog or version change") + f": {moved} design{'s' if moved != 1 else ''} changed standing"
+    return {"requirements": reqs, "catalog": catalog, "tool_version": versions if versions[0] != versions[1] else None,
+            "designs_moved": moved, "text": text}
+
+
+def _value(v) -> str:
+    return f"{v:.4g}" if isinstance(v, float) else str(v)
 
 
 def _importance(change: dict):

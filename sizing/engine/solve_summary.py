@@ -33,7 +33,7 @@ def _requirements_si(req: RequirementsFile) -> dict:
             "max_temperature_degC": r.max_temperature, "stroke_time_s": req.stroke_time,
             "min_natural_frequency_Hz": req.natural_frequency, "max_overshoot": o.max_overshoot,
             "max_thermal_drift_m": o.max_drift_fraction * r.stroke,
-            "options": o.model_dump()}
+            "options": o.model_dump(), "duty": req.duty.model_dump(), "envelope": req.envelope.model_dump()}
 
 
 def _assumptions(req: RequirementsFile) -> list[str]:

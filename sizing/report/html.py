@@ -163,12 +163,16 @@ def _changes(results: dict, limit: int = 60) -> str:
         return ""
     if not changes:
         return "<h2>What changed</h2><p>Nothing changed against the baseline.</p>"
+    names = {c["id"]: c.get("name", c["id"]) for c in results.get("candidates", [])}
     items = []
     for ch in changes[:limit]:
         text = ch.get("summary") or ", ".join(f"{k}: {v}" for k, v in ch.items() if k != "id")
-        items.append(f"<li><code>{_e(ch.get('id', ''))}</code>: {_e(text)}</li>")
+        cid = ch.get("id", "")
+        items.append(f"<li><b title='{_e(cid)}'>{_e(names.get(cid, cid))}</b>: {_e(text)}</li>")
     more = f"<p>... and {len(changes) - limit} more in results.json (\"changes\").</p>" if len(changes) > limit else ""
-    return (f"<h2>What changed</h2><p>{len(changes)} candidates changed standing against the baseline "
+    cause = (results.get("changes_summary") or {}).get("text")
+    lead = f"<div class='box'><b>{_e(cause)}</b></div>" if cause else ""
+    return (f"<h2>What changed</h2>{lead}<p>{len(changes)} candidates changed standing against the baseline "
             f"(most important first):</p><ul>{''.join(items)}</ul>{more}")
 
 

@@ -260,6 +260,8 @@ def sensitivity_table(cases) -> str:
     is multiplied by each of SENSITIVITY_FACTORS, the fits held (only the
     verdict is re-judged; the spectral-line input is the default run's).
     cases: [(truth, Diagnosis.extra["verdict_inputs"])]."""
+    if not cases:
+        return "(no verdict inputs kept)"
     from sizing.diagnose import judge
     from sizing.diagnose.settings import DEFAULT, VERDICT_THRESHOLDS
 

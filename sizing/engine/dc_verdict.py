@@ -69,12 +69,17 @@ def dc_sourced(catalog, candidates: list[dict]) -> dict:
     return out
 
 
+def _label(entry: dict) -> str:
+    """The short name people read (the id stays in the entry)."""
+    return entry.get("name") or entry["id"]
+
+
 def _text(out: dict) -> str:
     a, r = out["best_on_any_parts"], out["best_on_sourced_parts"]
     if a is None:
         return "No feasible DC design from parts."
     deciding = [f"{x['part']} {x['field']}" for x in a["rests_on_assumed"] if x["decides"]]
-    line = (f"Best DC design on any parts: {a['id']} ({a['mass_kg']:.2f} kg, binding {a['driver']} "
+    line = (f"Best DC design on any parts: {_label(a)} ({a['mass_kg']:.2f} kg, binding {a['driver']} "
             f"{a['binding_margin']:+.1%}); its binding margin rests on "
             + (f"the assumed {', '.join(deciding)}." if deciding else "no assumed value."))
     if r is None:
@@ -82,14 +87,14 @@ def _text(out: dict) -> str:
     if r["id"] == a["id"]:
         line += " It is also the best on sourced parts."
     else:
-        line += (f" Best on sourced parts: {r['id']} ({r['mass_kg']:.2f} kg, binding {r['driver']} "
+        line += (f" Best on sourced parts: {_label(r)} ({r['mass_kg']:.2f} kg, binding {r['driver']} "
                  f"{r['binding_margin']:+.1%}).")
     f = out["best_on_sourced_parts_binding_on_no_assumed_value"]
     if f is not None and f["id"] != r["id"]:
-        line += (f" Best on sourced parts whose binding margin rests on no assumed value: {f['id']} "
+        line += (f" Best on sourced parts whose binding margin rests on no assumed value: {_label(f)} "
                  f"({f['mass_kg']:.2f} kg, binding {f['driver']} {f['binding_margin']:+.1%}).")
     c = out["closest_on_sourced_parts_binding_on_no_assumed_value"]
     if f is None and c is not None:
         line += (f" No feasible design on sourced parts has a binding margin free of assumed values; the closest, "
-                 f"{c['id']} ({c['mass_kg']:.2f} kg), misses {c['driver']} by {c['binding_margin']:+.1%}.")
+                 f"{_label(c)} ({c['mass_kg']:.2f} kg), misses {c['driver']} by {c['binding_margin']:+.1%}.")
     return line

@@ -70,7 +70,7 @@ def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-ou
         results["changes"], results["changes_summary"] = _rank_changes(old, results, baseline, cat.folder)
         results["baseline_sha256"] = old.get("requirements_sha256")
     if out_dir is not None:
-        files = {"results.json": json.dumps(results, indent=1, allow_nan=False) + "\n",
+        files = {"results.json": results_json(results),
                  "candidates.csv": candidates_csv(results),
                  "report.html": render(results, output.traces), PLOTLY_FILE: plotly_js}
         # the catalog these results rest on, so a later --baseline can diff it
@@ -93,6 +93,19 @@ def plotly_js() -> str:
 SOLVE_OUTPUTS = ("results.json", "candidates.csv", "report.html", "catalog/", PLOTLY_FILE)
 ROBUST_OUTPUTS = ("robust.json", "robust.html", PLOTLY_FILE)
 SWEEP_OUTPUTS = ("sweep.json", "sweep.html", PLOTLY_FILE)
+
+
+def results_json(results: dict) -> str:
+    """results.json as people read it: the top level indented, each candidate
+    (and each ruled-out record) one compact line, so a candidate is one line
+    of a diff and the file stays a few MB."""
+    import json
+    head = {k: v for k, v in results.items() if k not in ("candidates", "ruled_out")}
+    text = json.dumps(head, indent=1, allow_nan=False)[:-2]
+    for key in ("candidates", "ruled_out"):
+        rows = ",\n".join(json.dumps(c, separators=(",", ":"), allow_nan=False) for c in results.get(key, []))
+        text += f',\n "{key}": [\n{rows}\n ]'
+    return text + "\n}\n"
 
 
 def _catalog_snapshot(folder: Path) -> dict[str, bytes]:

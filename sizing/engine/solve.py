@@ -135,6 +135,8 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
                    "dc_parts": _dc_counts(parts)},
     }
     traces = _traces(req, candidates, designs, dc, loads)
+    if detail != "full":
+        _keep_verified(results)
     results["runtime_s"] = time.perf_counter() - start
     return SolveOutput(results=_clean(results), traces=traces)
 
@@ -231,6 +233,35 @@ def _stack_params(combo: Combo) -> dict:
 
 def _temperatures(combo: Combo) -> dict:
     return {k: {"rated_degC": a, "required_degC": b} for k, (a, b) in combo.temperatures.items()}
+
+
+UNVERIFIED = ("sized", "gp_infeasible")
+UNVERIFIED_REASON = "not simulated: misses a static check"
+
+
+def _keep_verified(results: dict) -> None:
+    """Keep the records of the designs verified by simulation and of those the
+    summary names (each group's best and closest, each technology's best and
+    one-miss design, the design that flips its verdict); count the other
+    statically infeasible designs by reason instead (``--detail full`` keeps
+    them). Ranks stay contiguous."""
+    summary = results["summary"]
+    named = {g.get(k) for g in summary["groups"] for k in ("best", "closest")}
+    for t in summary["comparison"]["technologies"].values():
+        named |= {t.get("best"), (t.get("one_miss") or {}).get("id"), (t.get("flip") or {}).get("design")}
+    kept, dropped = [], Counter()
+    for c in results["candidates"]:
+        if c.get("stage") in UNVERIFIED and not c["feasible"] and c["id"] not in named:
+            dropped[c["technology"]] += 1
+        else:
+            kept.append(c)
+    for rank, c in enumerate(kept, start=1):
+        c["rank"] = rank
+    results["candidates"] = kept
+    for tech, n in dropped.items():
+        summary["ruled_out"][UNVERIFIED_REASON] = summary["ruled_out"].get(UNVERIFIED_REASON, 0) + n
+        by_tech = summary["ruled_out_by_technology"].setdefault(tech, {})
+        by_tech[UNVERIFIED_REASON] = by_tech.get(UNVERIFIED_REASON, 0) + n
 
 
 def _pruned_reason(combo: Combo) -> str:

@@ -32,3 +32,19 @@ def test_requirement_errors_name_the_fix(tmp_path, old, new, expected):
 def test_catalog_show_suggests_near_ids():
     code, _, stderr = run_cli("catalog", "show", "pi-p-056.9")
     assert code == 2 and "did you mean pi-p-056.90" in stderr and len(stderr.strip().splitlines()) == 1
+
+
+def test_catalog_add_accepts_the_units_the_catalog_uses(catalog_copy, tmp_path):
+    """A seal sheet with the catalog's own unit for the pressure coefficient
+    in its header, N/(m*Pa) (catalogs/seals.toml), is read, not refused."""
+    from sizing.io.catalog import load_catalog
+    sheet = tmp_path / "seals.csv"
+    sheet.write_text(
+        "id,name,manufacturer,source,retrieved,material,type,friction_per_length [N/m],"
+        "friction_pressure_coefficient [N/(m*Pa)],breakaway_ratio,min_temperature [degC],"
+        "max_temperature [degC],pressure_rating [MPa],cost_usd\n"
+        "test-seal,Test seal,Test maker,hand,2026-11-25,PTFE,lip,30,4e-5,1.5,-50,200,21,25\n")
+    code, _, err = run_cli("catalog", "add", "seal", sheet, "--catalog", catalog_copy)
+    assert code == 0, err
+    seal = load_catalog(catalog_copy).seals["test-seal"]
+    assert seal.friction_pressure_coefficient == pytest.approx(4e-5) and seal.pressure_rating == pytest.approx(21e6)

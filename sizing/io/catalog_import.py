@@ -30,7 +30,9 @@ from .atomic import write_text
 from .catalog import DEFAULT_CATALOG, KINDS, Entry, load_catalog
 from .schema import parse_model
 
-_HEADER = re.compile(r"^\s*([A-Za-z0-9_.]+)\s*(?:[\[(]\s*([^\])]*?)\s*[\])])?\s*$")
+# "name [unit]" or "name (unit)"; the unit may hold parentheses itself, as the
+# catalog's own units do ("friction_pressure_coefficient [N/(m*Pa)]")
+_HEADER = re.compile(r"^\s*([A-Za-z0-9_.]+)\s*(?:\[\s*([^\]]*?)\s*\]|\(\s*(.*?)\s*\))?\s*$")
 PROVENANCE = ("id", "name", "manufacturer", "source", "retrieved", "notes")
 TEXT_FIELDS = ("material", "type", "section", "derivative_on")
 
@@ -58,7 +60,7 @@ def _columns(header: list[str], csv_path: Path, model: type[Entry]) -> list[tupl
     columns = []
     for index, text in enumerate(header, start=1):
         match = _HEADER.match(text or "")
-        name, unit = (match.group(1), match.group(2) or None) if match else (text, None)
+        name, unit = (match.group(1), match.group(2) or match.group(3) or None) if match else (text, None)
         head, _, tail = name.partition(".")
         ok = (name in known and name not in nested) or name == "status" \
             or (head == "status" and tail in model.quantity_fields() + sorted(nested)) \

@@ -1,11 +1,11 @@
-"""Speed of ``sizing robust`` and ``sizing sweep`` (issue 13).
+"""Speed of ``sizing robust`` and ``sizing sweep``.
 
     python benchmarks/robust_benchmark.py [--designs 10] [--samples 1000] [--workers 2] [--sweep 20]
                                           [--technology piezohydraulic|dc_motor]
 
 1. The seed case (studies/seed-requirements.toml, 2 load cases) is solved
    once; its ``--designs`` best designs (of ``--technology`` when given;
-   since issue 11 the best are DC designs from parts) get ``--samples`` Monte Carlo
+   now the best are DC designs from parts) get ``--samples`` Monte Carlo
    samples each, every sample a full simulation under both load cases, run
    serially and on a local Dask cluster of ``--workers`` processes. Prints
    the wall time, the throughput in simulated candidate-seconds per wall
@@ -15,7 +15,7 @@
 3. A sweep of ``--sweep`` solves (stroke 35..50 mm x max_temperature
    80..120 degC) on the local cluster: wall time.
 
-Targets (issue 13): the Monte Carlo under 60 s and the sweep of 20 solves
+Targets: the Monte Carlo under 60 s and the sweep of 20 solves
 under 2 minutes on a 2-core machine. Timings depend on what else the
 machine runs; the figures in the README were taken while other jobs shared
 the two cores.

@@ -1,4 +1,4 @@
-"""Hostile input (issue 14): every case of the issue's "Why" list, rebuilt
+"""Hostile input: every case once reported against the tool, rebuilt
 from its description. Each must end in exit 2 with one line on stderr naming
 the file (or option) and the field, no traceback, nothing written; the
 dialects people produce must be accepted."""

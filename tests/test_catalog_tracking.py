@@ -1,4 +1,4 @@
-"""Issue 6: catalog provenance, validation, diffs, import, and what a catalog
+"""Catalog provenance, validation, diffs, import, and what a catalog
 change does to the ranking. The first test is the issue's acceptance test."""
 from __future__ import annotations
 
@@ -341,14 +341,14 @@ def test_golden_failure_names_the_catalog_field(catalog_copy):
     _set_field(catalog_copy, "stacks.toml", STACK, "stiffness", '"3.0e8 N/m"')
     result = api.evaluate(CATALOGS.parent / golden["study"], catalog_copy)
     failures = golden_module.check_design(golden, result)
-    # issue 9: the seed's published 2.81 kN is now checked as the ideal figure
+    # the seed's published 2.81 kN is now checked as the ideal figure
     assert any(f.startswith("static.blocked_force_ideal_N") for f in failures)
     message = golden_module.explain(golden, result, failures, load_catalog(catalog_copy))
     assert "the catalog changed" in message and f"{STACK}.stiffness" in message
 
 
 def test_evaluate_marks_assumed_values():
-    """Reports mark results that rest on assumed values (issue 6, point 1)."""
+    """Reports mark results that rest on assumed values."""
     result = api.evaluate(CATALOGS.parent / "studies" / "seed-table3-prototype.toml")
     cat = load_catalog()
     assert result["assumed"]["thorlabs-pk4ga7p1"] == cat.stacks["thorlabs-pk4ga7p1"].assumed()

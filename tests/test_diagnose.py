@@ -1,4 +1,4 @@
-"""Tests of `sizing diagnose` (issue 5): effects, input treatment, the
+"""Tests of `sizing diagnose`: effects, input treatment, the
 verdicts (effect, no significant gap, unexplained), the output contract and
 bad campaigns. Kept fast: 2 s runs at 1 kHz, a few diagnoses."""
 from __future__ import annotations
@@ -93,7 +93,7 @@ def test_sensor_noise_alone_gives_no_gap(piezo_rig):
 def test_injected_piezo_effect_is_named(piezo_rig, name, values):
     effect = get("piezohydraulic", name)
     runs = synth.synthesize("piezohydraulic", piezo_rig, _inputs(), [effect], [values], noise=synth.Noise(seed=3))
-    # issue 10: re-calibration (d33) is on by default and takes part of a
+    # re-calibration (d33) is on by default and takes part of a
     # creep or friction gap before any effect is blamed; this test measures
     # the shrink against the stated nominal, so it turns it off
     d = diagnose_runs("piezohydraulic", piezo_rig, runs, ["steps"], pairs=False, recalibrate=[])
@@ -139,7 +139,7 @@ def test_dc_sensor_vibration_campaign():
 
 def test_cli_writes_the_contract(tmp_path):
     out = tmp_path / "out"
-    # issue 10: re-calibration is on by default and takes part of the gap
+    # re-calibration is on by default and takes part of the gap
     # before any effect is blamed; the shrink asserted below is against the
     # stated nominal, so this run turns it off
     proc = subprocess.run([sys.executable, "-m", "sizing.cli", "diagnose", str(PIEZO), "--holdout", "steps",

@@ -1,4 +1,4 @@
-"""Issue 10: diagnosis on campaigns from the second, independent generator
+"""Diagnosis on campaigns from the second, independent generator
 (benchmarks/crossform: RK4 on its own state forms, LuGre friction, a
 mis-stated nominal, white + 1/f + quantisation noise), judged on every
 logged channel; bad input. A few short DC campaigns (the full cross-form
@@ -116,7 +116,7 @@ def test_drive_current_limit_is_named_with_its_form(tmp_path):
 
 
 def test_lugre_seal_from_the_second_generator_is_named_as_seal_stick_slip(tmp_path):
-    """Issue 10 acceptance (piezo): the second generator's output seal is
+    """Acceptance (piezo): the second generator's output seal is
     LuGre with a Stribeck rise (3 N running, 6 N breakaway, 1 mm/s, 10 um
     presliding), its own RK4 with the oil pressure as a state, a mis-stated
     nominal, white + 1/f + quantisation noise, a seed other than the

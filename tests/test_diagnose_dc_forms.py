@@ -1,4 +1,4 @@
-"""The DC effect forms of issue 10 item 3 (command/drive current limit,
+"""The widened DC effect forms (command/drive current limit,
 Coulomb/Stribeck friction, play/coasting backlash): hand-computed numbers,
 and the library holds them as alternatives of one family."""
 import numpy as np

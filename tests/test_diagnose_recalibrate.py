@@ -1,5 +1,4 @@
-"""Re-calibration of named nominal parameters before the effects are tried
-(issue 5, point 2): the gap is reported before and after."""
+"""Re-calibration of named nominal parameters before the effects are tried: the gap is reported before and after."""
 import shutil
 
 import pytest

@@ -1,4 +1,4 @@
-"""Issue 10 item 3, vibration: the additive-sinusoid form of
+"""Vibration: the additive-sinusoid form of
 sensor_vibration (frequency from the residual spectrum, amplitude and
 phase by linear least squares) and the spectral start of the mount form,
 against hand-computed numbers."""

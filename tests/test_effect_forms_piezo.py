@@ -1,4 +1,4 @@
-"""Issue 10 item 3 (piezo): the widened effect forms of the piezohydraulic
+"""The widened effect forms of the piezohydraulic
 simulator, each against a hand-computed or closed-form number, and the
 nominal path unchanged (bit for bit) when their fields are at default."""
 import numpy as np

@@ -12,7 +12,7 @@ def test_table2_full_scale_reproduces():
     # ARL-TR-10251 Table 2 / PHYSICS-NOTES: 49.9 mm and 2.81 kN within 1%.
     result = api.evaluate(STUDIES / "seed-table2-full-scale.toml")
     assert result["static"]["free_stroke_m"] == pytest.approx(0.0499, rel=0.01)
-    # issue 9: blocked_force_N now carries the whole force path in series
+    # blocked_force_N now carries the whole force path in series
     # (docs/formats.md, force_path); the seed's ideal n k_s d33 V / R is kept as
     # blocked_force_ideal_N and must still reproduce Table 2.
     assert result["static"]["blocked_force_ideal_N"] == pytest.approx(2810, rel=0.01)
@@ -29,7 +29,7 @@ def test_table3_prototype_warns_about_ratio():
     assert result["design"]["ratio"] == pytest.approx(100.0, rel=1e-9)
     assert "R = 106 disagrees" in err and "R = 100.0" in err
     assert result["static"]["free_stroke_m"] == pytest.approx(0.010, rel=0.01)
-    # issue 9: the seed's Table 3 figure is the ideal one (rigid structure, stiff oil)
+    # the seed's Table 3 figure is the ideal one (rigid structure, stiff oil)
     assert result["static"]["blocked_force_ideal_N"] == pytest.approx(58.8, rel=0.01)
 
 

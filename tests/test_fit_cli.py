@@ -48,7 +48,7 @@ def test_fit_hysteresis_writes_contract_toml_and_html(piezo_runs, tmp_path):
     assert "nrmse_holdout" in fit["prandtl_ishlinskii"]
     html = out.with_suffix(".html").read_text()
     assert "plotly" in html and "<script src=\"http" not in html and len(html) > 1_000_000 and "voltage vs displacement" in html
-    # issue 12: the report says which model wins and what the data determine
+    # the report says which model wins and what the data determine
     assert "Model choice" in html and "What the data determine" in html and "prior share" in html
 
 

@@ -1,4 +1,4 @@
-"""Issue 12: fitting that holds on real records by default (sensor offset and
+"""Fitting that holds on real records by default (sensor offset and
 initial state per run, input filter from the record, catalog prior,
 identifiable combinations, model choice on the holdout, catalog entry,
 cross-excitation)."""
@@ -199,7 +199,7 @@ def test_cross_excitation_on_a_model_outside_both_families():
     for name, est in (("bouc-wen", BoucWenEstimator(n_starts=2)), ("pi", PrandtlIshlinskiiEstimator())):
         quiet(est, [fit_on])
         scores[name] = (nrmse(fit_on.position, est.predict(fit_on)), nrmse(judge.position, est.predict(judge)))
-    # the goal of issue 12: one model within 1 % on both (Bouc-Wen here;
+    # the aim: one model within 1 % on both (Bouc-Wen here;
     # measured 0.58 % / 0.65 %); Prandtl-Ishlinskii fits the sine as well
     # but misses the minor loops (~1.9 %)
     assert max(scores["bouc-wen"]) < 0.01, scores

@@ -1,4 +1,4 @@
-"""`sizing evaluate` with the whole force path (issue 9): blocked force over
+"""`sizing evaluate` with the whole force path: blocked force over
 the summed compliances, the prototype's stroke deficit, buildability, and
 bad input (exit 2, one line)."""
 from __future__ import annotations
@@ -122,7 +122,7 @@ def test_zero_duty_exits_2_and_writes_nothing(tmp_path):
 
 
 def test_hysteresis_time_scale_of_the_seed_stack():
-    """PHYSICS-NOTES second round: the seed's Thorlabs parameters (Table 1)
+    """docs/models.md: the seed's Thorlabs parameters (Table 1)
     ramped 0-150 V give 106.8 um in 0.01 s, 104.5 um in 1 s, 84.7 um in 10 s
     (the delta term integrates over time). The datasheet's 100 um is met at
     one ramp time between 1 and 10 s."""

@@ -1,4 +1,4 @@
-"""Fuzz every command (issue 14): random mutations of valid example files.
+"""Fuzz every command: random mutations of valid example files.
 
 Each example copies small, valid inputs of one command into a fresh folder,
 mutates them one to three times (a value replaced by a hostile one, a line deleted,

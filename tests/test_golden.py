@@ -1,4 +1,4 @@
-"""Golden designs (issue 6, point 5): reference designs whose figures must
+"""Golden designs: reference designs whose figures must
 not move beyond a stated tolerance when the models or the catalog change.
 
 tests/golden/seed_designs.json holds, per design, the study file, the
@@ -170,12 +170,12 @@ def test_dc_step_response():
 
 def test_best_design_for_seed_requirements(tmp_path):
     """The best design `sizing solve` finds for studies/seed-requirements.toml,
-    per technology (issue 11: the DC option sized from parts is now ranked
+    per technology (the DC option sized from parts is now ranked
     beside the piezohydraulic one and its best is lighter and cheaper, so the
     rank-1 design overall is a DC design; each technology keeps its golden)."""
     goldens = [d for d in _golden().get("solve", []) if d["study"] == "studies/seed-requirements.toml"]
     if not solve_available():
-        pytest.skip("sizing solve (issue 3) is not built yet; record its best design with --update once it is")
+        pytest.skip("sizing solve is not built yet; record its best design with --update once it is")
     if not goldens:
         pytest.skip("no golden best design recorded yet: run `python -m tests.test_golden --update`")
     results = _solve_results(tmp_path)
@@ -184,7 +184,7 @@ def test_best_design_for_seed_requirements(tmp_path):
     for golden in goldens:
         best = _best_of(results, golden.get("technology"))
         if golden.get("best_id") is None:
-            # issue 9: the golden verdict is that nothing of this technology is
+            # the golden verdict is that nothing of this technology is
             # feasible; what blocks each group must not move
             assert best is None, f"solve now finds {best['id']} feasible; the golden says none is"
             assert {k: groups.get(k) for k in golden["blocking"]} == golden["blocking"]
@@ -201,7 +201,7 @@ def test_best_design_for_seed_requirements(tmp_path):
 
 
 def solve_available() -> bool:
-    """`sizing solve` (issue 3) is registered on the command line."""
+    """`sizing solve` is registered on the command line."""
     from sizing.cli import app
     return any((c.name or c.callback.__name__) == "solve" for c in app.registered_commands)
 

@@ -1,4 +1,4 @@
-"""The one output writer (sizing/io/atomic.py) and the paths of issue 14:
+"""The one output writer (sizing/io/atomic.py) and the hostile paths:
 --out naming a file, a folder holding a file named like an output
 subfolder, an input; SIGINT/SIGTERM during a command; never a mix of old
 and new outputs, nothing left behind."""

@@ -142,7 +142,7 @@ def test_report_renders_offline_without_console_errors(report_file, tmp_path):
         dt.close()
     assert title == "sizing report"
     # every figure the file defines is drawn (Pareto front, traces, piezo vs DC, and the
-    # force-path and thermal-budget figures of issue 9)
+    # force-path and thermal-budget figures)
     expected = report_file.read_text().count("Plotly.newPlot(")
     assert expected >= 3 and len(counts) == expected and all(n > 0 for n in counts), (counts, expected)
     mine = [e for e in dt.events if e.get("sessionId") == session]

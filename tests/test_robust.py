@@ -1,4 +1,4 @@
-"""sizing robust: probability of compliance under tolerances (issue 13)."""
+"""sizing robust: probability of compliance under tolerances."""
 from __future__ import annotations
 
 import json
@@ -22,7 +22,7 @@ from sizing.studies.tolerances import Tolerance, factors, perturbed_combo
 from .conftest import CATALOGS, ONE_DESIGN, STUDIES, run_cli, subset_catalog
 
 # at the default duty (one stroke per second) the amplifier's continuous current
-# fails every piezohydraulic design (issue 9); at 0.1 strokes/s the other
+# needs the most amplifier units; at 0.1 strokes/s the other
 # requirements decide, which is what these tests look at
 SEED_REQ = (STUDIES / "seed-requirements.toml").read_text() + "\n[duty]\nstrokes_per_second = 0.1\n"
 DEFAULT_MATERIAL = "al-6061-t6"
@@ -43,7 +43,7 @@ def small_catalog():
 def _nominal(req, catalog, key=KEY):
     """The design of ``key`` sized as ``solve`` sizes it, and its candidates."""
     combo = next(c for c in enumerate_combos(req, catalog) if c.key == key)
-    # as built and with each compensator, in the default structure material (issue 9)
+    # as built and with each compensator, in the default structure material
     triples = [t for t in piezo_designs.size(req, catalog, [combo]) if t[1].material.id == DEFAULT_MATERIAL]
     loads = [c["load_N"] for c in load_cases(req.load)]
     verified = verify_sized(req, catalog, triples, loads)
@@ -58,7 +58,7 @@ def test_wilson_interval_matches_published_value():
 
 
 def test_stroke_tolerance_gives_the_closed_form_probability(tmp_path, small_catalog):
-    # Closed form (issue 13): simulated stroke proportional to the stack stroke, nominal stroke
+    # Closed form: simulated stroke proportional to the stack stroke, nominal stroke
     # margin m, relative normal spread s: P(stroke >= required) = Phi(m / ((1 + m) s)).
     # The design is sized for 40 mm and judged against 26 mm, so m ~ 0.6 and the closed form
     # (0.87 at s = 0.3) is far from the naive Phi(m / s) (0.98): the test tells them apart.
@@ -263,7 +263,7 @@ def test_bouc_wen_spreads_from_a_fit_and_their_effect(tmp_path, small_catalog):
         perturbed_combo(combo, tols, np.array([1.2]))        # the loop must be given
 
 
-# --- DC designs sized from parts (issue 13, the DC path) --------------------
+# --- DC designs sized from parts (the DC path) -----------------------------------
 DC_PARTS = dict(motor="gen-bldc42-28v-h", screw="ball-12x2", drive="servo-48v-10a")
 
 

@@ -1,4 +1,4 @@
-"""New forms of the DC simulator (issue 10 item 3): a drive-side current
+"""New forms of the DC simulator: a drive-side current
 limit the controller does not know, Stribeck friction; hand-computed numbers,
 and the nominal path bit-identical when the new fields are at their defaults."""
 import numpy as np

@@ -123,7 +123,7 @@ def test_rejects_mismatched_input_rows():
 
 
 def test_pressure_dependent_seal_friction_closed_form():
-    """Issue 9: the running friction of a seal grows with the chamber
+    """The running friction of a seal grows with the chamber
     pressure, F = F_0 + c p. While the output slides outwards slowly under a
     constant load F_L, A_n p = F_L + F_0 + c p, so p = (F_L + F_0) / (A_n - c)
     (by hand: (100 + 5) / (7.126e-5 - 1e-5) = 1.714 MPa, against 1.473 MPa

@@ -33,7 +33,7 @@ BASE = SizingInput(
 
 def constraint_values(s: SizingInput, R, A, v, t=None, A_f=None, g=None) -> dict:
     """The requirements of the GP evaluated with numpy, written out again by
-    hand. Issue 9: the whole force path is in series: two simply supported
+    hand. The whole force path is in series: two simply supported
     plates (end cap and base plate, Roark mean deflection, k = 192 pi D
     (1+nu) / ((7+nu) a^2)), the tie rods E A_f / L_f, the wide piston
     E_al A / t_p and the oil column. The plates add their Mindlin shear
@@ -86,7 +86,7 @@ def test_gp_solution_meets_every_requirement_with_its_margin():
 def test_gp_matches_brute_force_optimum_of_the_mass():
     """Cross-check: minimise mass alone and compare with a dense grid search
     over (R, A_w, v) using the numpy formulas."""
-    # issue 9: a rigid, massless structure (E and the allowable stress huge,
+    # a rigid, massless structure (E and the allowable stress huge,
     # density ~0) leaves the search of the first round over (R, A_w, v); the
     # wide piston's own compression E_al A / t_p stays in series.
     s = dataclasses.replace(BASE, natural_frequency=1.0, youngs_modulus=1e20, material_density=1e-9,
@@ -124,7 +124,7 @@ def test_gp_reuses_the_compiled_problem():
     back = sizer.solve(BASE)
     assert first.success and again.success
     assert back.ratio == pytest.approx(first.ratio, rel=1e-6)
-    # issue 9: with the force path in series both sit at the stroke's minimum R;
+    # with the force path in series both sit at the stroke's minimum R;
     # what the extra stacks change is the bore and the structure
     assert again.wide_area != pytest.approx(first.wide_area, rel=1e-3)
     assert convex.SOLVER in ("CLARABEL", "ECOS", "SCS")
@@ -184,7 +184,7 @@ def small_catalog():
 
 def test_small_solve_keeps_every_combination_and_names_reasons(seed_requirements, small_catalog):
     req, sha = seed_requirements
-    # issue 9: at the default duty (one full stroke per second) the amplifier's
+    # at the default duty (one full stroke per second) the amplifier's
     # continuous current n C_L 2 V f rules every piezohydraulic design out
     # (test_seed_solve_end_to_end); at 0.1 strokes per second some pass,
     # which is what this test needs to check ranking and Pareto.
@@ -266,7 +266,7 @@ def _check_bounded_and_valid(r):
 
 
 def test_seed_solve_end_to_end(tmp_path, seed_requirements):
-    """Acceptance (issues 6 and 9): exit 0, three files; every sized
+    """Acceptance: exit 0, three files; every sized
     piezohydraulic candidate carries its force path, thermal budget and seal
     friction; the blocked force is the stack stroke over the summed
     compliances over R (within 1 %, recomputed here from the force path);
@@ -333,8 +333,8 @@ def test_seed_solve_end_to_end(tmp_path, seed_requirements):
     assert r["requirements"]["stroke_m"] == pytest.approx(0.04)
     dc = [c for c in r["candidates"] if c["technology"] == "dc_motor"]
     assert dc and all("temperature" in c["margins"] for c in dc)
-    # issue 11: catalog actuators keep {"actuator": ID}; DC designs sized from
-    # parts carry motor, screw, gear, drive and a controller (CONTRACTS, second round)
+    # catalog actuators keep {"actuator": ID}; DC designs sized from
+    # parts carry motor, screw, gear, drive and a controller (docs/formats.md)
     catalog_dc = [c for c in dc if c["variant"] == "catalog"]
     assert catalog_dc and all(CONTRACT_KEYS <= set(c) and c["components"] == {"actuator": c["components"]["actuator"]}
                               for c in catalog_dc)
@@ -358,7 +358,7 @@ def test_seed_solve_end_to_end(tmp_path, seed_requirements):
     html = (out / "report.html").read_text()
     assert "EVERY uncompensated piezohydraulic design infeasible" in html
     # both technologies on one plot: the DC front, and the piezohydraulic designs (a front
-    # of their own only when one is feasible; at one stroke per second none is, issue 9)
+    # of their own only when one is feasible)
     assert "DC motor front (feasible)" in html and "piezohydraulic" in html
     piezo_feasible = any(c["feasible"] for c in r["candidates"] if c["technology"] == "piezohydraulic")
     assert ("piezohydraulic front (feasible)" in html) == piezo_feasible

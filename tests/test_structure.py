@@ -1,4 +1,4 @@
-"""Force path members (issue 9): circular plates (Roark), series springs,
+"""Force path members: circular plates (Roark), series springs,
 circle packing, seals at pressure. Every check is against a hand
 calculation or an independent numerical integration written here."""
 from __future__ import annotations
@@ -63,7 +63,7 @@ def test_simply_supported_edge_carries_no_moment():
 
 
 def test_reviewers_end_cap_figures():
-    """PHYSICS-NOTES second round: a 54 mm aluminium cap over a 340 mm bore is
+    """docs/models.md: a 54 mm aluminium cap over a 340 mm bore is
     3.9e9 N/m simply supported and 2.1e10 N/m clamped. By hand:
     D = 68.9e9 x 0.054^3 / (12 x (1 - 0.33^2)) = 1.0849e7 / 10.693 = 1.0146e6 N m;
     clamped k = 192 pi D / a^2 = 192 pi 1.0146e6 / 0.17^2 = 2.118e10 N/m;
@@ -124,7 +124,7 @@ def test_circle_packing_by_hand_geometry():
 
 
 def test_seal_friction_at_pressure_matches_the_review():
-    """PHYSICS-NOTES second round: at 3.1 MPa (the 1210 N case on the
+    """docs/models.md: at 3.1 MPa (the 1210 N case on the
     first-round best design, 340 mm bore, R 233) an FKM narrow seal runs
     about 99 N instead of 12 N, the wide seal about 1.5 kN instead of 187 N.
     By hand: narrow bore sqrt(0.34^2 / 233) = 22.27 mm, pi d = 0.0700 m;

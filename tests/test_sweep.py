@@ -1,4 +1,4 @@
-"""sizing sweep: a full solve per grid point (issue 13)."""
+"""sizing sweep: a full solve per grid point."""
 from __future__ import annotations
 
 import pytest
@@ -24,7 +24,7 @@ def seed_data():
     data = load_toml(STUDIES / "seed-requirements.toml")
     data["options"] = dict(FAST)
     # at one stroke per second the amplifier's continuous current fails every
-    # piezohydraulic design (issue 9); at 0.1 some are feasible, so "best" exists
+    # piezohydraulic design; at 0.1 some are feasible, so "best" exists
     data["duty"] = {"strokes_per_second": 0.1}
     return data
 

@@ -1,4 +1,4 @@
-"""The whole thermal budget (issue 9), against hand calculations from a
+"""The whole thermal budget, against hand calculations from a
 thermal expansion table and the reviewer's figures (PHYSICS-NOTES, second
 round)."""
 from __future__ import annotations

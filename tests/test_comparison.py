@@ -49,3 +49,15 @@ def test_what_would_flip_each_verdict():
     dc, ph = out["dc_motor"]["flip"], out["piezohydraulic"]["flip"]
     assert dc["what"] == "requirement speed" and dc["to"] == pytest.approx(0.125) and dc["relative_change"] == pytest.approx(0.25)
     assert ph["what"] == "requirement blocked_force" and ph["to"] == pytest.approx(2400.0) and ph["design"] == "ph-a"
+
+
+def test_the_recommendation_names_the_lighter_feasible_technology():
+    """Both feasible, DC at 2 kg and piezo at 150 kg: choose DC, 75 x lighter;
+    none feasible: no recommendation, only what blocks each."""
+    req, _ = load_requirements(STUDIES / "seed-requirements.toml")
+    cands = [_cand("dc", "dc_motor", True, {"speed": 0.1}, 2.0, 1),
+             _cand("ph", "piezohydraulic", True, {"stroke": 0.2}, 150.0, 2)]
+    text = technology_comparison(req, cands)["recommendation"]
+    assert text.startswith("Choose the DC motor actuator") and "75 x lighter" in text
+    none = [dict(c, feasible=False, margins={"speed": -0.1}, driver="speed") for c in cands]
+    assert technology_comparison(req, none)["recommendation"].startswith("No technology meets")

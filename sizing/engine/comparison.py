@@ -8,6 +8,8 @@ import math
 
 from .flip import flip
 
+LABELS = {"piezohydraulic": "piezohydraulic actuator", "dc_motor": "DC motor actuator"}
+
 OBJECTIVE_KEYS = {"mass": "mass_kg", "cost": "cost_usd", "volume": "volume_m3", "power": "power_W"}
 STAGE_ORDER = {"pruned": 0, "gp_failed": 0, "gp_infeasible": 1, "sized": 2, "simulated": 3}
 
@@ -96,15 +98,15 @@ def _recommendation(out: dict, keys: list[str]) -> str:
         return "No technology meets every requirement: see what blocks each and what would flip it."
     key = keys[0]
     tech, best = min(feasible.items(), key=lambda kv: kv[1]["metrics"].get(key) or math.inf)
-    text = f"Choose {tech.replace('_', ' ')}: {best['name']} ({_fmt(key, best['metrics'].get(key))})"
+    text = f"Choose the {LABELS.get(tech, tech)}: {best['name']} ({_fmt(key, best['metrics'].get(key))})"
     for other, entry in out.items():
         if other == tech:
             continue
         rival = entry if entry["feasible"] else entry.get("one_miss")
         if rival and rival["metrics"].get(key) and best["metrics"].get(key):
             ratio = rival["metrics"][key] / best["metrics"][key]
-            text += (f", {ratio:.3g} x lighter than the best {other.replace('_', ' ')} design" if key == "mass_kg"
-                     else f", {ratio:.3g} x better in {key.split('_')[0]} than the best {other.replace('_', ' ')} design")
+            text += (f", {ratio:.3g} x lighter than the best {LABELS.get(other, other)} design" if key == "mass_kg"
+                     else f", {ratio:.3g} x better in {key.split('_')[0]} than the best {LABELS.get(other, other)} design")
     deciding = best.get("deciding_assumed") or []
     if deciding:
         text += f"; its binding check rests on assumed {', '.join(deciding[:3])}"

@@ -195,6 +195,9 @@ def _dc_parts_line(counts: dict) -> str:
             f"static screen, {p['simulated']} verified by simulation)")
 
 
+TECH_LABELS = {"piezohydraulic": "piezohydraulic", "dc_motor": "DC motor"}
+
+
 def _answer(summary: dict) -> str:
     """The first section: per technology its best design, binding check,
     what it rests on and what would flip its verdict; what was ruled out."""
@@ -211,7 +214,7 @@ def _answer(summary: dict) -> str:
                  + (_e(", ".join(deciding)) if deciding else "none"))
         f = t.get("flip")
         flip = _e(f["text"]) if f else "none known"
-        rows.append(f"<tr><td class='l'><b>{_e(tech)}</b></td><td class='l'>{'feasible' if t.get('feasible') else 'infeasible'}"
+        rows.append(f"<tr><td class='l'><b>{_e(TECH_LABELS.get(tech, tech))}</b></td><td class='l'>{'feasible' if t.get('feasible') else 'infeasible'}"
                     f"</td><td class='l' title='{_e(t.get('best'))}'>{_e(t.get('name') or t.get('best'))}<br>{_e(metrics)}</td>"
                     f"<td class='l'>{binding}</td>"
                     f"<td class='l'>{rests}</td><td class='l'>{flip}</td></tr>")

@@ -1,5 +1,6 @@
-"""report.html in headless Chromium: the plots render, the console stays
-clean and the page makes no network request (plotly.js is embedded).
+"""The pages in headless Chromium: the plots render, the console stays
+clean, no page is wider than the window and none makes a network request
+(plotly.js is the output folder's own plotly.min.js).
 
 The browser is driven over the DevTools protocol on a pipe
 (--remote-debugging-pipe: commands on fd 3, replies on fd 4, each message
@@ -154,3 +155,70 @@ def test_report_renders_offline_without_console_errors(report_file, tmp_path):
     external = [u for u in requests if not u.startswith(("file:", "data:", "about:", "blob:"))]
     assert not external, external
     assert any(u.startswith("file:") for u in requests)     # the network domain did see the page itself
+
+
+def _page_errors(dt, session) -> list[dict]:
+    mine = [e for e in dt.events if e.get("sessionId") == session]
+    return [e for e in mine if e.get("method") == "Runtime.exceptionThrown"
+            or (e.get("method") == "Runtime.consoleAPICalled" and e["params"]["type"] in ("error", "assert"))
+            or (e.get("method") == "Log.entryAdded" and e["params"]["entry"]["level"] == "error")]
+
+
+def _open_page(dt, path):
+    """Open ``path`` in a new tab; returns its session, the plots drawn
+    (svg count per plot div) and whether the page is wider than the window."""
+    target = dt.send("Target.createTarget", {"url": "about:blank"})["targetId"]
+    session = dt.send("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
+    for domain in ("Page", "Runtime", "Log"):
+        dt.send(f"{domain}.enable", session=session)
+    dt.send("Page.navigate", {"url": path.as_uri()}, session=session)
+    dt.wait_for("Page.loadEventFired")
+    expr = "Array.from(document.querySelectorAll('.plotly-graph-div')).map(d => d.querySelectorAll('svg.main-svg').length)"
+    counts = []
+    for _ in range(50):      # plotly draws right after load; allow it a moment
+        counts = dt.send("Runtime.evaluate", {"expression": expr, "returnByValue": True}, session=session)["result"]["value"]
+        if counts and all(n > 0 for n in counts):
+            break
+        time.sleep(0.1)
+    wide = dt.send("Runtime.evaluate", {"expression": "document.documentElement.scrollWidth > window.innerWidth + 1",
+                                        "returnByValue": True}, session=session)["result"]["value"]
+    return session, counts, wide
+
+
+def _pages(tmp_path) -> dict:
+    """One page of each kind, written by its own command into its own folder."""
+    from .conftest import FAST_REQUIREMENTS, run_cli
+    req = tmp_path / "req.toml"
+    req.write_text(FAST_REQUIREMENTS.replace("max_stacks = 2", "max_stacks = 12").replace("max_simulated = 2", "max_simulated = 4"))
+    camp = STUDIES / "campaigns" / "dc-motor"
+    runs = sorted(str(p) for p in (camp / "runs").glob("*.csv"))
+    commands = {
+        "robust": ("robust", req, "--samples", "4", "--designs", "1", "--workers", "0", "--out", tmp_path / "robust"),
+        "sweep": ("sweep", req, "--vary", "stroke=35mm..40mm:2", "--workers", "0", "--out", tmp_path / "sweep"),
+        "diagnose": ("diagnose", camp, "--holdout", "steps_b", "--out", tmp_path / "diagnose"),
+        "fit": ("fit", "dc-motor", *runs, "--rig", camp / "rig.toml", "--out", tmp_path / "fit" / "fit.toml"),
+    }
+    pages = {"robust": tmp_path / "robust" / "robust.html", "sweep": tmp_path / "sweep" / "sweep.html",
+             "diagnose": tmp_path / "diagnose" / "diagnosis.html", "fit": tmp_path / "fit" / "fit.html"}
+    for kind, args in commands.items():
+        code, _, err = run_cli(*args, "--quiet") if kind in ("robust", "sweep") else run_cli(*args)
+        assert code == 0, (kind, err)
+    return pages
+
+
+@pytest.mark.skipif(CHROMIUM is None, reason="chromium is not installed")
+def test_every_page_type_draws_without_errors_or_overflow(tmp_path):
+    """robust, sweep, diagnose and fit pages: each loads its folder's
+    plotly.min.js, draws every plot, logs no error and is no wider than the
+    window."""
+    pages = _pages(tmp_path)
+    dt = DevTools(tmp_path / "profile")
+    try:
+        for kind, path in pages.items():
+            assert (path.parent / PLOTLY_FILE).exists(), kind
+            session, counts, wide = _open_page(dt, path)
+            assert counts and all(n > 0 for n in counts), (kind, counts)
+            assert not _page_errors(dt, session), (kind, _page_errors(dt, session))
+            assert not wide, f"{kind} page is wider than the window"
+    finally:
+        dt.close()

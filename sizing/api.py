@@ -33,7 +33,7 @@ def evaluate(design_path: str | Path, catalog_dir: str | Path | None = None) -> 
 
 def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-out",
           catalog_dir: str | Path | None = None, baseline: str | Path | None = None,
-          progress=None, detail: str = "summary") -> dict:
+          progress=None, detail: str = "summary", robust: str | Path | None = None) -> dict:
     """Size, verify and rank designs for a requirements file (docs/formats.md).
 
     Writes results.json, candidates.csv and report.html into ``out_dir``
@@ -43,6 +43,8 @@ def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-ou
     ``progress(stage, done, total)`` is called while candidates are sized and
     simulated. ``detail``: "summary" counts the combinations ruled out before
     sizing by reason (``summary.ruled_out``); "full" also records each one.
+    ``robust``: a robust.json of these requirements; each design it studied
+    gets its probability of compliance (``p_compliance``, ``p_ci95``).
     Raises InputError for bad input before writing anything.
     """
     import json
@@ -53,19 +55,22 @@ def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-ou
     from .report.csv_table import candidates_csv
     from .report.html import render
 
-    inputs = [requirements_path, catalog_dir, baseline]
+    inputs = [requirements_path, catalog_dir, baseline, robust]
     if out_dir is not None:
         check_folder(out_dir, SOLVE_OUTPUTS, inputs=inputs)
     req, sha = load_requirements(requirements_path)
     cat = load_catalog(catalog_dir)
     check_solve_steps(req, cat, str(requirements_path))
     old = _load_baseline(baseline) if baseline is not None else None
+    studied = _load_robust(robust) if robust is not None else None
     if detail not in ("summary", "full"):
         from .errors import InputError
         raise InputError(None, "--detail", f'expected "summary" or "full", got {detail!r}')
     output = run(req, sha, cat, progress=progress, detail=detail)
     results = output.results
     results["catalog_dir"] = str(cat.folder.resolve())
+    if studied is not None:
+        _attach_compliance(results, studied)
     if old is not None:
         results["changes"], results["changes_summary"] = _rank_changes(old, results, baseline, cat.folder)
         results["baseline_sha256"] = old.get("requirements_sha256")
@@ -164,6 +169,37 @@ def check_envelope(req, cat: Catalog, file: str) -> None:
             raise InputError(file, f"[envelope].{field}",
                              f"expected room for at least one stack: the smallest stack {what} is "
                              f"{need * 1e3:g} mm, the envelope gives {limit * 1e3:g} mm")
+
+
+def _load_robust(path: str | Path) -> dict[str, dict]:
+    """{design id: its robust.json entry} of a robust.json (exit 2 when it is not one)."""
+    import json
+
+    from .errors import InputError
+    from .io.schema import read_input_bytes
+    path = Path(path)
+    try:
+        data = json.loads(read_input_bytes(path, "a robust.json").decode("utf-8"))
+    except (json.JSONDecodeError, UnicodeDecodeError, RecursionError) as exc:
+        raise InputError(str(path), None, f"expected a robust.json written by sizing robust ({exc})") from None
+    designs = data.get("designs") if isinstance(data, dict) else None
+    if not isinstance(designs, list) or not all(isinstance(d, dict) and "id" in d and "p_compliance" in d
+                                                for d in designs):
+        raise InputError(str(path), "designs", "expected a robust.json with designs and their p_compliance")
+    return {d["id"]: d for d in designs}
+
+
+def _attach_compliance(results: dict, studied: dict[str, dict]) -> None:
+    """Each studied candidate, and each technology's best, carries its
+    probability of compliance under tolerances and its 95 % interval."""
+    for c in results["candidates"]:
+        if c["id"] in studied:
+            c["p_compliance"] = studied[c["id"]]["p_compliance"]
+            c["p_ci95"] = studied[c["id"]].get("p_ci95")
+    for tech in results["summary"]["comparison"]["technologies"].values():
+        entry = studied.get(tech["best"])
+        if entry is not None:
+            tech["p_compliance"], tech["p_ci95"] = entry["p_compliance"], entry.get("p_ci95")
 
 
 def _load_baseline(path: str | Path) -> dict:

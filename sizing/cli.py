@@ -108,13 +108,16 @@ def solve(requirements: Path = typer.Argument(..., help="requirements.toml (docs
           catalog: Optional[Path] = CatalogOpt,
           baseline: Optional[Path] = typer.Option(None, "--baseline", help="An earlier results.json: report what changed."),
           quiet: bool = typer.Option(False, "--quiet", help="No progress bar and no summary."),
+          robust: Optional[Path] = typer.Option(None, "--robust",
+                                                help="A robust.json of these requirements: the report gives each "
+                                                     "studied design's probability of compliance."),
           detail: str = typer.Option("summary", "--detail",
                                      help="summary: combinations ruled out before sizing counted by reason; "
                                           "full: a record of each in results.json."),
           max_steps: Optional[float] = MaxStepsOpt):
     """Size, verify by simulation and rank every design for the requirements."""
     with use_limits(steps=max_steps):
-        results = _solve(requirements, out, catalog, baseline, quiet, detail)
+        results = _solve(requirements, out, catalog, baseline, quiet, detail, robust)
     if not quiet:
         if results.get("changes_summary"):
             typer.echo(f"what changed: {results['changes_summary']['text']}")
@@ -129,10 +132,11 @@ def solve(requirements: Path = typer.Argument(..., help="requirements.toml (docs
                    f"({results['runtime_s']:.1f} s)")
 
 
-def _solve(requirements, out, catalog, baseline, quiet, detail="summary") -> dict:
+def _solve(requirements, out, catalog, baseline, quiet, detail="summary", robust=None) -> dict:
     with _StageBars(quiet) as bars:          # the same bars as robust and sweep (below)
         return api.solve(requirements, out, catalog, baseline,
-                         progress=lambda stage, done, total: bars(f"{stage} candidates", done, total), detail=detail)
+                         progress=lambda stage, done, total: bars(f"{stage} candidates", done, total), detail=detail,
+                         robust=robust)
 
 
 @catalog_app.command("list")

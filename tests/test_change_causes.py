@@ -40,3 +40,36 @@ def test_baseline_run_prints_the_cause_first(tmp_path):
     assert code == 0, err
     first = out.strip().splitlines()[0]
     assert first.startswith("what changed: 1 requirement value changed (duty.strokes_per_second 1 -> 0.1)"), first
+
+
+def test_solve_with_robust_gives_the_probability_of_compliance(tmp_path):
+    """sizing robust, then sizing solve --robust robust.json: the studied
+    best design carries its p_compliance in results.json and the report."""
+    import json
+    req = tmp_path / "req.toml"
+    req.write_text(FAST_REQUIREMENTS.replace("max_stacks = 2", "max_stacks = 12").replace("max_simulated = 2", "max_simulated = 4"))
+    code, _, err = run_cli("robust", req, "--samples", "4", "--designs", "2", "--workers", "0", "--out",
+                           tmp_path / "rob", "--quiet")
+    assert code == 0, err
+    studied = json.loads((tmp_path / "rob" / "robust.json").read_text())["designs"]
+    code, _, err = run_cli("solve", req, "--out", tmp_path / "out", "--robust", tmp_path / "rob" / "robust.json", "--quiet")
+    assert code == 0, err
+    r = json.loads((tmp_path / "out" / "results.json").read_text())
+    by_id = {c["id"]: c for c in r["candidates"]}
+    for d in studied:
+        assert by_id[d["id"]]["p_compliance"] == d["p_compliance"]
+    tech = r["summary"]["comparison"]["technologies"]["piezohydraulic"]
+    studied_ids = {d["id"] for d in studied}
+    assert ("p_compliance" in tech) == (tech["best"] in studied_ids)
+    # the answer section shows it where known
+    from sizing.report.html import _answer
+    summary = {"comparison": {"technologies": {"dc_motor": dict(
+        best="dc-x", name="DC X", feasible=True, metrics={"mass_kg": 1.5}, binding="temperature",
+        binding_margin=0.01, rests_on_assumed=[], deciding_assumed=[], flip=None, p_compliance=0.45,
+        p_ci95=[0.41, 0.49])}}}
+    assert "complies in 45% [41%, 49%] of robust samples" in _answer(summary)
+    bad = tmp_path / "bad.json"
+    bad.write_text('{"designs": 3}')
+    code, _, err = run_cli("solve", req, "--out", tmp_path / "out2", "--robust", bad, "--quiet")
+    assert code == 2 and "bad.json" in err and len(err.strip().splitlines()) == 1
+    assert not (tmp_path / "out2").exists()

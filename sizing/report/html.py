@@ -209,6 +209,10 @@ def _answer(summary: dict) -> str:
         metrics = ", ".join(_objective_text(k, v) for k, v in t.get("metrics", {}).items())
         margin = t.get("binding_margin")
         binding = f"{_e(t.get('binding'))} ({margin:+.1%})" if margin is not None else _e(t.get("binding"))
+        if t.get("p_compliance") is not None:
+            lo, hi = t.get("p_ci95") or (None, None)
+            interval = f" [{lo:.0%}, {hi:.0%}]" if lo is not None else ""
+            binding += f"<br>complies in {t['p_compliance']:.0%}{interval} of robust samples"
         deciding = t.get("deciding_assumed") or []
         rests = (f"{len(t.get('rests_on_assumed') or [])} assumed values; in its binding margin: "
                  + (_e(", ".join(deciding)) if deciding else "none"))

@@ -6,6 +6,7 @@ from pathlib import Path
 
 from .io.catalog import Catalog, load_catalog
 from .io.design import PiezoDesignFile, load_design
+from .report.bundle import PLOTLY_FILE       # a constant; the bundle itself loads only when written
 
 
 def catalog(folder: str | Path | None = None) -> Catalog:
@@ -86,10 +87,6 @@ def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-ou
 
 # What ``solve --out DIR`` holds (check_folder needs it before any work).
 # plotly.js once per output folder, beside the pages that use it (report/bundle.py)
-
-from .report.bundle import PLOTLY_FILE  # noqa: E402  (a constant; the bundle loads only when written)
-
-
 def plotly_js() -> str:
     """The folder's plotly bundle (report/bundle.py), made only when written."""
     from .report.bundle import plotly_js as bundle
@@ -171,17 +168,23 @@ def check_envelope(req, cat: Catalog, file: str) -> None:
                              f"{need * 1e3:g} mm, the envelope gives {limit * 1e3:g} mm")
 
 
-def _load_robust(path: str | Path) -> dict[str, dict]:
-    """{design id: its robust.json entry} of a robust.json (exit 2 when it is not one)."""
+def _read_json(path: Path, what: str, writer: str):
+    """A JSON file a command wrote (exit 2, one line, when it is not JSON)."""
     import json
 
     from .errors import InputError
     from .io.schema import read_input_bytes
-    path = Path(path)
     try:
-        data = json.loads(read_input_bytes(path, "a robust.json").decode("utf-8"))
+        return json.loads(read_input_bytes(path, f"a {what}").decode("utf-8"))
     except (json.JSONDecodeError, UnicodeDecodeError, RecursionError) as exc:
-        raise InputError(str(path), None, f"expected a robust.json written by sizing robust ({exc})") from None
+        raise InputError(str(path), None, f"expected a {what} written by {writer} ({exc})") from None
+
+
+def _load_robust(path: str | Path) -> dict[str, dict]:
+    """{design id: its robust.json entry} of a robust.json (exit 2 when it is not one)."""
+    from .errors import InputError
+    path = Path(path)
+    data = _read_json(path, "robust.json", "sizing robust")
     designs = data.get("designs") if isinstance(data, dict) else None
     if not isinstance(designs, list) or not all(isinstance(d, dict) and "id" in d and "p_compliance" in d
                                                 for d in designs):
@@ -203,15 +206,9 @@ def _attach_compliance(results: dict, studied: dict[str, dict]) -> None:
 
 
 def _load_baseline(path: str | Path) -> dict:
-    import json
-
     from .errors import InputError
-    from .io.schema import read_input_bytes
     path = Path(path)
-    try:
-        data = json.loads(read_input_bytes(path, "a results.json").decode("utf-8"))
-    except (json.JSONDecodeError, UnicodeDecodeError, RecursionError) as exc:
-        raise InputError(str(path), None, f"expected a results.json written by sizing solve ({exc})") from None
+    data = _read_json(path, "results.json", "sizing solve")
     if not isinstance(data, dict) or not isinstance(data.get("candidates"), list):
         raise InputError(str(path), "candidates", "expected a results.json with a list of candidates")
     return data

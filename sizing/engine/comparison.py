@@ -60,7 +60,7 @@ def technology_comparison(req, candidates: list[dict], catalog=None) -> dict:
         if near is not None:
             out[tech]["one_miss"] = {"id": near["id"], "misses": near["driver"],
                                      "metrics": {k: near["metrics"].get(k) for k in keys}}
-        figures = ", ".join(_fmt(k, best["metrics"].get(k)) for k in keys)
+        figures = ", ".join(format_metric(k, best["metrics"].get(k)) for k in keys)
         if ok:
             lines.append(f"{label}: best {best.get('name', best['id'])} ({figures}); binding check {best['driver']} "
                          f"(margin {m:+.1%})")
@@ -69,7 +69,7 @@ def technology_comparison(req, candidates: list[dict], catalog=None) -> dict:
                          f"misses {best['driver']} by {_miss(m)}")
             if near is not None:
                 lines.append(f"the best {label} design that misses only one check, {near.get('name', near['id'])} "
-                             f"({', '.join(_fmt(k, near['metrics'].get(k)) for k in keys)}), misses "
+                             f"({', '.join(format_metric(k, near['metrics'].get(k)) for k in keys)}), misses "
                              f"{near['driver']}")
     for tech, label in (("piezohydraulic", "piezohydraulic"), ("dc_motor", "DC motor")):
         if tech in out:
@@ -98,7 +98,7 @@ def _recommendation(out: dict, keys: list[str]) -> str:
         return "No technology meets every requirement: see what blocks each and what would flip it."
     key = keys[0]
     tech, best = min(feasible.items(), key=lambda kv: kv[1]["metrics"].get(key) or math.inf)
-    text = f"Choose the {LABELS.get(tech, tech)}: {best['name']} ({_fmt(key, best['metrics'].get(key))})"
+    text = f"Choose the {LABELS.get(tech, tech)}: {best['name']} ({format_metric(key, best['metrics'].get(key))})"
     for other, entry in out.items():
         if other == tech:
             continue
@@ -130,7 +130,8 @@ def _flip_text(f) -> str:
     return f"what would flip its verdict: {f['text']}"
 
 
-def _fmt(key, value) -> str:
+def format_metric(key, value) -> str:
+    """An objective with its unit, as people read it (whole dollars)."""
     if value is None or not math.isfinite(value):
         return f"{key}: n/a"
     unit = {"mass_kg": "kg", "cost_usd": "USD", "volume_m3": "m^3", "power_W": "W"}[key]

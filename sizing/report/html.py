@@ -5,6 +5,7 @@ from __future__ import annotations
 import html
 from collections import Counter
 
+from ..engine.comparison import format_metric
 from .bundle import plotly_tag
 
 from .figures import MARGIN_ORDER, comparison_figure, pareto_figure, traces_figure
@@ -206,7 +207,7 @@ def _answer(summary: dict) -> str:
         return ""
     rows = []
     for tech, t in techs.items():
-        metrics = ", ".join(_objective_text(k, v) for k, v in t.get("metrics", {}).items())
+        metrics = ", ".join(format_metric(k, v) for k, v in t.get("metrics", {}).items())
         margin = t.get("binding_margin")
         binding = f"{_e(t.get('binding'))} ({margin:+.1%})" if margin is not None else _e(t.get("binding"))
         if t.get("p_compliance") is not None:
@@ -239,13 +240,6 @@ def _names(cands: list[dict], ids: list[str]) -> list[str]:
     """Short names of the candidates ``ids``, in order (the id where none)."""
     by_id = {c["id"]: c.get("name", c["id"]) for c in cands}
     return [by_id.get(i, i) for i in ids]
-
-
-def _objective_text(key: str, value) -> str:
-    if value is None:
-        return f"{key}: n/a"
-    unit = {"mass_kg": "kg", "cost_usd": "USD", "volume_m3": "m^3", "power_W": "W"}.get(key, "")
-    return (f"{value:,.0f} {unit}" if key == "cost_usd" else f"{value:.4g} {unit}").strip()
 
 
 def render(results: dict, traces: list[dict]) -> str:

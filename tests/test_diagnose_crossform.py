@@ -158,7 +158,7 @@ def test_a_seal_masked_by_a_large_delay_is_named_with_it(tmp_path):
     """A 12 ms Pade delay over a LuGre output seal (2 N running, 3.3 N
     breakaway) on four stacks. Against the nominal the delay screens first
     and the seal below the top three families, so the pairs of the top
-    families never held it (the fourth blind set's pz-h4-seal+pade: the
+    families never held it (the fourth held-out set's pz-h4-seal+pade: the
     delay alone, partial). Screened again with the delay held at its fit,
     the seal ranks first and the pair is named."""
     from benchmarks.crossform import piezo

@@ -3,7 +3,7 @@
 Takes the campaign's own excitations (the treated inputs) and rig,
 simulates "measured" runs with each library effect injected at each of its
 two realistic sizes (and null runs with no effect), with the noise level
-estimated from the campaign, diagnoses each blind, and tabulates the
+estimated from the campaign, diagnoses each without being told which, and tabulates the
 confusion matrix: true effect (rows) against the verdict (columns; "none"
 for a null verdict). It tells whether a test campaign can tell the effects
 apart before anyone trusts a verdict on real data.

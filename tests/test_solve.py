@@ -10,7 +10,6 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from sizing import api
-from sizing.engine import convex
 from sizing.engine.convex import GPSizer, SizingInput
 from sizing.engine.rank import dominates, nondominated_levels, pareto_mask, rank_order, verdict
 from sizing.engine.solve import solve
@@ -117,17 +116,34 @@ def test_gp_names_the_binding_requirement_when_infeasible():
     assert not res.success and res.driver == "drive_current"
 
 
-def test_gp_reuses_the_compiled_problem():
+def test_gp_reuses_the_compiled_problem(monkeypatch):
+    """A second and third solve with other parameters reuse the problem the
+    first one compiled: cvxpy builds no new solving chain and keeps the same
+    parametrised program (a sizer that rebuilt its problem per solve would
+    fail both)."""
+    import cvxpy as cp
+
     sizer = GPSizer()
     first = sizer.solve(BASE)
+    problem, compiled = sizer.problem, sizer.problem._cache.param_prog
+    assert compiled is not None
+    chains = []
+    build = cp.Problem._construct_chain
+
+    def counted(self, *args, **kwargs):
+        chains.append(self)
+        return build(self, *args, **kwargs)
+
+    monkeypatch.setattr(cp.Problem, "_construct_chain", counted)
     again = sizer.solve(dataclasses.replace(BASE, n_stiffness=12 * 4.33e8, n_capacitance=12 * 31e-6))
     back = sizer.solve(BASE)
     assert first.success and again.success
+    assert chains == []
+    assert sizer.problem is problem and problem._cache.param_prog is compiled
     assert back.ratio == pytest.approx(first.ratio, rel=1e-6)
     # with the force path in series both sit at the stroke's minimum R;
     # what the extra stacks change is the bore and the structure
     assert again.wide_area != pytest.approx(first.wide_area, rel=1e-3)
-    assert convex.SOLVER in ("CLARABEL", "ECOS", "SCS")
 
 
 objective_rows = st.lists(st.tuples(st.integers(0, 20), st.integers(0, 20)), min_size=1, max_size=40)
@@ -365,6 +381,16 @@ def test_seed_solve_end_to_end(tmp_path, seed_requirements):
     # plotly.js once per folder, beside the page, never from a CDN; the page itself stays small
     assert "<script type='text/javascript' src='plotly.min.js'" in html and "http" not in html.split("<body>")[0]
     assert len(html.encode()) < 1.5e6 and (out / "plotly.min.js").stat().st_size > 1e6
+    # results.json sized for people: designs far from compliance counted by reason, not recorded
+    assert (out / "results.json").stat().st_size < 5e6
+    far = {k: n for k, n in r["summary"]["ruled_out"].items() if k.startswith("simulated: misses")}
+    assert far and all(n > 0 for n in far.values())
+    assert all(c["feasible"] or c["margins"][c["driver"]] >= -0.5 or c["stage"] != "simulated"
+               or c["id"] in {t.get("best") for t in r["summary"]["comparison"]["technologies"].values()}
+               | {(t.get("one_miss") or {}).get("id") for t in r["summary"]["comparison"]["technologies"].values()}
+               | {(t.get("flip") or {}).get("design") for t in r["summary"]["comparison"]["technologies"].values()}
+               | {g.get(k) for g in r["summary"]["groups"] for k in ("best", "closest")}
+               for c in r["candidates"])
     assert "Plotly.newPlot" in html and r["catalog_sha256"] in html and r["requirements_sha256"] in html
     header = (out / "candidates.csv").read_text().splitlines()[0]
     assert header.startswith("rank,id,technology")

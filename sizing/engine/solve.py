@@ -237,31 +237,50 @@ def _temperatures(combo: Combo) -> dict:
 
 UNVERIFIED = ("sized", "gp_infeasible")
 UNVERIFIED_REASON = "not simulated: misses a static check"
+# a simulated design that misses a check by more than this (margin -0.5: it
+# delivers half of what is asked, or needs twice what is allowed) is far from
+# any design an engineer would adjust into compliance: counted, not recorded
+FAR_MISS = -0.5
+FAR_MISS_REASON = "simulated: misses {} by more than 50 %"
+
+
+def _dropped_reason(c: dict, named: set) -> str | None:
+    """Why a candidate's record is left out of the default results.json
+    (None: it is kept)."""
+    if c["feasible"] or c["id"] in named:
+        return None
+    if c.get("stage") in UNVERIFIED:
+        return UNVERIFIED_REASON
+    worst = c["margins"].get(c["driver"]) if c.get("driver") else None
+    if worst is not None and worst < FAR_MISS:
+        return FAR_MISS_REASON.format(c["driver"])
+    return None
 
 
 def _keep_verified(results: dict) -> None:
-    """Keep the records of the designs verified by simulation and of those the
-    summary names (each group's best and closest, each technology's best and
-    one-miss design, the design that flips its verdict); count the other
-    statically infeasible designs by reason instead (``--detail full`` keeps
-    them). Ranks stay contiguous."""
+    """Keep the records of the designs that comply or come near (no check
+    missed by more than 50 %) and of those the summary names (each group's
+    best and closest, each technology's best and one-miss design, the design
+    that flips its verdict); count the others by reason instead (``--detail
+    full`` keeps them). Ranks stay contiguous."""
     summary = results["summary"]
     named = {g.get(k) for g in summary["groups"] for k in ("best", "closest")}
     for t in summary["comparison"]["technologies"].values():
         named |= {t.get("best"), (t.get("one_miss") or {}).get("id"), (t.get("flip") or {}).get("design")}
     kept, dropped = [], Counter()
     for c in results["candidates"]:
-        if c.get("stage") in UNVERIFIED and not c["feasible"] and c["id"] not in named:
-            dropped[c["technology"]] += 1
-        else:
+        why = _dropped_reason(c, named)
+        if why is None:
             kept.append(c)
+        else:
+            dropped[(c["technology"], why)] += 1
     for rank, c in enumerate(kept, start=1):
         c["rank"] = rank
     results["candidates"] = kept
-    for tech, n in dropped.items():
-        summary["ruled_out"][UNVERIFIED_REASON] = summary["ruled_out"].get(UNVERIFIED_REASON, 0) + n
+    for (tech, why), n in dropped.items():
+        summary["ruled_out"][why] = summary["ruled_out"].get(why, 0) + n
         by_tech = summary["ruled_out_by_technology"].setdefault(tech, {})
-        by_tech[UNVERIFIED_REASON] = by_tech.get(UNVERIFIED_REASON, 0) + n
+        by_tech[why] = by_tech.get(why, 0) + n
 
 
 def _pruned_reason(combo: Combo) -> str:

@@ -10,6 +10,7 @@ are not counted; every request of the report's own session is.
 """
 from __future__ import annotations
 
+import base64
 import fcntl
 import json
 import os
@@ -17,6 +18,7 @@ import select
 import shutil
 import subprocess
 import time
+from pathlib import Path
 
 import pytest
 
@@ -29,6 +31,18 @@ from sizing.report.html import render
 from .conftest import CATALOGS, STUDIES
 
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
+# where the first screen of each page is kept as a PNG for people to look at
+# (CI keeps the folder as the run's artefact)
+ARTIFACTS = Path(os.environ.get("SIZING_TEST_ARTIFACTS", Path(__file__).resolve().parents[1] / "test-artifacts"))
+
+
+def _screenshot(dt, session, name: str) -> Path:
+    """The page's first screen, as the reader sees it on opening it."""
+    png = base64.b64decode(dt.send("Page.captureScreenshot", {"format": "png"}, session=session)["data"])
+    ARTIFACTS.mkdir(parents=True, exist_ok=True)
+    path = ARTIFACTS / f"{name}.png"
+    path.write_bytes(png)
+    return path
 
 
 def _pipe_fds(read_fd, write_fd):
@@ -139,9 +153,14 @@ def test_report_renders_offline_without_console_errors(report_file, tmp_path):
             time.sleep(0.1)
         title = dt.send("Runtime.evaluate", {"expression": "document.title", "returnByValue": True},
                         session=session)["result"]["value"]
+        wide = dt.send("Runtime.evaluate", {"expression": "document.documentElement.scrollWidth > window.innerWidth + 1",
+                                            "returnByValue": True}, session=session)["result"]["value"]
+        shot = _screenshot(dt, session, "solve")
     finally:
         dt.close()
     assert title == "sizing report"
+    assert not wide, "the report is wider than the window"
+    assert shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and shot.stat().st_size > 10_000
     # every figure the file defines is drawn (Pareto front, traces, piezo vs DC, and the
     # force-path and thermal-budget figures)
     expected = report_file.read_text().count("Plotly.newPlot(")
@@ -220,5 +239,6 @@ def test_every_page_type_draws_without_errors_or_overflow(tmp_path):
             assert counts and all(n > 0 for n in counts), (kind, counts)
             assert not _page_errors(dt, session), (kind, _page_errors(dt, session))
             assert not wide, f"{kind} page is wider than the window"
+            assert _screenshot(dt, session, kind).stat().st_size > 10_000, kind
     finally:
         dt.close()

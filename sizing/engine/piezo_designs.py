@@ -6,7 +6,7 @@ the hysteresis time scale."""
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from functools import lru_cache
 
 import numpy as np
@@ -21,6 +21,7 @@ from .convex import GPSizer, SizingInput
 from .evaluate import load_cases
 from .piezo import Candidates, part_row, reference_bouc_wen, stack_bouc_wen, structure_row
 from .rank import ceiling_margin, floor_margin
+from .records import PiezoDesign, Variant, frozen
 from .search import Combo, temperature_margin
 from .convex import DEFAULT_MAX_MASS, NO_LIMIT
 from .verify import (GAP_CLEARANCE_M, GAP_TOLERANCE_M, STACK_SPACING_M, drive_figures, metrics, ramp_time,
@@ -32,29 +33,6 @@ MAX_SPACER_M = 0.5          # longest passive-compensation spacer considered
 def _progress(callback, stage, done, total):
     if callback is not None:
         callback(stage, done, total)
-
-
-@dataclass
-class Variant:
-    """One way to build a combination: structure material and thermal
-    compensation (None: as built; "passive": a low-expansion spacer that
-    cancels the thermal budget; a catalog compensator)."""
-
-    material: object
-    compensator: object = None
-    passive: bool = False
-
-    @property
-    def name(self) -> str:
-        if self.compensator is not None:
-            return "compensated"
-        return "passive" if self.passive else "uncompensated"
-
-    def suffix(self) -> str:
-        tail = f"-{self.material.id}"
-        if self.compensator is not None:
-            return tail + f"-tc-{self.compensator.id}"
-        return tail + ("-pc" if self.passive else "")
 
 
 def effective_gap(req: RequirementsFile, stack_free_stroke: float) -> float:
@@ -164,71 +142,68 @@ def _resized(req, c: Combo, res, old, new):
     return replace(res, cap_thickness=t, frame_area=area)
 
 
-def designs(req, catalog, sized) -> list[dict]:
+def designs(req, catalog, sized) -> list[PiezoDesign]:
     """Build the sized designs with the same code as ``sizing evaluate``;
-    then, for as-built designs that drift, the passive variant."""
+    then, for as-built designs that drift, the passive variant. ``sized``:
+    (Combo, Variant, SizingResult) triples; each design's ``origin`` is its
+    triple's index (a passive design's, its parent's)."""
     reference = reference_bouc_wen(catalog.stacks)
     spacer = force_path.spacer_material(catalog.materials)
-    designs = []
-    for combo, var, res in sized:
-        d = {"combo": combo, "variant": var, "gp": res, "gp_success": res.success, "index": None, "simulated": None,
-             "spacer": 0.0, "id": combo.key + var.suffix()}
-        if math.isfinite(res.ratio) and math.isfinite(res.wide_area):
-            d["bw"] = stack_bouc_wen(combo.stack, reference)
-        designs.append(d)
-    _build(req, [d for d in designs if "bw" in d], spacer)
+    pending = [PiezoDesign(origin=i, id=combo.key + var.suffix(), combo=combo, variant=var, gp=res,
+                           bouc_wen=(stack_bouc_wen(combo.stack, reference)
+                                     if math.isfinite(res.ratio) and math.isfinite(res.wide_area) else None))
+               for i, (combo, var, res) in enumerate(sized)]
+    buildable = [d for d in pending if d.bouc_wen is not None]
+    built = dict(zip((d.origin for d in buildable), _build(req, buildable, spacer)))
+    as_built = [built.get(d.origin, d) for d in pending]
     passive = []
-    for d in designs:
-        if d.get("static") is None or d["variant"].compensator is not None:
+    for d in as_built:
+        if not d.built or d.variant.compensator is not None:
             continue
         length = _spacer_length(req, d, spacer)
         if length > 0:
-            var = Variant(d["variant"].material, None, True)
-            passive.append(dict(d, variant=var, spacer=length, simulated=None, static=None,
-                                id=d["combo"].key + var.suffix()))
-    _build(req, passive, spacer)
-    return designs + passive
+            var = Variant(d.variant.material, None, True)
+            passive.append(replace(d, variant=var, spacer=length, id=d.combo.key + var.suffix()))
+    return as_built + _build(req, passive, spacer)
 
 
-def _spacer_length(req, d, spacer) -> float:
+def _spacer_length(req, d: PiezoDesign, spacer) -> float:
     """Low-expansion spacer in the stack column (the frame longer by as
     much) that brings the as-built thermal budget to zero: net / (R
     (alpha_frame - alpha_spacer) dT). 0 when the design does not drift
     beyond the allowance, drifts the other way, or the frame material
     expands no more than the spacer."""
-    st = d["static"]
+    st = d.static
     net = st["thermal_net_m"]
     allowed = req.options.max_drift_fraction * req.requirements.stroke
     dT = req.requirements.max_temperature - req.options.drift_reference_temperature
-    d_alpha = d["variant"].material.thermal_expansion - spacer.thermal_expansion
+    d_alpha = d.variant.material.thermal_expansion - spacer.thermal_expansion
     if abs(net) <= allowed or net <= 0 or d_alpha <= 0 or dT <= 0:
         return 0.0
     length = net / (st["ratio"] * d_alpha * dT)
     return length if length < MAX_SPACER_M else 0.0
 
 
-def _build(req, designs, spacer) -> None:
-    """Candidate rows, static figures, metrics and static margins of the designs (in place)."""
-    if not designs:
-        return
+def _build(req, pending: list[PiezoDesign], spacer) -> list[PiezoDesign]:
+    """The designs with their candidate row, static figures, metrics, force
+    path and static margins, in the order given (new records)."""
+    if not pending:
+        return []
     T, S = req.requirements.max_temperature, req.requirements.stroke
-    rows = []
-    for d in designs:
-        combo, res, var = d["combo"], d["gp"], d["variant"]
+    rows, rise = [], []
+    for d in pending:
+        combo, res, var = d.combo, d.gp, d.variant
         v = min(res.voltage_fraction, combo.voltage_fraction_max)
-        voltage = v * combo.stack.max_voltage
         free = res.ratio * combo.stack_stroke * v
-        d["rise"] = 0.5 * req.stroke_time * free / S          # reach the stroke in half the time allowed
-        bw, d["bouc_wen_source"] = d["bw"]
-        struct = structure_row(var.material, res.cap_thickness, res.frame_area, spacer, d["spacer"],
+        rise.append(0.5 * req.stroke_time * free / S)          # reach the stroke in half the time allowed
+        struct = structure_row(var.material, res.cap_thickness, res.frame_area, spacer, d.spacer,
                                var.compensator, _surface_mass(req), T - req.options.drift_reference_temperature)
-        rows.append(part_row(combo.stack, combo.n, res.ratio, res.wide_area, voltage, bw, T,
+        rows.append(part_row(combo.stack, combo.n, res.ratio, res.wide_area, v * combo.stack.max_voltage,
+                             d.bouc_wen[0], T,
                              max(res.wide_gap, effective_gap(req, combo.stack_stroke * v) * (1 + 1e-9)),
-                             combo.fluid, combo.seal, combo.amplifier,
-                             structure=struct))
-        d["index"] = len(rows) - 1
+                             combo.fluid, combo.seal, combo.amplifier, structure=struct))
     c = Candidates.from_rows(rows)
-    rise = np.array([d["rise"] for d in designs])
+    rise = np.array(rise)
     needed = drive_figures(c, rise, req.duty.strokes_per_second)["amplifier_units_needed"]
     c.amp_units = np.minimum(needed, req.options.max_amplifier_units).astype(float)
     ramp = ramp_time(c, rise)
@@ -238,19 +213,21 @@ def _build(req, designs, spacer) -> None:
     loads = [case["load_N"] for case in load_cases(req.load)]
     p_load = max(loads) / c.narrow_area
     seal_f = seal_friction_at(c, p_load)
-    for d in designs:
-        i = d["index"]
-        d["cand"] = c.take([i])
-        d["ramp"] = float(ramp[i])
-        d["static"] = {k: float(np.asarray(v)[i]) for k, v in static.items()}
-        d["metrics"] = {k: float(np.asarray(v)[i]) for k, v in met.items()}
-        comp = d["variant"].compensator
-        d["force_path"] = force_path.as_list(members, i, d["variant"].material.id, comp.id if comp else None,
-                                             spacer.id if d["spacer"] > 0 else None)
-        d["seal_friction"] = {"wide": float(seal_f["wide"][i]), "narrow": float(seal_f["narrow"][i]),
-                              "at_pressure_Pa": float(p_load[i])}
-        d["static_margins"] = _static_margins(req, d)
-        d["ruled_out"] = ruled_out(req, d["static"], d["metrics"])
+    out = []
+    for i, d in enumerate(pending):
+        comp = d.variant.compensator
+        friction = {"wide": float(seal_f["wide"][i]), "narrow": float(seal_f["narrow"][i]),
+                    "at_pressure_Pa": float(p_load[i])}
+        figures = {k: float(np.asarray(v)[i]) for k, v in static.items()}
+        figures.update(_derived_figures(req, d, figures, float(ramp[i]), friction))
+        mets = {k: float(np.asarray(v)[i]) for k, v in met.items()}
+        out.append(replace(
+            d, cand=c.take([i]), ramp=float(ramp[i]), static=frozen(figures), metrics=frozen(mets),
+            force_path=tuple(force_path.as_list(members, i, d.variant.material.id, comp.id if comp else None,
+                                                spacer.id if d.spacer > 0 else None)),
+            seal_friction=frozen(friction), static_margins=frozen(_static_margins(req, d, figures)),
+            ruled_out=ruled_out(req, figures, mets)))
+    return out
 
 
 def ruled_out(req, st: dict, met: dict) -> dict | None:
@@ -271,22 +248,36 @@ def ruled_out(req, st: dict, met: dict) -> dict | None:
     return None
 
 
-def _static_margins(req, d) -> dict:
-    """Every static check of one design, from its own figures (nothing is
-    copied between variants)."""
-    r, o, combo, st = req.requirements, req.options, d["combo"], d["static"]
-    stack, var = combo.stack, d["variant"]
+def _derived_figures(req, d: PiezoDesign, st: dict, ramp: float, friction: dict) -> dict:
+    """The static figures the margins read beyond ``verify.static_figures``:
+    the drift as judged, the current the stroke needs, the planned speed and,
+    for a leaking compensator, its creep over the hold."""
+    r, o, combo = req.requirements, req.options, d.combo
+    stack = combo.stack
     c_large = combo.n * stack.capacitance * stack_phys.LARGE_SIGNAL_CAPACITANCE_FACTOR
     volts_to_stroke = r.stroke * stack.max_voltage / (st["ratio"] * combo.stack_stroke)
-    i_req = c_large * volts_to_stroke / req.stroke_time
+    out = {"thermal_drift_m": st["thermal_net_m"],
+           "thermal_drift_oil_only_m": st["thermal_drift_per_K_m"] * (r.max_temperature - o.drift_reference_temperature),
+           "required_current_A": c_large * volts_to_stroke / req.stroke_time,
+           "speed_m_s": st["free_stroke_m"] / ramp,         # the planned drive ramp, at the amplifier's limit
+           "rise_time_s": ramp}
+    comp = d.variant.compensator
+    if comp is not None and comp.leak_conductance > 0:
+        # output creep under the steady (largest) load over the held deflection
+        out["compensator_creep_m"] = compensator_creep(comp.leak_conductance, friction["at_pressure_Pa"],
+                                                       req.duty.hold_time, st["narrow_diameter_m"])
+        out["compensator_hold_s"] = req.duty.hold_time
+    return out
+
+
+def _static_margins(req, d: PiezoDesign, st: dict) -> dict:
+    """Every static check of one design, from its own figures (nothing is
+    copied between variants)."""
+    r, o, combo = req.requirements, req.options, d.combo
+    stack, var = combo.stack, d.variant
     units, amp = st["amplifier_units"], combo.amplifier
     usable = units * float(amplifier.usable_ramp_current(amp.max_current, amp.continuous_current, amp.peak_duration,
                                                          req.stroke_time))
-    st["thermal_drift_m"] = st["thermal_net_m"]
-    st["thermal_drift_oil_only_m"] = st["thermal_drift_per_K_m"] * (r.max_temperature - o.drift_reference_temperature)
-    st["required_current_A"] = i_req
-    st["speed_m_s"] = st["free_stroke_m"] / d["ramp"]       # the planned drive ramp, at the amplifier's limit
-    st["rise_time_s"] = d["ramp"]
     temps = [combo.margins["temperature"], temperature_margin(var.material.max_temperature, r.max_temperature)]
     margins = {
         "stroke": floor_margin(st["free_stroke_m"], r.stroke),
@@ -296,7 +287,7 @@ def _static_margins(req, d) -> dict:
         "temperature": min(temps),
         "amplifier_temperature": combo.margins["amplifier_temperature"],
         "pressure": floor_margin(combo.seal.pressure_rating, st["blocked_pressure_Pa"]),
-        "drive_current": floor_margin(usable, i_req),
+        "drive_current": floor_margin(usable, st["required_current_A"]),
         "amplifier_continuous_current": floor_margin(units * amp.continuous_current,
                                                      max(st["rms_current_A"], st["continuous_current_A"])),
         "amplifier_units": floor_margin(req.options.max_amplifier_units, st["amplifier_units_needed"]),
@@ -310,13 +301,8 @@ def _static_margins(req, d) -> dict:
     if comp is not None:
         margins["temperature"] = min(margins["temperature"], temperature_margin(comp.max_temperature, r.max_temperature))
         margins["compensator_capacity"] = floor_margin(comp.capacity, st["thermal_compensator_volume_m3"])
-        if comp.leak_conductance > 0:
-            # output creep under the steady (largest) load over the held deflection
-            creep = compensator_creep(comp.leak_conductance, d["seal_friction"]["at_pressure_Pa"],
-                                      req.duty.hold_time, st["narrow_diameter_m"])
-            st["compensator_creep_m"] = creep
-            st["compensator_hold_s"] = req.duty.hold_time
-            margins["compensator_hold"] = ceiling_margin(creep, o.max_drift_fraction * r.stroke)
+        if "compensator_creep_m" in st:
+            margins["compensator_hold"] = ceiling_margin(st["compensator_creep_m"], o.max_drift_fraction * r.stroke)
     return margins
 
 

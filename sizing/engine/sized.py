@@ -13,7 +13,7 @@ from ..errors import InputError
 from ..io.catalog import Catalog
 from ..io.requirements import RequirementsFile
 from .convex import SizingResult
-from .piezo_designs import Variant
+from .records import Variant
 from .search import enumerate_combos
 
 
@@ -93,9 +93,14 @@ def dc_parts_design(catalog: Catalog, cand: dict) -> DCPartsDesign:
 SETTINGS = ("kp", "ki", "kd", "current_limit_A", "voltage_limit_V")
 
 
-def study_designs(req: RequirementsFile, catalog: Catalog, candidates: list[dict]) -> list:
+def study_designs(req: RequirementsFile, catalog: Catalog, candidates: list[dict], stages=None) -> list:
     """What ``sizing robust`` perturbs, per candidate: a piezohydraulic
-    (Combo, Variant, SizingResult) triple (``sized_designs``) or a
-    ``DCPartsDesign``."""
-    return [dc_parts_design(catalog, c) if c.get("technology") == "dc_motor" else sized_designs(req, catalog, [c])[0]
+    (Combo, Variant, SizingResult) triple or a ``DCPartsDesign``. A
+    piezohydraulic design the solve's own records hold (``stages``,
+    ``records.Stages``) is taken from them as sized; any other is read back
+    from its results.json record (``sized_designs``)."""
+    by_id = stages.by_id if stages is not None else {}
+    return [dc_parts_design(catalog, c) if c.get("technology") == "dc_motor"
+            else by_id[c["id"]].sized if c["id"] in by_id
+            else sized_designs(req, catalog, [c])[0]
             for c in candidates]

@@ -22,7 +22,6 @@
 """
 from __future__ import annotations
 
-import copy
 import math
 import time
 from collections import Counter
@@ -37,12 +36,14 @@ from ..io.requirements import RequirementsFile
 from ..physics import fluid as fluid_props
 from ..physics import stack as stack_phys, thermal
 from . import assumed, names, piezo_designs
+from .candidate import design_candidate, pruned_candidate, ruled_out_record
 from .dc_candidates import dc_candidates
 from .dc_sizing import dc_parts_candidates
 from .evaluate import load_cases
 from .piezo import Candidates
-from .piezo_designs import Variant, effective_gap, sizing_input, variants  # noqa: F401  (the module's API)
-from .rank import ceiling_margin, floor_margin, nondominated_levels, rank_order, verdict
+from .piezo_designs import effective_gap, sizing_input, variants  # noqa: F401  (the module's API)
+from .rank import nondominated_levels, rank_order, verdict
+from .records import PiezoDesign, Simulation, Stages, Variant, VerifiedDesign  # noqa: F401  (the module's API)
 from .search import Combo, enumerate_combos
 from .solve_summary import _assumptions, _clean, _requirements_si, _summary, _traces
 from .verify import simulate_cases
@@ -55,10 +56,11 @@ SCREEN_IGNORES = ("thermal_drift", "amplifier_continuous_current")
 OBJECTIVE_KEYS = {"mass": "mass_kg", "cost": "cost_usd", "volume": "volume_m3", "power": "power_W"}
 
 
-@dataclass
+@dataclass(frozen=True)
 class SolveOutput:
     results: dict                                  # results.json
     traces: list = field(default_factory=list)     # time traces of the top designs, for the report
+    stages: Stages = Stages()                      # the records behind the results (robust takes them)
 
 
 def _progress(callback, stage, done, total):
@@ -79,23 +81,23 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
     to_size = [c for c in combos if not c.pruned]
     sized = piezo_designs.size(req, catalog, to_size, progress)
     designs = piezo_designs.designs(req, catalog, sized)
-    _simulate(req, designs, loads, progress)
+    verified = [VerifiedDesign(d, sim) for d, sim in zip(designs, _simulate(req, designs, loads, progress))]
     pruned = [c for c in combos if c.pruned]
     ruled_out = Counter(_pruned_reason(c) for c in pruned)
     piezo_pruned = Counter(ruled_out)
     dc_ruled = Counter()
     candidates = []
     if detail == "full":
-        candidates = [_pruned_candidate(req, c) for c in pruned]
+        candidates = [pruned_candidate(c) for c in pruned]
         piezo_designs.nominal_figures(req, catalog, pruned, candidates)
     excluded = []
-    for d in designs:
-        record = _ruled_out_record(d)
+    for v in verified:
+        record = ruled_out_record(v.design)
         if record is not None:
             excluded.append(record)
             ruled_out[record["reason"]] += 1
             continue
-        candidates.extend(_design_candidates(req, d))
+        candidates.append(design_candidate(req, v))
     dc = dc_candidates(req, catalog, loads) if req.options.dc_motors else []
     candidates.extend(dc["candidates"] if dc else [])
     parts = dc_parts_candidates(req, catalog, loads, progress) if req.options.dc_motors else {}
@@ -127,76 +129,79 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
                         ruled_out_by_technology={
                             "piezohydraulic": dict((piezo_pruned + Counter(x["reason"] for x in excluded)).most_common()),
                             "dc_motor": dict(dc_ruled.most_common())}),
-        "disagreements": _disagreements(designs),
+        "disagreements": _disagreements(verified),
         "hysteresis_time_scales": piezo_designs.hysteresis_time_scales(catalog),
         "counts": {"combinations": len(combos), "pruned": len(combos) - len(to_size), "sized": len(to_size),
-                   "gp_feasible": sum(1 for d in designs if d["gp_success"]),
-                   "simulated": sum(1 for d in designs if d["simulated"] is not None),
+                   "gp_feasible": sum(1 for d in designs if d.gp.success),
+                   "simulated": sum(1 for v in verified if v.simulation is not None),
                    "dc_parts": _dc_counts(parts)},
     }
-    traces = _traces(req, candidates, designs, dc, loads)
+    stages = Stages.of(verified)
+    traces = _traces(req, candidates, stages, dc, loads)
     if detail != "full":
         _keep_verified(results)
     results["runtime_s"] = time.perf_counter() - start
-    return SolveOutput(results=_clean(results), traces=traces)
+    return SolveOutput(results=_clean(results), traces=traces, stages=stages)
 
 
 # --- verification ---------------------------------------------------------
-def _simulate(req, designs, loads, progress) -> None:
+def _simulate(req, designs: list[PiezoDesign], loads, progress) -> list[Simulation | None]:
     """Simulate the sized designs under every load case: the statically
     feasible ones on the Pareto front first, then the next fronts, then the
-    rest, up to ``options.max_simulated``."""
-    pool = [d for d in designs if d["gp_success"] and not d.get("ruled_out")]
+    rest, up to ``options.max_simulated``. Per design, its simulation or
+    None (not simulated)."""
+    out: list[Simulation | None] = [None] * len(designs)
+    pool = [i for i, d in enumerate(designs) if d.gp.success and d.built and d.ruled_out is None]
     if not pool:
-        return
+        return out
     keys = [OBJECTIVE_KEYS[k] for k in req.objectives.minimize]
-    F = np.array([[d["metrics"][k] for k in keys] for d in pool])
-    ok = np.array([min(v for k, v in d["static_margins"].items() if k not in SCREEN_IGNORES) >= 0 for d in pool])
+    F = np.array([[designs[i].metrics[k] for k in keys] for i in pool])
+    ok = np.array([min(v for k, v in designs[i].static_margins.items() if k not in SCREEN_IGNORES) >= 0
+                   for i in pool])
     level = np.full(len(pool), 10**6)
     if ok.any():
         level[ok] = nondominated_levels(F[ok])
-    order = np.lexsort((level, ~ok))[: req.options.max_simulated]
-    chosen = [pool[i] for i in order]
+    chosen = [pool[j] for j in np.lexsort((level, ~ok))[: req.options.max_simulated]]
     # designs that differ only in the structure material have the same force
     # path (the material screen keeps the members' stiffness) and so the same
     # dynamics: simulate one of each and share the result
-    twins: dict[tuple, list] = {}
-    for d in chosen:
-        twins.setdefault(_dynamic_key(d), []).append(d)
+    twins: dict[tuple, list[int]] = {}
+    for i in chosen:
+        twins.setdefault(_dynamic_key(designs[i]), []).append(i)
     unique = [group[0] for group in twins.values()]
     S = req.requirements.stroke
     for start in range(0, len(unique), SIM_CHUNK):
         chunk = unique[start:start + SIM_CHUNK]
-        _simulate_chunk(chunk, loads, S)
+        for i, sim in zip(chunk, _simulate_chunk([designs[i] for i in chunk], loads, S)):
+            out[i] = sim
         _progress(progress, "simulating", min(start + SIM_CHUNK, len(unique)), len(unique))
     for group in twins.values():
-        for d in group[1:]:
-            d["simulated"] = group[0]["simulated"]
+        for i in group[1:]:
+            out[i] = out[group[0]]
+    return out
 
 
-def _dynamic_key(d) -> tuple:
+def _dynamic_key(d: PiezoDesign) -> tuple:
     """What the simulation depends on, beyond the parts: the force path's
     mechanical and hydraulic stiffness, the ramp, the masses and the leak."""
-    st, c = d["static"], d["cand"]
-    comp = d["variant"].compensator
-    return (d["combo"].key, comp.id if comp else None, f"{st['force_path_stiffness_N_m']:.9e}",
-            f"{d['ramp']:.9e}", f"{float(c.wide_mass[0]):.9e}", f"{d['spacer']:.9e}")
+    comp = d.variant.compensator
+    return (d.combo.key, comp.id if comp else None, f"{d.static['force_path_stiffness_N_m']:.9e}",
+            f"{d.ramp:.9e}", f"{float(d.cand.wide_mass[0]):.9e}", f"{d.spacer:.9e}")
 
 
-def _simulate_chunk(chunk, loads, S) -> None:
-    c = _stack_candidates([d["cand"] for d in chunk])
-    ramps = np.array([d["ramp"] for d in chunk])
+def _simulate_chunk(chunk: list[PiezoDesign], loads, S) -> list[Simulation]:
+    """The simulations of ``chunk``, in order; a chunk that fails is retried
+    design by design, so one failure is that design's alone."""
+    c = _stack_candidates([d.cand for d in chunk])
+    ramps = np.array([d.ramp for d in chunk])
     try:
         sims = simulate_cases(c, loads, ramps, target_stroke=S)
-    except SimulationError:
+    except SimulationError as exc:
         if len(chunk) == 1:
-            chunk[0]["simulated"] = {"failed": True, "cases": []}
-            return
-        for d in chunk:
-            _simulate_chunk([d], loads, S)
-        return
-    for i, d in enumerate(chunk):
-        d["simulated"] = {"cases": [{k: float(np.asarray(v)[i]) for k, v in case.items()} for case in sims]}
+            return [Simulation.failed(str(exc))]
+        return [s for d in chunk for s in _simulate_chunk([d], loads, S)]
+    return [Simulation(True, "", tuple({k: float(np.asarray(v)[i]) for k, v in case.items()} for case in sims))
+            for i in range(len(chunk))]
 
 
 def _stack_candidates(parts: list[Candidates]) -> Candidates:
@@ -204,37 +209,7 @@ def _stack_candidates(parts: list[Candidates]) -> Candidates:
     return Candidates(**{f.name: np.concatenate([getattr(p, f.name) for p in parts]) for f in fields(Candidates)})
 
 
-def _sim_margins(req, sim) -> tuple[dict, dict]:
-    """Margins and the contract's ``simulated`` figures from the cases."""
-    r = req.requirements
-    if sim.get("failed"):
-        return {"simulation": -math.inf}, {"failed": True}
-    cases = sim["cases"]
-    worst = max(cases, key=lambda c: c["load_N"])
-    figures = {"stroke_m": worst["stroke_m"], "time_to_stroke_s": worst["time_to_stroke_s"],
-               "speed_m_s": min(c["speed_m_s"] for c in cases), "overshoot": worst["overshoot"],
-               "load_N": worst["load_N"], "cases": cases}
-    margins = {"stroke": floor_margin(min(c["stroke_m"] for c in cases), r.stroke),
-               "speed": floor_margin(min(c["speed_m_s"] for c in cases), r.speed),
-               "overshoot": ceiling_margin(max(c["overshoot"] for c in cases), req.options.max_overshoot)}
-    return margins, figures
-
-
 # --- candidates -------------------------------------------------------------
-def _components(combo: Combo, ratio) -> dict:
-    return {"stack": combo.stack.id, "n_stacks": combo.n, "ratio": ratio, "fluid": combo.fluid.id,
-            "seal": combo.seal.id, "amplifier": combo.amplifier.id}
-
-
-def _stack_params(combo: Combo) -> dict:
-    s = combo.stack
-    return {"stiffness_N_m": s.stiffness, "d33_m_V": s.stroke_per_volt, "max_voltage_V": s.max_voltage}
-
-
-def _temperatures(combo: Combo) -> dict:
-    return {k: {"rated_degC": a, "required_degC": b} for k, (a, b) in combo.temperatures.items()}
-
-
 UNVERIFIED = ("sized", "gp_infeasible")
 UNVERIFIED_REASON = "not simulated: misses a static check"
 # a simulated design that misses a check by more than this (margin -0.5: it
@@ -293,97 +268,6 @@ def _dc_pruned_reason(c: dict) -> str:
     return min(missed, key=lambda k: c["margins"][k]) if missed else "pruned"
 
 
-def _ruled_out_record(d) -> dict | None:
-    """One line for a design that is not a design (a plate beyond its model,
-    a body outside the envelope): never ranked, plotted or named a best."""
-    why = d.get("ruled_out")
-    res = d["gp"]
-    if why is None and not res.success and res.ruled_out is not None:
-        why = {"reason": res.ruled_out, "detail": "no design of these parts fits: " + ", ".join(res.binding)}
-    if why is None:
-        return None
-    return {"id": d["id"], "technology": "piezohydraulic", "variant": d["variant"].name, **why}
-
-
-def _pruned_candidate(req, combo: Combo) -> dict:
-    s, a = combo.stack, combo.amplifier
-    reasons = [k for k, v in combo.margins.items() if v < 0]
-    return {
-        "id": combo.key, "technology": "piezohydraulic", "variant": "uncompensated", "stage": "pruned",
-        "components": _components(combo, None), "stack_params": _stack_params(combo),
-        "static": {"work_J": float(stack_phys.work_capacity(combo.n, s.stiffness, combo.stack_stroke * combo.voltage_fraction_max))},
-        "simulated": {}, "margins": dict(combo.margins),
-        "metrics": {"mass_kg": combo.n * s.mass + a.mass,
-                    "cost_usd": combo.n * s.cost_usd + a.cost_usd},
-        "metrics_lower_bound": True, "temperatures": _temperatures(combo),
-        "reason": "ruled out before sizing: " + ", ".join(reasons),
-    }
-
-
-def _design_candidates(req, d) -> list[dict]:
-    combo, res, var = d["combo"], d["gp"], d["variant"]
-    comp = var.compensator
-    components = dict(_components(combo, res.ratio), material=var.material.id,
-                      compensator=comp.id if comp else None)
-    base = {
-        "id": combo.key + var.suffix(), "technology": "piezohydraulic", "variant": var.name,
-        "components": components, "stack_params": _stack_params(combo), "temperatures": _temperatures(combo),
-    }
-    if d["index"] is None:
-        return [dict(base, stage="gp_failed", static={}, simulated={},
-                     margins={**combo.margins, res.driver or "solver": -math.inf},
-                     metrics={}, reason=f"the geometric program failed ({res.status})")]
-    margins = dict(d["static_margins"])
-    margins["work"] = combo.margins["work"]
-    simulated = {}
-    if d["simulated"] is not None:
-        sim_m, simulated = _sim_margins(req, d["simulated"])
-        margins.update(sim_m)
-    stage = "simulated" if simulated else ("sized" if res.success else "gp_infeasible")
-    T = req.requirements.max_temperature
-    f = combo.fluid
-    st = d["static"]
-    base.update({
-        "stage": stage, "static": st, "simulated": simulated,
-        "static_margins": d["static_margins"],
-        "force_path": d["force_path"],
-        "thermal_budget": {k: st["thermal_" + k] for k in (*thermal.TERMS, "net_m")},
-        "seal_friction_N": d["seal_friction"],
-        "compensator": _compensator_entry(comp, d),
-        "design": {"technology": "piezohydraulic", "stack": combo.stack.id, "n_stacks": combo.n,
-                   "voltage": d["cand"].voltage[0], "wide_diameter": st["wide_diameter_m"],
-                   "narrow_diameter": st["narrow_diameter_m"], "fluid": f.id, "seal": combo.seal.id,
-                   "amplifier": combo.amplifier.id, "wide_gap": st["wide_gap_m"], "rise_time": d["ramp"],
-                   "temperature": T, "material": var.material.id, "end_cap_thickness": res.cap_thickness,
-                   "frame_area": res.frame_area, "compensator": comp.id if comp else None,
-                   "strokes_per_second": req.duty.strokes_per_second},
-        "fluid_at_temperature": {
-            "kinematic_viscosity_m2_s": float(fluid_props.kinematic_viscosity(f.viscosity_40C, f.viscosity_100C, T)),
-            "bulk_modulus_Pa": float(d["cand"].bulk_modulus[0]),
-            "flash_point_degC": f.flash_point},
-        "bouc_wen_source": d["bouc_wen_source"],
-        "hysteresis": (piezo_designs.hysteresis(combo.stack, d["bw"][0], float(d["cand"].voltage[0]), d["ramp"])
-                       if d["simulated"] is not None else None),
-        "gp": {"success": res.success, "status": res.status, "binding": res.binding, "slack": res.slack},
-        "reason": "" if res.success else "no design of these parts meets: " + ", ".join(res.binding),
-        "metrics": dict(d["metrics"]), "margins": margins,
-    })
-    if d["spacer"] > 0:
-        base["passive_compensation"] = {"spacer_length_m": d["spacer"],
-                                        "spacer_material": next(r["material"] for r in d["force_path"] if r["member"] == "spacer")}
-        base["design"]["spacer_length"] = d["spacer"]
-    return [base]
-
-
-def _compensator_entry(comp, d) -> dict | None:
-    if comp is None:
-        return None
-    k = next((r["stiffness_N_m"] for r in d["force_path"] if r["member"] == "compensator"), None)
-    return {"id": comp.id, "kind": comp.kind, "stiffness_N_m": k, "leak_m3_s_Pa": comp.leak_conductance,
-            "mass_kg": comp.mass, "cost_usd": comp.cost_usd, "capacity_m3": comp.capacity,
-            "volume_taken_m3": d["static"]["thermal_compensator_volume_m3"]}
-
-
 def _rank(req, candidates) -> None:
     keys = [OBJECTIVE_KEYS[k] for k in req.objectives.minimize]
     for c in candidates:
@@ -416,27 +300,25 @@ def _objective(value) -> float:
     return math.inf if value is None or not math.isfinite(value) else float(value)
 
 
-def _disagreements(designs) -> list[dict]:
+def _disagreements(verified: list[VerifiedDesign]) -> list[dict]:
     """Where the static screen and the simulation disagree on a requirement's
     verdict (one margin >= 0, the other < 0), or differ by more than 10 %."""
     out = []
-    for d in designs:
-        if not d.get("simulated") or d["simulated"].get("failed") or d["index"] is None:
+    for v in verified:
+        d, sim = v.design, v.simulation
+        if sim is None or not sim.success or not d.built:
             continue
-        st = d["static"]
-        cases = d["simulated"]["cases"]
+        st, cases, sm = d.static, sim.cases, d.static_margins
         pairs = {"stroke": (st["free_stroke_m"], min(c["stroke_m"] for c in cases)),
                  "speed": (st["speed_m_s"], min(c["speed_m_s"] for c in cases))}
-        sm = d["static_margins"]
         for key, (a, b) in pairs.items():
             req_value = a / (1 + sm[key])
             m_sim = b / req_value - 1
             flip = (sm[key] >= 0) != (m_sim >= 0)
             if flip or abs(b / a - 1) > 0.10:
-                out.append({"id": d["id"], "requirement": key, "static": a, "simulated": b,
+                out.append({"id": d.id, "requirement": key, "static": a, "simulated": b,
                             "static_margin": sm[key], "simulated_margin": m_sim, "verdict_changes": flip})
     return out
-
 
 
 # --- hook for sizing robust: re-verify fixed designs ------------
@@ -445,41 +327,37 @@ def verify_sized(req, catalog: Catalog, sized: list, loads: list[float], chunk: 
     """Re-verify designs whose geometry is fixed, through the very steps of
     ``solve`` (static figures, margins, simulation under every load case,
     verdict). ``sized``: (Combo, Variant, SizingResult) triples, e.g. one design whose
-    parts were perturbed. ``temperatures``: optional, per pair, the
+    parts were perturbed. ``temperatures``: optional, per triple, the
     temperature its parts work at instead of the required maximum (ratings
     are still judged at the maximum, by the combo's margins). Returns, per
     triple, its candidates (uncompensated, and compensated when the options
     ask) with ``feasible`` and ``driver``. A triple's as-built variant also
     yields its passive variant when the sample drifts (``piezo_designs``)."""
     temps = [None] * len(sized) if temperatures is None else [float(t) for t in temperatures]
-    designs, reqs = [None] * len(sized), {}
+    per_triple: list[list[PiezoDesign]] = [[] for _ in sized]
+    reqs = {}
     for t in dict.fromkeys(temps):
         idx = [i for i, x in enumerate(temps) if x == t]
         reqs[t] = req if t is None else req.model_copy(update={
             "requirements": req.requirements.model_copy(update={"max_temperature": t})})
-        # a shallow copy of each combo tells the designs apart (a passive
-        # variant carries its parent's combo object)
-        own = {i: (copy.copy(sized[i][0]),) + tuple(sized[i][1:]) for i in idx}
-        built_t = piezo_designs.designs(reqs[t], catalog, [own[i] for i in idx])
-        owner = {id(own[i][0]): i for i in idx}
-        for i in idx:
-            designs[i] = []
-        for d in built_t:                             # the as-built ones, then their passive variants
-            designs[owner[id(d["combo"])]].append(d)
-    built = [d for ds in designs for d in ds if d["index"] is not None]
-    for start in range(0, len(built), chunk):
-        _simulate_chunk(built[start:start + chunk], loads, req.requirements.stroke)
+        for d in piezo_designs.designs(reqs[t], catalog, [sized[i] for i in idx]):
+            per_triple[idx[d.origin]].append(d)      # the as-built ones, then their passive variants
+    flat = [(i, j) for i, ds in enumerate(per_triple) for j, d in enumerate(ds) if d.built]
+    sims = {}
+    for start in range(0, len(flat), chunk):
+        part = flat[start:start + chunk]
+        done = _simulate_chunk([per_triple[i][j] for i, j in part], loads, req.requirements.stroke)
+        sims.update(zip(part, done))
     out = []
-    for ds, t in zip(designs, temps):
+    for i, (ds, t) in enumerate(zip(per_triple, temps)):
         cands = []
-        for d in ds:
-            record = _ruled_out_record(d)
-            for c in _design_candidates(reqs[t], d):
-                if record is not None:          # a sample outside the members' validity or the envelope
-                    c["margins"][record["reason"]] = -math.inf
-                    c["ruled_out"] = record
-                cands.append(c)
-        for c in cands:
+        for j, d in enumerate(ds):
+            c = design_candidate(reqs[t], VerifiedDesign(d, sims.get((i, j))))
+            record = ruled_out_record(d)
+            if record is not None:          # a sample outside the members' validity or the envelope
+                c["margins"][record["reason"]] = -math.inf
+                c["ruled_out"] = record
             c["feasible"], c["driver"] = verdict(c["margins"])
+            cands.append(c)
         out.append(cands)
     return out

@@ -204,10 +204,11 @@ def _downsample(t, y):
     return t[::step].tolist(), y[::step].tolist()
 
 
-def _traces(req, candidates, designs, dc, loads, top=3) -> list[dict]:
+def _traces(req, candidates, stages, dc, loads, top=3) -> list[dict]:
     """Time traces of the top designs: the best feasible ones, the best of
-    each technology group, re-simulated with their traces kept."""
-    by_key = {d["id"]: d for d in designs if d.get("index") is not None}
+    each technology group, re-simulated with their traces kept. ``stages``:
+    the solve's records (``records.Stages``)."""
+    by_key = {k: d for k, d in stages.by_id.items() if d.built}
     chosen = [c for c in candidates if c["feasible"]][:top]
     for key in GROUPS:
         members = [c for c in candidates if _group(c) == key and c.get("stage") in ("simulated", "sized")]
@@ -238,7 +239,7 @@ def _traces(req, candidates, designs, dc, loads, top=3) -> list[dict]:
             d = by_key.get(base)
             if d is None:
                 continue
-            sims = simulate_cases(d["cand"], loads, np.array([d["ramp"]]), target_stroke=S, keep_traces=True)
+            sims = simulate_cases(d.cand, loads, np.array([d.ramp]), target_stroke=S, keep_traces=True)
             cases = []
             for s in sims:
                 t, y = _downsample(s["t"], s["position_m"][0])

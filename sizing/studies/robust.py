@@ -126,13 +126,15 @@ def pick_designs(results: dict, k: int, technology: str | None = None) -> list[d
 
 
 def robust(req, catalog, candidates: list[dict], samples: int, seed: int, executor: Executor,
-           progress=None, batch: int = BATCH, extra_spreads: dict | None = None) -> dict:
+           progress=None, batch: int = BATCH, extra_spreads: dict | None = None, stages=None) -> dict:
     """robust.json for ``candidates`` (results.json entries). ``extra_spreads``:
     tolerances added to (and overriding) the requirements' ones, e.g. the
-    Bouc-Wen spreads of a fit (``io.fit_spreads``)."""
+    Bouc-Wen spreads of a fit (``io.fit_spreads``). ``stages``: the solve's
+    records (``SolveOutput.stages``), whose designs are taken as sized
+    instead of being read back from their records."""
     tols = tolerances_of({**req.tolerance_spreads, **(extra_spreads or {})})
     loads = [c["load_N"] for c in load_cases(req.load)]
-    designs = study_designs(req, catalog, candidates)
+    designs = study_designs(req, catalog, candidates, stages)
     tasks = []
     for d, (cand, design) in enumerate(zip(candidates, designs)):
         for b, start in enumerate(range(0, samples, batch)):

@@ -93,13 +93,12 @@ def evaluate(design: Path = typer.Argument(..., help="design.toml (docs/formats.
     """Static and simulated figures of one design."""
     with use_limits(steps=max_steps):
         result = api.evaluate(design, catalog)
-    for warning in result["warnings"]:
+    for warning in result.warnings:
         typer.echo(f"warning: {design}: {warning}", err=True)
     if json_out:
-        _print_json(result)
+        _print_json(result.figures)
         return
-    from .report.text import evaluation_summary
-    typer.echo(evaluation_summary(result))
+    typer.echo(result.summary())
 
 
 @app.command()
@@ -132,7 +131,7 @@ def solve(requirements: Path = typer.Argument(..., help="requirements.toml (docs
                    f"({results['runtime_s']:.1f} s)")
 
 
-def _solve(requirements, out, catalog, baseline, quiet, detail="summary", robust=None) -> dict:
+def _solve(requirements, out, catalog, baseline, quiet, detail="summary", robust=None):
     with _StageBars(quiet) as bars:          # the same bars as robust and sweep (below)
         return api.solve(requirements, out, catalog, baseline,
                          progress=lambda stage, done, total: bars(f"{stage} candidates", done, total), detail=detail,
@@ -142,9 +141,7 @@ def _solve(requirements, out, catalog, baseline, quiet, detail="summary", robust
 @catalog_app.command("list")
 def catalog_list(catalog: Optional[Path] = CatalogOpt):
     """List every catalog entry: id, kind, name and source."""
-    cat = api.catalog(catalog)
-    from .report.text import catalog_table
-    typer.echo(catalog_table(cat))
+    typer.echo(api.catalog_table(catalog))
 
 
 @catalog_app.command("show")
@@ -152,19 +149,11 @@ def catalog_show(entry_id: str = typer.Argument(..., help="Catalog id, e.g. pi-p
                  json_out: bool = typer.Option(False, "--json", help="Print JSON."),
                  catalog: Optional[Path] = CatalogOpt):
     """Show every field of one entry with its unit and provenance."""
-    cat = api.catalog(catalog)
-    try:
-        kind, entry = cat.get(entry_id)
-    except KeyError:
-        import difflib
-        near = difflib.get_close_matches(entry_id, [e.id for _, e in cat.entries()], n=3, cutoff=0.6)
-        hint = f"; did you mean {', '.join(near)}?" if near else "; `sizing catalog list` lists them"
-        raise InputError(str(cat.folder), "id", f"no entry {entry_id!r} in the catalog{hint}") from None
+    found = api.catalog_entry(entry_id, catalog)
     if json_out:
-        _print_json({"kind": kind, **entry.model_dump(mode="json")})
+        _print_json(found.to_dict())
         return
-    from .report.text import entry_details
-    typer.echo(entry_details(kind, entry))
+    typer.echo(found.details())
 
 
 @catalog_app.command("validate")
@@ -172,8 +161,7 @@ def catalog_validate(folder: Optional[Path] = typer.Argument(None, help="Catalog
                      max_age_days: int = number_option(730, "--max-age-days", "Flag entries retrieved longer ago than this.", low=0, high=100_000),
                      catalog: Optional[Path] = CatalogOpt):
     """Check schema, units, ids and physical plausibility; exit 2 on errors."""
-    from .io.validate import validate_catalog
-    report = validate_catalog(folder or catalog, max_age_days=max_age_days)
+    report = api.catalog_validate(folder or catalog, max_age_days=max_age_days)
     for line in report.warnings:
         typer.echo(f"warning: {line}", err=True)
     typer.echo(f"{report.folder}: {report.n_entries} entries valid ({report.n_warnings} warnings)")
@@ -185,13 +173,11 @@ def catalog_diff(old: str = typer.Argument(..., help="Old catalog: a folder, or 
                  json_out: bool = typer.Option(False, "--json", help="Print JSON (added, removed, changed with each field's old and new value and unit)."),
                  catalog: Optional[Path] = CatalogOpt):
     """Added, removed and changed entries between two catalogs, field by field."""
-    from .io.catalog_diff import diff_catalogs, format_diff
-    from .io.catalog import DEFAULT_CATALOG
-    diff = diff_catalogs(old, new if new is not None else str(catalog or DEFAULT_CATALOG))
+    diff = api.catalog_diff(old, new if new is not None else catalog)
     if json_out:
         _print_json(diff.to_dict())
         return
-    typer.echo(format_diff(diff))
+    typer.echo(diff.text())
 
 
 @catalog_app.command("add")
@@ -199,9 +185,9 @@ def catalog_add(kind: str = typer.Argument(..., help="Part kind: stack, fluid, s
                 sheet: Path = typer.Argument(..., help="CSV of new parts, one per row; header = field names, units in the header or the cells."),
                 catalog: Optional[Path] = CatalogOpt):
     """Validate a vendor sheet (CSV) and append its parts to the kind's catalog file."""
-    from .io.catalog_import import add_parts
-    result = add_parts(kind, sheet, catalog)
-    typer.echo(f"{result.file}: added {len(result.ids)} {result.kind} entr{'y' if len(result.ids) == 1 else 'ies'}: {', '.join(result.ids)}")
+    added = api.catalog_add(kind, sheet, catalog).added
+    ids = added["ids"]
+    typer.echo(f"{added['file']}: added {len(ids)} {added['kind']} entr{'y' if len(ids) == 1 else 'ies'}: {', '.join(ids)}")
 
 
 @catalog_app.command("import-mgdb")
@@ -209,8 +195,7 @@ def catalog_import_mgdb(tables: Path = typer.Argument(..., help="Folder of the m
                         screws: Optional[Path] = typer.Option(None, "--screws", help="CSV of makers' ball screws with load ratings (screws-sourced.csv)."),
                         catalog: Optional[Path] = CatalogOpt):
     """Import brushless motors, their mountable gearheads and ball screws from makers' tables, each value with its provenance."""
-    from .io.mgdb import import_mgdb
-    done = import_mgdb(tables, screws, catalog)
+    done = api.catalog_import_mgdb(tables, screws, catalog).added
     skipped = ", ".join(f"{n} {what}" for what, n in done["skipped"].items() if n)
     typer.echo(f"imported {done['motors']} motors, {done['gears']} gearheads, {done['screws']} screws into "
                f"{', '.join(done['files'])}" + (f" (skipped: {skipped})" if skipped else ""))
@@ -244,7 +229,7 @@ def _diagnose(campaign, holdout, out, recalibrate, no_recalibrate, check, seed) 
     if not holdout:
         raise InputError(str(campaign), "--holdout", "expected at least one --holdout RUN (the runs never used for fitting)")
     result = api.diagnose(campaign, holdout, out, recalibrate=[] if no_recalibrate else (recalibrate or None), seed=seed)
-    v = result.verdict
+    v = result.verdict_dict
     typer.echo(f"baseline holdout NRMSE {result.baseline_holdout:.4f} (noise floor {result.noise_floor_holdout:.4f})")
     for f in result.fits[:5]:
         typer.echo(f"  {f.name + ' (' + f.form + ')':<48} holdout NRMSE {f.nrmse_holdout:.4f}  shrink {100 * (1 - f.nrmse_holdout / result.baseline_holdout):5.1f} %")
@@ -281,12 +266,12 @@ class _LazyProgress:
             self.bar.stop()
 
 
-def _fit_output(result: dict, out: Optional[Path]) -> None:
-    for warning in result["warnings"]:
+def _fit_output(result, out: Optional[Path]) -> None:
+    for warning in result.warnings:
         typer.echo(f"warning: {warning}", err=True)
     if out is None:
-        typer.echo(result["toml"])
-    for path in result["written"]:
+        typer.echo(result.toml)
+    for path in result.written:
         typer.echo(f"wrote {path}", err=True)
 
 

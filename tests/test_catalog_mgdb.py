@@ -9,7 +9,8 @@ from pathlib import Path
 import pytest
 
 from sizing.io.catalog import load_catalog
-from sizing.io.mgdb import MGDB_COMMIT, import_mgdb
+from sizing.api import catalog_import_mgdb as import_mgdb
+from sizing.io.mgdb import MGDB_COMMIT
 
 from .conftest import run_cli
 

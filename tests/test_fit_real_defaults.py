@@ -84,7 +84,7 @@ def default_fit(offset_runs, tmp_path_factory):
     here = os.getcwd()
     os.chdir(tmp_path_factory.mktemp("out"))
     try:
-        result = api.fit_hysteresis(paths, holdout=["a120"], catalog_entry="fitted-stack")
+        result = dict(api.fit_hysteresis(paths, holdout=["a120"], catalog_entry="fitted-stack"))
         result["cwd"] = Path(os.getcwd())
         return result
     finally:

@@ -283,6 +283,16 @@ def _write_files(paths: list[Path], contents: list) -> None:
             leftover.unlink(missing_ok=True)
 
 
+@contextlib.contextmanager
+def scratch_folder(files: Mapping[str, Content], prefix: str = "sizing-"):
+    """A temporary folder holding ``files`` ({name: content}), removed after
+    the block: a command reads back what it would write before writing it."""
+    with tempfile.TemporaryDirectory(prefix=prefix) as tmp:
+        for name, content in files.items():
+            _write(Path(tmp) / name, content)
+        yield Path(tmp)
+
+
 def write_text(path: str | Path, text: str, inputs: Iterable = ()) -> None:
     """One file, atomically (``write_files`` with a single entry)."""
     write_files({Path(path): text}, inputs)

@@ -20,13 +20,11 @@ import csv
 import datetime as dt
 import json
 import re
-import shutil
-import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import InputError
-from .atomic import write_text
+from .atomic import scratch_folder
 from .catalog import DEFAULT_CATALOG, KINDS, Entry, load_catalog
 from .schema import parse_model
 
@@ -39,9 +37,10 @@ TEXT_FIELDS = ("material", "type", "section", "derivative_on")
 
 @dataclass
 class ImportResult:
-    file: Path            # the catalog file written
+    file: Path            # the catalog file to write
     kind: str             # "stack", ...
     ids: list[str]        # entries added, in sheet order
+    text: str = ""        # the catalog file with them appended
 
 
 def resolve_kind(kind: str) -> tuple[str, str, type[Entry]]:
@@ -227,9 +226,10 @@ def entry_toml(array: str, raw: dict) -> str:
     return "\n".join(lines) + "\n"
 
 
-def add_parts(kind: str, csv_path: str | Path, catalog_dir: str | Path | None = None) -> ImportResult:
-    """Validate the sheet, append its parts to the kind's catalog file
-    (atomically) and check the whole catalog still loads and is plausible."""
+def plan_parts(kind: str, csv_path: str | Path, catalog_dir: str | Path | None = None) -> ImportResult:
+    """Validate the sheet and give the kind's catalog file with its parts
+    appended (``ImportResult.text``), checked to load back with the whole
+    catalog; ``api.catalogs`` writes it."""
     file_name, array, model = resolve_kind(kind)
     folder = Path(catalog_dir) if catalog_dir is not None else DEFAULT_CATALOG
     catalog = load_catalog(folder)
@@ -245,14 +245,10 @@ def add_parts(kind: str, csv_path: str | Path, catalog_dir: str | Path | None = 
     block = f"\n# Added by `sizing catalog add {array} {Path(csv_path).name}` on {stamp}.\n" + \
         "\n".join(entry_toml(array, raw) for _, _, raw in parsed)
     new = old.rstrip("\n") + "\n" + block
-    with tempfile.TemporaryDirectory(prefix="sizing-add-") as tmp:
-        for name in KINDS:
-            if (folder / name).exists():
-                shutil.copy(folder / name, Path(tmp) / name)
-        (Path(tmp) / file_name).write_text(new, encoding="utf-8")
+    files = {name: (folder / name).read_bytes() for name in KINDS if (folder / name).exists()}
+    with scratch_folder({**files, file_name: new}, prefix="sizing-add-") as tmp:
         try:
             load_catalog(tmp)   # the written text reads back
         except InputError as exc:
             raise InputError(str(csv_path), exc.field, f"{exc.message} (in the {file_name} this sheet would give)") from None
-    write_text(target, new)
-    return ImportResult(file=target, kind=array, ids=[entry.id for _, entry, _ in parsed])
+    return ImportResult(file=target, kind=array, ids=[entry.id for _, entry, _ in parsed], text=new)

@@ -28,14 +28,12 @@ import datetime as dt
 import fnmatch
 import math
 import re
-import shutil
-import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..errors import InputError
 from ..units import UnitError, to_si
-from .atomic import write_files
+from .atomic import scratch_folder
 from .catalog import DEFAULT_CATALOG, KINDS, Gear, Motor, Screw, load_catalog
 from .catalog_import import entry_toml
 from .schema import parse_model
@@ -487,10 +485,12 @@ def _plausible(catalog, data: MgdbImport) -> None:
             raise InputError(where, f"{key.removeprefix('key ')}: {field_name}".strip(": "), problem.message)
 
 
-def import_mgdb(mgdb_dir: str | Path, screws_csv: str | Path | None = None,
-                catalog_dir: str | Path | None = None) -> dict:
-    """Write motors-mgdb.toml, gears-mgdb.toml (and screws-sourced.toml when
-    ``screws_csv`` is given) into the catalog folder; returns counts."""
+def plan_mgdb(mgdb_dir: str | Path, screws_csv: str | Path | None = None,
+              catalog_dir: str | Path | None = None) -> tuple[dict, dict[Path, str]]:
+    """motors-mgdb.toml, gears-mgdb.toml (and screws-sourced.toml when
+    ``screws_csv`` is given) for the catalog folder, checked to load back
+    and be plausible with the rest of it: (counts, {path: text});
+    ``api.catalogs`` writes them."""
     data = build(mgdb_dir, screws_csv)
     folder = Path(catalog_dir) if catalog_dir is not None else DEFAULT_CATALOG
     command = "sizing catalog import-mgdb"
@@ -498,13 +498,9 @@ def import_mgdb(mgdb_dir: str | Path, screws_csv: str | Path | None = None,
              OUT_FILES["gear"]: _file_text("gear", data.gears, command)}
     if screws_csv is not None:
         texts[OUT_FILES["screw"]] = _file_text("screw", data.screws, command)
-    with tempfile.TemporaryDirectory(prefix="sizing-mgdb-") as tmp:
-        for name in KINDS:
-            if (folder / name).exists() and name not in texts:
-                shutil.copy(folder / name, Path(tmp) / name)
-        for name, text in texts.items():
-            (Path(tmp) / name).write_text(text, encoding="utf-8")
+    kept = {name: (folder / name).read_bytes() for name in KINDS if (folder / name).exists() and name not in texts}
+    with scratch_folder({**kept, **texts}, prefix="sizing-mgdb-") as tmp:
         _plausible(load_catalog(tmp), data)     # the written text reads back, and is physically plausible
-    write_files({folder / name: text for name, text in texts.items()}, (), "--catalog")
-    return {"motors": len(data.motors), "gears": len(data.gears), "screws": len(data.screws),
-            "skipped": data.skipped, "files": sorted(texts)}
+    counts = {"motors": len(data.motors), "gears": len(data.gears), "screws": len(data.screws),
+              "skipped": data.skipped, "files": sorted(texts)}
+    return counts, {folder / name: text for name, text in texts.items()}

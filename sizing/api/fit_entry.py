@@ -8,7 +8,7 @@ named with ``--prior-stack`` (its statuses kept), or, when none is named, the
 seed's Table 1 stack with every copied value marked ``assumed`` so that
 ``sizing catalog list`` counts them and nobody mistakes them for the
 measured stack's datasheet. Pure: raw dicts in, raw dict / text out; the
-workflow reads the base entry and validates and writes the result: ID.toml
+command (``api.fitting``) reads the base entry, validates it and writes ID.toml
 (a ``[[stack]]`` block for a catalog file) and ID.csv (a one-row sheet for
 ``sizing catalog add stack ID.csv``).
 """
@@ -19,7 +19,7 @@ import csv
 import datetime as dt
 import io
 
-from .bouc_wen import PARAM_NAMES
+from ..fit.bouc_wen import PARAM_NAMES
 
 
 def stack_entry(base: dict, entry_id: str, params, sources: list[str], base_named: bool, prior_note: str,

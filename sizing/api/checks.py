@@ -1,0 +1,77 @@
+"""Checks of a command's inputs before any work: simulation steps within the
+limit (``sizing.limits``), an envelope some stack fits in, and the JSON files
+an earlier command wrote. Each refusal is an InputError (exit 2, one line)."""
+from __future__ import annotations
+
+from pathlib import Path
+
+from ..errors import InputError
+from ..io.catalog import Catalog
+from ..io.design import PiezoDesignFile
+
+
+def n_loads(load) -> int:
+    return len(load.force) if load.force is not None else len(load.dynamic_pressure)
+
+
+def check_evaluate_steps(design, cat: Catalog, file: str) -> None:
+    """Refuse a design whose simulation would need more steps than the
+    limit: duration x rate x load cases."""
+    from ..engine.dc import OUTPUT_RATE_HZ
+    from ..engine.verify import SETTLE_TIME_S
+    from ..limits import check_steps, dc_steps, piezo_steps
+    if isinstance(design, PiezoDesignFile):
+        check_steps(piezo_steps(design.rise_time + SETTLE_TIME_S, n_loads(design.load)), file, "rise_time",
+                    "simulation steps (rise time x 20 kHz x load cases)")
+    elif design.actuator in cat.dc_actuators:
+        rate = cat.dc_actuators[design.actuator].pid.rate
+        check_steps(dc_steps(design.duration, rate, n_loads(design.load), OUTPUT_RATE_HZ), file, "duration",
+                    f"simulation steps (duration x {max(rate, OUTPUT_RATE_HZ):g} Hz x load cases)")
+
+
+def check_solve_steps(req, cat: Catalog, file: str) -> None:
+    """Refuse requirements whose verification would need more steps than
+    the limit: simulated candidates x load cases x stroke time."""
+    from ..engine.dc import OUTPUT_RATE_HZ
+    from ..engine.dc_candidates import dc_duration
+    from ..engine.verify import SETTLE_TIME_S
+    from ..limits import check_steps, dc_steps, piezo_steps
+    n = n_loads(req.load)
+    steps = piezo_steps(req.stroke_time + SETTLE_TIME_S, n * req.options.max_simulated)
+    if req.options.dc_motors:
+        steps += sum(dc_steps(dc_duration(req), act.pid.rate, n, OUTPUT_RATE_HZ) for act in cat.dc_actuators.values())
+    check_steps(steps, file, "[requirements].stroke",
+                "simulation steps (candidates x load cases x stroke / speed)")
+    check_envelope(req, cat, file)
+
+
+def check_envelope(req, cat: Catalog, file: str) -> None:
+    """Refuse an envelope that no stack fits in: shorter than the shortest
+    stack or narrower than the thinnest one."""
+    env, stacks = req.envelope, list(cat.stacks.values())
+    if not stacks:
+        return
+    for field, limit, need, what in (("max_length", env.max_length, min(s.length for s in stacks), "length"),
+                                     ("max_diameter", env.diameter, min(s.diameter for s in stacks), "diameter")):
+        if limit is not None and limit < need:
+            raise InputError(file, f"[envelope].{field}",
+                             f"expected room for at least one stack: the smallest stack {what} is "
+                             f"{need * 1e3:g} mm, the envelope gives {limit * 1e3:g} mm")
+
+
+def one_of(value, choices, option: str) -> None:
+    """An option that takes one of a few words."""
+    if value not in choices:
+        words = " or ".join(f'"{c}"' for c in choices if c is not None)
+        raise InputError(None, option, f"expected {words}, got {value!r}")
+
+
+def read_json(path: Path, what: str, writer: str):
+    """A JSON file a command wrote (exit 2, one line, when it is not JSON)."""
+    import json
+
+    from ..io.schema import read_input_bytes
+    try:
+        return json.loads(read_input_bytes(path, f"a {what}").decode("utf-8"))
+    except (json.JSONDecodeError, UnicodeDecodeError, RecursionError) as exc:
+        raise InputError(str(path), None, f"expected a {what} written by {writer} ({exc})") from None

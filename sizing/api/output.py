@@ -1,0 +1,93 @@
+"""Writing a command's result: the one step every command shares.
+
+A command first computes its result (``api.solution``, ``api.studies``, ...),
+which names the files it stands for (``files()``); ``write`` then hands them
+to the atomic writer (``io.atomic``), so every command's outputs are complete
+or untouched. ``check`` runs before any work, so a bad ``--out`` costs
+nothing.
+
+Two layouts:
+
+- ``"folder"`` (solve, robust, sweep, diagnose): ``files()`` maps names
+  inside the output folder to their contents, swapped in at once;
+- ``"files"`` (fit, catalog add, catalog import-mgdb): ``files()`` maps
+  paths to contents, each renamed over its path together.
+
+A content is text, bytes, or a callable giving them, so a large page or the
+plotly bundle is made only while it is written.
+"""
+from __future__ import annotations
+
+from collections.abc import Mapping
+from pathlib import Path
+from typing import ClassVar
+
+from ..io.atomic import check_files, check_folder, write_files, write_folder
+from ..report.bundle import PLOTLY_FILE       # a constant; the bundle itself loads only when written
+
+
+class Payload(Mapping):
+    """A result read as the mapping it carries (``_payload()``), so callers
+    that index a command's return value (``result["static"]``) keep working."""
+
+    def _payload(self) -> Mapping:
+        raise NotImplementedError
+
+    def __getitem__(self, key):
+        return self._payload()[key]
+
+    def __iter__(self):
+        return iter(self._payload())
+
+    def __len__(self) -> int:
+        return len(self._payload())
+
+
+def plotly_js() -> str:
+    """The folder's plotly bundle (report/bundle.py), made only when written."""
+    from ..report.bundle import plotly_js as bundle
+    return bundle()
+
+
+def check(dest, names, inputs=(), layout: str = "folder", option: str = "--out") -> None:
+    """Before any work: ``dest`` can take the outputs ``names`` (a folder),
+    or each of ``names`` can be written as a file (``layout="files"``)."""
+    if layout == "folder":
+        check_folder(dest, names, inputs=inputs, option=option)
+    else:
+        check_files(names, inputs=inputs, option=option)
+
+
+def write(result, dest: str | Path | None = None, option: str = "--out") -> list[str]:
+    """Write ``result.files()`` (never over one of ``result.inputs``); returns
+    the paths written. ``dest``: the output folder of a folder result."""
+    files = result.files()
+    if result.layout == "files":
+        return [str(p) for p in write_files(files, inputs=result.inputs, option=option)]
+    write_folder(dest, files, inputs=result.inputs, option=option)
+    return [str(Path(dest) / name) for name in files]
+
+
+def produce(names, dest, inputs, compute):
+    """Every folder command's shape: check ``dest`` before any work (when
+    given), ``compute()`` the result, write it into ``dest``; returns it."""
+    if dest is not None:
+        check(dest, names, inputs)
+    result = compute()
+    if dest is not None:
+        write(result, dest)
+    return result
+
+
+class Written:
+    """What a result that writes files declares: its layout, the inputs it
+    must never overwrite and ``files()``."""
+
+    layout: ClassVar[str] = "folder"
+    inputs: tuple
+
+    def files(self) -> dict:
+        raise NotImplementedError
+
+
+__all__ = ["PLOTLY_FILE", "Payload", "Written", "check", "plotly_js", "produce", "write"]

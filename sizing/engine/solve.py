@@ -42,6 +42,7 @@ from .dc_sizing import dc_parts_candidates
 from .evaluate import load_cases
 from .piezo import Candidates
 from .piezo_designs import effective_gap, sizing_input, variants  # noqa: F401  (the module's API)
+from .pump import pump_candidates
 from .rank import nondominated_levels, rank_order, verdict
 from .records import PiezoDesign, Simulation, Stages, Variant, VerifiedDesign  # noqa: F401  (the module's API)
 from .search import Combo, enumerate_combos
@@ -68,80 +69,124 @@ def _progress(callback, stage, done, total):
         callback(stage, done, total)
 
 
+@dataclass(frozen=True)
+class Outcome:
+    """One technology's part of a solve: its candidate records (results.json
+    ``candidates``), what it ruled out without recording, by reason, the
+    one-line records of designs that are not designs (results.json
+    ``ruled_out``) and its own counts."""
+
+    technology: str
+    candidates: list
+    ruled_out: Counter = field(default_factory=Counter)
+    records: tuple = ()
+    counts: dict = field(default_factory=dict)
+
+    @property
+    def ruled_out_all(self) -> Counter:
+        return self.ruled_out + Counter(r["reason"] for r in self.records)
+
+
 def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, progress=None,
           detail: str = "summary") -> SolveOutput:
-    """Run the whole search. ``progress(stage, done, total)`` is called while
-    candidates are sized and simulated. ``detail``: "summary" counts the
-    combinations ruled out before sizing by reason; "full" also keeps a
-    record of each, with the nominal figures of its parts."""
+    """Run the whole search: each technology enumerates, sizes and verifies
+    its designs (``_piezohydraulic``, ``_dc_motor``), then all are ranked in
+    one list. ``progress(stage, done, total)`` is called while candidates are
+    sized and simulated. ``detail``: "summary" counts the combinations ruled
+    out before sizing by reason; "full" also keeps a record of each, with the
+    nominal figures of its parts."""
     start = time.perf_counter()
     cases = load_cases(req.load)
     loads = [c["load_N"] for c in cases]
-    combos = enumerate_combos(req, catalog)
-    to_size = [c for c in combos if not c.pruned]
-    sized = piezo_designs.size(req, catalog, to_size, progress)
-    designs = piezo_designs.designs(req, catalog, sized)
-    verified = [VerifiedDesign(d, sim) for d, sim in zip(designs, _simulate(req, designs, loads, progress))]
-    pruned = [c for c in combos if c.pruned]
-    ruled_out = Counter(_pruned_reason(c) for c in pruned)
-    piezo_pruned = Counter(ruled_out)
-    dc_ruled = Counter()
-    candidates = []
-    if detail == "full":
-        candidates = [pruned_candidate(c) for c in pruned]
-        piezo_designs.nominal_figures(req, catalog, pruned, candidates)
-    excluded = []
-    for v in verified:
-        record = ruled_out_record(v.design)
-        if record is not None:
-            excluded.append(record)
-            ruled_out[record["reason"]] += 1
-            continue
-        candidates.append(design_candidate(req, v))
-    dc = dc_candidates(req, catalog, loads) if req.options.dc_motors else []
-    candidates.extend(dc["candidates"] if dc else [])
-    parts = dc_parts_candidates(req, catalog, loads, progress) if req.options.dc_motors else {}
-    for reason, count in parts.get("ruled_out", {}).items():
-        dc_ruled[reason] += count
-    for c in parts.get("candidates", []):
-        if c.get("stage") == "pruned" and detail != "full":
-            dc_ruled[_dc_pruned_reason(c)] += 1
-        else:
-            candidates.append(c)
-    ruled_out.update(dc_ruled)
-    if dc:
-        dc["models"] = parts.get("models", {})
+    piezo, verified = _piezohydraulic(req, catalog, loads, progress, detail)
+    dc, dc_models = _dc_motor(req, catalog, loads, progress, detail)
+    outcomes = (piezo, dc, _piezo_pump(req, catalog, loads, progress))
+    candidates = [c for o in outcomes for c in o.candidates]
     _rank(req, candidates)
     candidates.sort(key=lambda c: c["rank"])
     assumed.fill(catalog, candidates)
     names.fill(candidates)
-    results = {
-        "tool_version": __version__,
-        "requirements_sha256": requirements_sha256,
-        "catalog_sha256": catalog.sha256,
-        "candidates": candidates,
-        "ruled_out": excluded,
-        "requirements": _requirements_si(req),
-        "load_cases": cases,
-        "objectives": list(req.objectives.minimize),
-        "assumptions": _assumptions(req),
-        "summary": dict(_summary(req, candidates, catalog, piezo_pruned), ruled_out=dict(ruled_out.most_common()),
-                        ruled_out_by_technology={
-                            "piezohydraulic": dict((piezo_pruned + Counter(x["reason"] for x in excluded)).most_common()),
-                            "dc_motor": dict(dc_ruled.most_common())}),
-        "disagreements": _disagreements(verified),
-        "hysteresis_time_scales": piezo_designs.hysteresis_time_scales(catalog),
-        "counts": {"combinations": len(combos), "pruned": len(combos) - len(to_size), "sized": len(to_size),
-                   "gp_feasible": sum(1 for d in designs if d.gp.success),
-                   "simulated": sum(1 for v in verified if v.simulation is not None),
-                   "dc_parts": _dc_counts(parts)},
-    }
     stages = Stages.of(verified)
-    traces = _traces(req, candidates, stages, dc, loads)
+    results = _results(req, requirements_sha256, catalog, cases, candidates, outcomes)
+    results["disagreements"] = _disagreements(verified)
+    traces = _traces(req, candidates, stages, dc_models, loads)
     if detail != "full":
         _keep_verified(results)
     results["runtime_s"] = time.perf_counter() - start
     return SolveOutput(results=_clean(results), traces=traces, stages=stages)
+
+
+def _results(req, requirements_sha256, catalog, cases, candidates, outcomes) -> dict:
+    """results.json from the ranked candidates and each technology's outcome."""
+    piezo = outcomes[0]
+    ruled_out = sum((o.ruled_out_all for o in outcomes), Counter())
+    counts = dict(piezo.counts, dc_parts=outcomes[1].counts)
+    counts.update({o.technology: o.counts for o in outcomes[2:]})
+    return {
+        "tool_version": __version__,
+        "requirements_sha256": requirements_sha256,
+        "catalog_sha256": catalog.sha256,
+        "candidates": candidates,
+        "ruled_out": [r for o in outcomes for r in o.records],
+        "requirements": _requirements_si(req),
+        "load_cases": cases,
+        "objectives": list(req.objectives.minimize),
+        "assumptions": _assumptions(req),
+        "summary": dict(_summary(req, candidates, catalog, piezo.ruled_out), ruled_out=dict(ruled_out.most_common()),
+                        ruled_out_by_technology={o.technology: dict(o.ruled_out_all.most_common()) for o in outcomes}),
+        "disagreements": [],
+        "hysteresis_time_scales": piezo_designs.hysteresis_time_scales(catalog),
+        "counts": counts,
+    }
+
+
+def _piezohydraulic(req, catalog, loads, progress, detail) -> tuple[Outcome, list[VerifiedDesign]]:
+    """Enumerate, size, build and verify the piezohydraulic designs."""
+    combos = enumerate_combos(req, catalog)
+    to_size = [c for c in combos if not c.pruned]
+    pruned = [c for c in combos if c.pruned]
+    sized = piezo_designs.size(req, catalog, to_size, progress)
+    designs = piezo_designs.designs(req, catalog, sized)
+    verified = [VerifiedDesign(d, sim) for d, sim in zip(designs, _simulate(req, designs, loads, progress))]
+    candidates = []
+    if detail == "full":
+        candidates = [pruned_candidate(c) for c in pruned]
+        piezo_designs.nominal_figures(req, catalog, pruned, candidates)
+    records = []
+    for v in verified:
+        record = ruled_out_record(v.design)
+        if record is None:
+            candidates.append(design_candidate(req, v))
+        else:
+            records.append(record)
+    counts = {"combinations": len(combos), "pruned": len(pruned), "sized": len(to_size),
+              "gp_feasible": sum(1 for d in designs if d.gp.success),
+              "simulated": sum(1 for v in verified if v.simulation is not None)}
+    return Outcome("piezohydraulic", candidates, Counter(_pruned_reason(c) for c in pruned), tuple(records),
+                   counts), verified
+
+
+def _dc_motor(req, catalog, loads, progress, detail) -> tuple[Outcome, dict]:
+    """The catalog's DC actuators and those sized from parts; also what the
+    report's traces re-simulate (the actuators and the models by id)."""
+    if not req.options.dc_motors:
+        return Outcome("dc_motor", [], counts=_dc_counts({})), {}
+    dc = dc_candidates(req, catalog, loads)
+    parts = dc_parts_candidates(req, catalog, loads, progress)
+    ruled = Counter(parts.get("ruled_out", {}))
+    candidates = list(dc["candidates"])
+    for c in parts.get("candidates", []):
+        if c.get("stage") == "pruned" and detail != "full":
+            ruled[_dc_pruned_reason(c)] += 1
+        else:
+            candidates.append(c)
+    return Outcome("dc_motor", candidates, ruled, (), _dc_counts(parts)), dict(dc, models=parts.get("models", {}))
+
+
+def _piezo_pump(req, catalog, loads, progress) -> Outcome:
+    """The frequency-rectified piezo pump (``pump.py``)."""
+    out = pump_candidates(req, catalog, loads, progress)
+    return Outcome("piezo_pump", out["candidates"], out["ruled_out"], (), out["counts"])
 
 
 # --- verification ---------------------------------------------------------

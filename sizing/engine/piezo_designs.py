@@ -14,14 +14,13 @@ import numpy as np
 from ..io.catalog import Catalog
 from ..io.requirements import RequirementsFile
 from ..physics import bouc_wen, fluid as fluid_props
-from ..physics import amplifier, geometry, load as load_phys, stack as stack_phys, structure, thermal
+from ..physics import amplifier, geometry, stack as stack_phys, structure, thermal
 from ..physics.bouc_wen import BoucWen
 from . import force_path
 from .convex import GPSizer, SizingInput
-from .evaluate import load_cases
 from .piezo import Candidates, part_row, reference_bouc_wen, stack_bouc_wen, structure_row
 from .rank import ceiling_margin, floor_margin
-from .records import PiezoDesign, Variant, frozen
+from .records import PiezoBrief, PiezoDesign, Variant, brief_of, frozen
 from .search import Combo, temperature_margin
 from .convex import DEFAULT_MAX_MASS, NO_LIMIT
 from .verify import (GAP_CLEARANCE_M, GAP_TOLERANCE_M, STACK_SPACING_M, drive_figures, metrics, ramp_time,
@@ -35,15 +34,16 @@ def _progress(callback, stage, done, total):
         callback(stage, done, total)
 
 
-def effective_gap(req: RequirementsFile, stack_free_stroke: float) -> float:
+def effective_gap(brief: PiezoBrief | RequirementsFile, stack_free_stroke: float) -> float:
     """The smallest wide gap: the stack stroke plus a clearance and a
     manufacturing tolerance (a gap below the stroke bottoms the wide piston
     out), or the requirements' floor when that is larger."""
-    return max(req.options.wide_gap or 0.0, stack_free_stroke + GAP_CLEARANCE_M + GAP_TOLERANCE_M)
+    return max(brief_of(brief).wide_gap_floor, stack_free_stroke + GAP_CLEARANCE_M + GAP_TOLERANCE_M)
 
 
-def sizing_input(req: RequirementsFile, c: Combo, material=None, compensator=None) -> SizingInput:
-    T = req.requirements.max_temperature
+def sizing_input(brief: PiezoBrief | RequirementsFile, c: Combo, material=None, compensator=None) -> SizingInput:
+    b = brief_of(brief)
+    T = b.temperature
     f, s, st = c.fluid, c.seal, c.stack
     material = material if material is not None else force_path.default_material({})
     stack_volume = st.length * st.diameter**2 * (1.0 if st.section == "square" else math.pi / 4)
@@ -51,18 +51,17 @@ def sizing_input(req: RequirementsFile, c: Combo, material=None, compensator=Non
                    if compensator is not None and compensator.kind == "accumulator" else 0.0)
     return SizingInput(
         n_stiffness=c.n * st.stiffness, stack_stroke=c.stack_stroke, rated_voltage=st.max_voltage,
-        max_fraction=c.voltage_fraction_max, force=req.requirements.blocked_force,
-        stroke=req.requirements.stroke,
+        max_fraction=c.voltage_fraction_max, force=b.blocked_force, stroke=b.stroke,
         bulk_modulus=float(fluid_props.bulk_modulus_at(f.bulk_modulus, f.bulk_modulus_temperature_coefficient, T)),
-        wide_gap=req.options.wide_gap or 0.0, gap_allowance=GAP_CLEARANCE_M + GAP_TOLERANCE_M,
-        max_length=req.envelope.max_length or NO_LIMIT, max_diameter=req.envelope.diameter or NO_LIMIT,
-        max_mass=req.envelope.max_mass or DEFAULT_MAX_MASS, pressure_rating=s.pressure_rating,
-        natural_frequency=req.natural_frequency, stroke_time=req.stroke_time,
-        n_capacitance=c.n * st.capacitance, max_current=_drive_limit(req, c.amplifier),
-        margin=req.options.design_margin,
+        wide_gap=b.wide_gap_floor, gap_allowance=GAP_CLEARANCE_M + GAP_TOLERANCE_M,
+        max_length=b.max_length or NO_LIMIT, max_diameter=b.max_diameter or NO_LIMIT,
+        max_mass=b.max_mass or DEFAULT_MAX_MASS, pressure_rating=s.pressure_rating,
+        natural_frequency=b.natural_frequency, stroke_time=b.stroke_time,
+        n_capacitance=c.n * st.capacitance, max_current=b.max_amplifier_units * _unit_current(b, c.amplifier),
+        margin=b.design_margin,
         fixed_mass=c.n * st.mass + (compensator.mass if compensator else 0.0),
         amp_unit_mass=c.amplifier.mass, amp_unit_cost=c.amplifier.cost_usd,
-        amp_unit_current=_unit_current(req, c.amplifier),
+        amp_unit_current=_unit_current(b, c.amplifier),
         fixed_cost=(c.n * st.cost_usd + 2 * s.cost_usd + geometry.FIXED_HYDRAULIC_USD
                     + (compensator.cost_usd if compensator else 0.0)),
         fixed_volume=1.5 * c.n * stack_volume,
@@ -71,49 +70,40 @@ def sizing_input(req: RequirementsFile, c: Combo, material=None, compensator=Non
         youngs_modulus=material.youngs_modulus, poisson=material.poisson, material_density=material.density,
         material_unit_cost=material.cost_usd + geometry.MACHINING_USD_PER_KG,
         allowable_stress=material.yield_strength / force_path.STRESS_SAFETY, stack_length=st.length,
-        stiffness_ratio=req.options.structure_stiffness_ratio,
+        stiffness_ratio=b.stiffness_ratio,
         packing_area=math.pi / 4 * float(structure.packing_diameter(c.n, st.diameter, STACK_SPACING_M)) ** 2,
         accumulator_compliance=accumulator, seal_f0=s.friction_per_length, seal_cp=s.friction_pressure_coefficient,
-        surface_mass=_surface_mass(req))
+        surface_mass=b.surface_mass)
 
 
-def _unit_current(req: RequirementsFile, amp) -> float:
+def _unit_current(b: PiezoBrief, amp) -> float:
     """What one amplifier unit holds over the planned ramp (half the stroke
     time), A: its peak within the rated pulse, else its continuous rating."""
     return float(amplifier.usable_ramp_current(amp.max_current, amp.continuous_current, amp.peak_duration,
-                                               req.stroke_time / 2))
+                                               b.stroke_time / 2))
 
 
-def _drive_limit(req: RequirementsFile, amp) -> float:
-    """The most current the drive may carry over the stroke time, A: every
-    unit the options allow, each at what it holds for that long."""
-    return req.options.max_amplifier_units * _unit_current(req, amp)
-
-
-def _surface_mass(req: RequirementsFile) -> float:
-    L = req.load
-    return 0.0 if L.force is not None else float(load_phys.tip_equivalent_mass(L.span, L.chord, L.thickness, L.density))
-
-
-def variants(req: RequirementsFile, catalog: Catalog) -> list[Variant]:
+def variants(brief: PiezoBrief | RequirementsFile, catalog: Catalog) -> list[Variant]:
     """Every structure material rated to the requirement, each as built and
     with each catalog compensator rated to it (when compensation is on)."""
-    T = req.requirements.max_temperature
+    b = brief_of(brief)
+    T = b.temperature
     mats = [m for m in catalog.materials.values() if m.max_temperature >= T] or [force_path.default_material({})]
-    comps = [c for c in catalog.compensators.values() if c.max_temperature >= T] if req.options.thermal_compensation else []
+    comps = [c for c in catalog.compensators.values() if c.max_temperature >= T] if b.thermal_compensation else []
     return [Variant(m, comp) for m in mats for comp in [None, *comps]]
 
 
-def size(req, catalog, combos, progress=None):
+def size(brief: PiezoBrief | RequirementsFile, catalog, combos, progress=None):
     """One geometric program per combination, as built and with each open
     accumulator, in the default structure material; the other materials
     get the same member stiffnesses re-sized in closed form (a cheap,
     vectorisable screen: the force path is unchanged, mass and cost and
     the thermal budget follow the material). An orifice reservoir adds no
     stiffness, so it reuses the as-built sizing."""
-    sizer = GPSizer(req.objectives.minimize)
+    b = brief_of(brief)
+    sizer = GPSizer(list(b.objectives))
     out = []
-    vs = variants(req, catalog)
+    vs = variants(b, catalog)
     base = force_path.default_material(catalog.materials)
     if base.id not in {v.material.id for v in vs}:
         base = vs[0].material
@@ -122,17 +112,17 @@ def size(req, catalog, combos, progress=None):
         for v in vs:
             key = v.compensator.id if v.compensator is not None and v.compensator.kind == "accumulator" else None
             if key not in solved:
-                solved[key] = sizer.solve(sizing_input(req, c, base, v.compensator if key else None))
+                solved[key] = sizer.solve(sizing_input(b, c, base, v.compensator if key else None))
             res = solved[key]
             if v.material.id != base.id and math.isfinite(res.cap_thickness):
-                res = _resized(req, c, res, base, v.material)
+                res = _resized(c, res, base, v.material)
             out.append((c, v, res))
         if i % 8 == 0 or i == len(combos) - 1:
             _progress(progress, "sizing", i + 1, len(combos))
     return out
 
 
-def _resized(req, c: Combo, res, old, new):
+def _resized(c: Combo, res, old, new):
     v = min(res.voltage_fraction, c.voltage_fraction_max)
     x = c.stack_stroke * v
     t_p = float(geometry.plate_thickness(res.wide_area, c.seal.pressure_rating))
@@ -142,11 +132,12 @@ def _resized(req, c: Combo, res, old, new):
     return replace(res, cap_thickness=t, frame_area=area)
 
 
-def designs(req, catalog, sized) -> list[PiezoDesign]:
+def designs(brief: PiezoBrief | RequirementsFile, catalog, sized) -> list[PiezoDesign]:
     """Build the sized designs with the same code as ``sizing evaluate``;
     then, for as-built designs that drift, the passive variant. ``sized``:
     (Combo, Variant, SizingResult) triples; each design's ``origin`` is its
     triple's index (a passive design's, its parent's)."""
+    b = brief_of(brief)
     reference = reference_bouc_wen(catalog.stacks)
     spacer = force_path.spacer_material(catalog.materials)
     pending = [PiezoDesign(origin=i, id=combo.key + var.suffix(), combo=combo, variant=var, gp=res,
@@ -154,20 +145,20 @@ def designs(req, catalog, sized) -> list[PiezoDesign]:
                                      if math.isfinite(res.ratio) and math.isfinite(res.wide_area) else None))
                for i, (combo, var, res) in enumerate(sized)]
     buildable = [d for d in pending if d.bouc_wen is not None]
-    built = dict(zip((d.origin for d in buildable), _build(req, buildable, spacer)))
+    built = dict(zip((d.origin for d in buildable), _build(b, buildable, spacer)))
     as_built = [built.get(d.origin, d) for d in pending]
     passive = []
     for d in as_built:
         if not d.built or d.variant.compensator is not None:
             continue
-        length = _spacer_length(req, d, spacer)
+        length = _spacer_length(b, d, spacer)
         if length > 0:
             var = Variant(d.variant.material, None, True)
             passive.append(replace(d, variant=var, spacer=length, id=d.combo.key + var.suffix()))
-    return as_built + _build(req, passive, spacer)
+    return as_built + _build(b, passive, spacer)
 
 
-def _spacer_length(req, d: PiezoDesign, spacer) -> float:
+def _spacer_length(b: PiezoBrief, d: PiezoDesign, spacer) -> float:
     """Low-expansion spacer in the stack column (the frame longer by as
     much) that brings the as-built thermal budget to zero: net / (R
     (alpha_frame - alpha_spacer) dT). 0 when the design does not drift
@@ -175,8 +166,7 @@ def _spacer_length(req, d: PiezoDesign, spacer) -> float:
     expands no more than the spacer."""
     st = d.static
     net = st["thermal_net_m"]
-    allowed = req.options.max_drift_fraction * req.requirements.stroke
-    dT = req.requirements.max_temperature - req.options.drift_reference_temperature
+    allowed, dT = b.allowed_drift, b.delta_T
     d_alpha = d.variant.material.thermal_expansion - spacer.thermal_expansion
     if abs(net) <= allowed or net <= 0 or d_alpha <= 0 or dT <= 0:
         return 0.0
@@ -184,34 +174,33 @@ def _spacer_length(req, d: PiezoDesign, spacer) -> float:
     return length if length < MAX_SPACER_M else 0.0
 
 
-def _build(req, pending: list[PiezoDesign], spacer) -> list[PiezoDesign]:
+def _build(b: PiezoBrief, pending: list[PiezoDesign], spacer) -> list[PiezoDesign]:
     """The designs with their candidate row, static figures, metrics, force
     path and static margins, in the order given (new records)."""
     if not pending:
         return []
-    T, S = req.requirements.max_temperature, req.requirements.stroke
+    T, S = b.temperature, b.stroke
     rows, rise = [], []
     for d in pending:
         combo, res, var = d.combo, d.gp, d.variant
         v = min(res.voltage_fraction, combo.voltage_fraction_max)
         free = res.ratio * combo.stack_stroke * v
-        rise.append(0.5 * req.stroke_time * free / S)          # reach the stroke in half the time allowed
+        rise.append(0.5 * b.stroke_time * free / S)          # reach the stroke in half the time allowed
         struct = structure_row(var.material, res.cap_thickness, res.frame_area, spacer, d.spacer,
-                               var.compensator, _surface_mass(req), T - req.options.drift_reference_temperature)
+                               var.compensator, b.surface_mass, b.delta_T)
         rows.append(part_row(combo.stack, combo.n, res.ratio, res.wide_area, v * combo.stack.max_voltage,
                              d.bouc_wen[0], T,
-                             max(res.wide_gap, effective_gap(req, combo.stack_stroke * v) * (1 + 1e-9)),
+                             max(res.wide_gap, effective_gap(b, combo.stack_stroke * v) * (1 + 1e-9)),
                              combo.fluid, combo.seal, combo.amplifier, structure=struct))
     c = Candidates.from_rows(rows)
     rise = np.array(rise)
-    needed = drive_figures(c, rise, req.duty.strokes_per_second)["amplifier_units_needed"]
-    c.amp_units = np.minimum(needed, req.options.max_amplifier_units).astype(float)
+    needed = drive_figures(c, rise, b.strokes_per_second)["amplifier_units_needed"]
+    c.amp_units = np.minimum(needed, b.max_amplifier_units).astype(float)
     ramp = ramp_time(c, rise)
-    static = static_figures(c, ramp, req.duty.strokes_per_second)
+    static = static_figures(c, ramp, b.strokes_per_second)
     met = metrics(c, ramp)
     members = force_path.members(c)
-    loads = [case["load_N"] for case in load_cases(req.load)]
-    p_load = max(loads) / c.narrow_area
+    p_load = b.max_load / c.narrow_area
     seal_f = seal_friction_at(c, p_load)
     out = []
     for i, d in enumerate(pending):
@@ -219,18 +208,18 @@ def _build(req, pending: list[PiezoDesign], spacer) -> list[PiezoDesign]:
         friction = {"wide": float(seal_f["wide"][i]), "narrow": float(seal_f["narrow"][i]),
                     "at_pressure_Pa": float(p_load[i])}
         figures = {k: float(np.asarray(v)[i]) for k, v in static.items()}
-        figures.update(_derived_figures(req, d, figures, float(ramp[i]), friction))
+        figures.update(_derived_figures(b, d, figures, float(ramp[i]), friction))
         mets = {k: float(np.asarray(v)[i]) for k, v in met.items()}
         out.append(replace(
             d, cand=c.take([i]), ramp=float(ramp[i]), static=frozen(figures), metrics=frozen(mets),
             force_path=tuple(force_path.as_list(members, i, d.variant.material.id, comp.id if comp else None,
                                                 spacer.id if d.spacer > 0 else None)),
-            seal_friction=frozen(friction), static_margins=frozen(_static_margins(req, d, figures)),
-            ruled_out=ruled_out(req, figures, mets)))
+            seal_friction=frozen(friction), static_margins=frozen(_static_margins(b, d, figures)),
+            ruled_out=ruled_out(b, figures, mets)))
     return out
 
 
-def ruled_out(req, st: dict, met: dict) -> dict | None:
+def ruled_out(b: PiezoBrief, st: dict, met: dict) -> dict | None:
     """Why a built design is not a design at all, or None: a plate beyond its
     model's validity (``structure_out_of_range``) or a body outside the
     requirements' envelope (``envelope``). Such designs are never ranked."""
@@ -239,70 +228,69 @@ def ruled_out(req, st: dict, met: dict) -> dict | None:
         return {"reason": "structure_out_of_range",
                 "detail": f"end cap and base plate t/a = {ratio:.2f}, beyond the plate model's "
                           f"{structure.MINDLIN_MAX_THICKNESS_RATIO:g}"}
-    env = req.envelope
-    checks = (("length", st["length_m"], env.max_length, "m"), ("diameter", st["outer_diameter_m"], env.diameter, "m"),
-              ("mass", met["mass_kg"], env.max_mass or DEFAULT_MAX_MASS, "kg"))
+    checks = (("length", st["length_m"], b.max_length, "m"), ("diameter", st["outer_diameter_m"], b.max_diameter, "m"),
+              ("mass", met["mass_kg"], b.max_mass or DEFAULT_MAX_MASS, "kg"))
     for name, value, limit, unit in checks:
         if limit is not None and value > limit * (1 + 1e-9):
             return {"reason": "envelope", "detail": f"{name} {value:.4g} {unit} over the envelope's {limit:.4g} {unit}"}
     return None
 
 
-def _derived_figures(req, d: PiezoDesign, st: dict, ramp: float, friction: dict) -> dict:
+def _derived_figures(b: PiezoBrief, d: PiezoDesign, st: dict, ramp: float, friction: dict) -> dict:
     """The static figures the margins read beyond ``verify.static_figures``:
     the drift as judged, the current the stroke needs, the planned speed and,
     for a leaking compensator, its creep over the hold."""
-    r, o, combo = req.requirements, req.options, d.combo
+    combo = d.combo
     stack = combo.stack
     c_large = combo.n * stack.capacitance * stack_phys.LARGE_SIGNAL_CAPACITANCE_FACTOR
-    volts_to_stroke = r.stroke * stack.max_voltage / (st["ratio"] * combo.stack_stroke)
+    volts_to_stroke = b.stroke * stack.max_voltage / (st["ratio"] * combo.stack_stroke)
     out = {"thermal_drift_m": st["thermal_net_m"],
-           "thermal_drift_oil_only_m": st["thermal_drift_per_K_m"] * (r.max_temperature - o.drift_reference_temperature),
-           "required_current_A": c_large * volts_to_stroke / req.stroke_time,
+           "thermal_drift_oil_only_m": st["thermal_drift_per_K_m"] * b.delta_T,
+           "required_current_A": c_large * volts_to_stroke / b.stroke_time,
            "speed_m_s": st["free_stroke_m"] / ramp,         # the planned drive ramp, at the amplifier's limit
            "rise_time_s": ramp}
     comp = d.variant.compensator
     if comp is not None and comp.leak_conductance > 0:
         # output creep under the steady (largest) load over the held deflection
         out["compensator_creep_m"] = compensator_creep(comp.leak_conductance, friction["at_pressure_Pa"],
-                                                       req.duty.hold_time, st["narrow_diameter_m"])
-        out["compensator_hold_s"] = req.duty.hold_time
+                                                       b.hold_time, st["narrow_diameter_m"])
+        out["compensator_hold_s"] = b.hold_time
     return out
 
 
-def _static_margins(req, d: PiezoDesign, st: dict) -> dict:
+def _static_margins(b: PiezoBrief, d: PiezoDesign, st: dict) -> dict:
     """Every static check of one design, from its own figures (nothing is
     copied between variants)."""
-    r, o, combo = req.requirements, req.options, d.combo
-    stack, var = combo.stack, d.variant
+    combo = d.combo
+    stack, var, T = combo.stack, d.variant, b.temperature
     units, amp = st["amplifier_units"], combo.amplifier
     usable = units * float(amplifier.usable_ramp_current(amp.max_current, amp.continuous_current, amp.peak_duration,
-                                                         req.stroke_time))
-    temps = [combo.margins["temperature"], temperature_margin(var.material.max_temperature, r.max_temperature)]
+                                                         b.stroke_time))
+    temps = [combo.margins["temperature"], temperature_margin(var.material.max_temperature, T)]
     margins = {
-        "stroke": floor_margin(st["free_stroke_m"], r.stroke),
+        "stroke": floor_margin(st["free_stroke_m"], b.stroke),
         # the whole force path in series, less the seal friction at the blocked pressure
-        "blocked_force": floor_margin(st["blocked_force_net_N"], r.blocked_force),
-        "speed": floor_margin(st["speed_m_s"], r.speed),
+        "blocked_force": floor_margin(st["blocked_force_net_N"], b.blocked_force),
+        "speed": floor_margin(st["speed_m_s"], b.speed),
         "temperature": min(temps),
         "amplifier_temperature": combo.margins["amplifier_temperature"],
         "pressure": floor_margin(combo.seal.pressure_rating, st["blocked_pressure_Pa"]),
         "drive_current": floor_margin(usable, st["required_current_A"]),
         "amplifier_continuous_current": floor_margin(units * amp.continuous_current,
                                                      max(st["rms_current_A"], st["continuous_current_A"])),
-        "amplifier_units": floor_margin(req.options.max_amplifier_units, st["amplifier_units_needed"]),
-        "stack_temperature": temperature_margin(stack.max_temperature, r.max_temperature + st["stack_temperature_rise_K"]),
-        "natural_frequency": floor_margin(st["natural_frequency_Hz"], req.natural_frequency),
-        "thermal_drift": ceiling_margin(abs(st["thermal_net_m"]), o.max_drift_fraction * r.stroke),
+        "amplifier_units": floor_margin(b.max_amplifier_units, st["amplifier_units_needed"]),
+        "stack_temperature": temperature_margin(stack.max_temperature, T + st["stack_temperature_rise_K"]),
+        "natural_frequency": floor_margin(st["natural_frequency_Hz"], b.natural_frequency),
+        "thermal_drift": ceiling_margin(abs(st["thermal_net_m"]), b.allowed_drift),
         "wide_gap": floor_margin(st["wide_gap_m"], st["gap_needed_m"]),
         "packing": floor_margin(st["stacks_that_fit"], combo.n),
     }
     comp = var.compensator
     if comp is not None:
-        margins["temperature"] = min(margins["temperature"], temperature_margin(comp.max_temperature, r.max_temperature))
+        margins["temperature"] = min(margins["temperature"], temperature_margin(comp.max_temperature, T))
         margins["compensator_capacity"] = floor_margin(comp.capacity, st["thermal_compensator_volume_m3"])
         if "compensator_creep_m" in st:
-            margins["compensator_hold"] = ceiling_margin(st["compensator_creep_m"], o.max_drift_fraction * r.stroke)
+            margins["compensator_hold"] = ceiling_margin(st["compensator_creep_m"], b.allowed_drift)
     return margins
 
 
@@ -312,7 +300,7 @@ def compensator_creep(leak_conductance, pressure, hold_time, narrow_diameter):
     return leak_conductance * pressure * hold_time / (math.pi / 4 * narrow_diameter**2)
 
 
-def nominal_figures(req, catalog, combos: list[Combo], candidates: list[dict]) -> None:
+def nominal_figures(brief: PiezoBrief | RequirementsFile, catalog, combos: list[Combo], candidates: list[dict]) -> None:
     """Combinations ruled out before sizing still carry a force path, a
     thermal budget, seal friction and the static figures of a nominal
     design (in place): R that just gives the stroke at the voltage the
@@ -321,10 +309,11 @@ def nominal_figures(req, catalog, combos: list[Combo], candidates: list[dict]) -
     no compensator. Marked ``nominal_geometry``: not a sized design."""
     if not combos:
         return
-    T, r, o = req.requirements.max_temperature, req.requirements, req.options
+    b = brief_of(brief)
+    T = b.temperature
     material = force_path.default_material(catalog.materials)
     spacer = force_path.spacer_material(catalog.materials)
-    surface, dT = _surface_mass(req), T - o.drift_reference_temperature
+    surface, dT = b.surface_mass, b.delta_T
     rows, ratios, index, where = [], [], {}, []
     for c in combos:
         # the figures below do not depend on the amplifier beyond its voltage: build each once
@@ -335,21 +324,21 @@ def nominal_figures(req, catalog, combos: list[Combo], candidates: list[dict]) -
         index[key] = len(rows)
         where.append(len(rows))
         x = c.stack_stroke * c.voltage_fraction_max
-        R = max(r.stroke * (1 + o.design_margin) / x, 1.5)
+        R = max(b.stroke * (1 + b.design_margin) / x, 1.5)
         nk = c.n * c.stack.stiffness
         pack = math.pi / 4 * float(structure.packing_diameter(c.n, c.stack.diameter, STACK_SPACING_M)) ** 2
         A = max(nk * x / c.seal.pressure_rating, pack)
-        gap = effective_gap(req, x)
+        gap = effective_gap(b, x)
         t, area = force_path.design_structure(nk, nk * x, A, c.stack.length, gap, c.seal.pressure_rating,
-                                              material, o.structure_stiffness_ratio)
+                                              material, b.stiffness_ratio)
         struct = structure_row(material, t, area, spacer, 0.0, None, surface, dT)
         rows.append(part_row(c.stack, c.n, R, A, c.voltage, BoucWen(x / c.voltage, 0, 0, 0, 0, 1), T, gap,
                              c.fluid, c.seal, c.amplifier, structure=struct))
         ratios.append(R)
     cand = Candidates.from_rows(rows)
-    static = static_figures(cand, req.stroke_time / 2, req.duty.strokes_per_second)
+    static = static_figures(cand, b.stroke_time / 2, b.strokes_per_second)
     members = force_path.members(cand)
-    p_load = max(case["load_N"] for case in load_cases(req.load)) / cand.narrow_area
+    p_load = b.max_load / cand.narrow_area
     seal_f = seal_friction_at(cand, p_load)
     keys = ("free_stroke_m", "blocked_force_N", "blocked_force_ideal_N", "blocked_force_net_N",
             "natural_frequency_Hz", "wide_diameter_m", "narrow_diameter_m", "ratio", "thermal_net_m",

@@ -120,3 +120,54 @@ class Stages:
     def of(cls, verified) -> "Stages":
         verified = tuple(verified)
         return cls(verified, MappingProxyType({v.design.id: v.design for v in verified}))
+
+
+@dataclass(frozen=True)
+class PiezoBrief:
+    """What the piezohydraulic stages need from the requirements, in SI,
+    computed once per solve (``of``): the sizing, the builder and the margins
+    read these figures, never the requirements file itself."""
+
+    stroke: float                   # m
+    blocked_force: float            # N
+    speed: float                    # m/s
+    temperature: float              # degC, the required maximum
+    delta_T: float                  # K, from the drift reference (fill) temperature to ``temperature``
+    stroke_time: float              # s, stroke over speed
+    natural_frequency: float        # Hz, the least the output may have
+    strokes_per_second: float       # 1/s, the duty
+    hold_time: float                # s, a deflection held under the steady load
+    allowed_drift: float            # m, the thermal drift allowed
+    max_amplifier_units: int
+    wide_gap_floor: float           # m, the options' least oil gap (0: none)
+    design_margin: float
+    stiffness_ratio: float          # structure over stack stiffness, the least
+    max_length: float | None        # m, envelope (None: no limit)
+    max_diameter: float | None      # m
+    max_mass: float | None          # kg
+    surface_mass: float             # kg, tip-equivalent mass of the driven surface
+    max_load: float                 # N, the largest load case
+    objectives: tuple               # what the sizing minimises
+    thermal_compensation: bool      # size compensated variants too
+
+    @classmethod
+    def of(cls, req) -> "PiezoBrief":
+        from ..physics import load as load_phys
+        from .evaluate import load_cases
+        r, o, L, env = req.requirements, req.options, req.load, req.envelope
+        surface = 0.0 if L.force is not None else float(load_phys.tip_equivalent_mass(L.span, L.chord, L.thickness,
+                                                                                      L.density))
+        return cls(stroke=r.stroke, blocked_force=r.blocked_force, speed=r.speed, temperature=r.max_temperature,
+                   delta_T=r.max_temperature - o.drift_reference_temperature, stroke_time=req.stroke_time,
+                   natural_frequency=req.natural_frequency, strokes_per_second=req.duty.strokes_per_second,
+                   hold_time=req.duty.hold_time, allowed_drift=o.max_drift_fraction * r.stroke,
+                   max_amplifier_units=o.max_amplifier_units, wide_gap_floor=o.wide_gap or 0.0,
+                   design_margin=o.design_margin, stiffness_ratio=o.structure_stiffness_ratio,
+                   max_length=env.max_length, max_diameter=env.diameter, max_mass=env.max_mass,
+                   surface_mass=surface, max_load=max(c["load_N"] for c in load_cases(L)),
+                   objectives=tuple(req.objectives.minimize), thermal_compensation=bool(o.thermal_compensation))
+
+
+def brief_of(req_or_brief) -> PiezoBrief:
+    """The brief itself, or the brief of a requirements file."""
+    return req_or_brief if isinstance(req_or_brief, PiezoBrief) else PiezoBrief.of(req_or_brief)

@@ -33,18 +33,15 @@ from .. import __version__
 from ..errors import SimulationError
 from ..io.catalog import Catalog
 from ..io.requirements import RequirementsFile
-from ..physics import fluid as fluid_props
-from ..physics import stack as stack_phys, thermal
 from . import assumed, names, piezo_designs
 from .candidate import design_candidate, pruned_candidate, ruled_out_record
 from .dc_candidates import dc_candidates
 from .dc_sizing import dc_parts_candidates
 from .evaluate import load_cases
 from .piezo import Candidates
-from .piezo_designs import effective_gap, sizing_input, variants  # noqa: F401  (the module's API)
 from .pump import pump_candidates
 from .rank import nondominated_levels, rank_order, verdict
-from .records import PiezoDesign, Simulation, Stages, Variant, VerifiedDesign  # noqa: F401  (the module's API)
+from .records import PiezoBrief, PiezoDesign, Simulation, Stages, VerifiedDesign
 from .search import Combo, enumerate_combos
 from .solve_summary import _assumptions, _clean, _requirements_si, _summary, _traces
 from .verify import simulate_cases
@@ -145,13 +142,14 @@ def _piezohydraulic(req, catalog, loads, progress, detail) -> tuple[Outcome, lis
     combos = enumerate_combos(req, catalog)
     to_size = [c for c in combos if not c.pruned]
     pruned = [c for c in combos if c.pruned]
-    sized = piezo_designs.size(req, catalog, to_size, progress)
-    designs = piezo_designs.designs(req, catalog, sized)
+    brief = PiezoBrief.of(req)               # what the stages read of the requirements, once
+    sized = piezo_designs.size(brief, catalog, to_size, progress)
+    designs = piezo_designs.designs(brief, catalog, sized)
     verified = [VerifiedDesign(d, sim) for d, sim in zip(designs, _simulate(req, designs, loads, progress))]
     candidates = []
     if detail == "full":
         candidates = [pruned_candidate(c) for c in pruned]
-        piezo_designs.nominal_figures(req, catalog, pruned, candidates)
+        piezo_designs.nominal_figures(brief, catalog, pruned, candidates)
     records = []
     for v in verified:
         record = ruled_out_record(v.design)
@@ -385,7 +383,7 @@ def verify_sized(req, catalog: Catalog, sized: list, loads: list[float], chunk: 
         idx = [i for i, x in enumerate(temps) if x == t]
         reqs[t] = req if t is None else req.model_copy(update={
             "requirements": req.requirements.model_copy(update={"max_temperature": t})})
-        for d in piezo_designs.designs(reqs[t], catalog, [sized[i] for i in idx]):
+        for d in piezo_designs.designs(PiezoBrief.of(reqs[t]), catalog, [sized[i] for i in idx]):
             per_triple[idx[d.origin]].append(d)      # the as-built ones, then their passive variants
     flat = [(i, j) for i, ds in enumerate(per_triple) for j, d in enumerate(ds) if d.built]
     sims = {}

@@ -2,9 +2,6 @@
 floor.form_floor)."""
 from __future__ import annotations
 
-import sys
-from pathlib import Path
-
 import numpy as np
 import pytest
 
@@ -13,11 +10,9 @@ from sizing.diagnose import judge
 from sizing.diagnose.bench import timing_band
 from sizing.diagnose.fitting import EffectFit
 from sizing.diagnose.floor import form_floor
-
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
-from benchmarks.crossform import dc  # noqa: E402
-from benchmarks.crossform.common import write_campaign  # noqa: E402
+from benchmarks.crossform import dc
+from benchmarks.crossform.common import write_campaign
+from sizing.diagnose.settings import DEFAULT
 
 
 class _Bench:
@@ -108,7 +103,7 @@ def test_friction_seen_only_in_the_current_is_named_from_the_current(tmp_path):
                             sensor={"white": 3e-4, "flicker": 0.0, "lsb": 1e-9})
     d = api.diagnose(write_campaign(tmp_path / "c", rig, runs), ["stairs_b"])
     floors = d.verdict["floors"]
-    assert floors["position_m"]["baseline"] < judge.GAP_FACTOR * np.hypot(floors["position_m"]["noise"], 0.002)
-    assert d.baseline_holdout < judge.GAP_FACTOR * np.hypot(d.noise_floor_holdout, 0.002)
+    assert floors["position_m"]["baseline"] < DEFAULT.gap_factor * np.hypot(floors["position_m"]["noise"], 0.002)
+    assert d.baseline_holdout < DEFAULT.gap_factor * np.hypot(d.noise_floor_holdout, 0.002)
     assert d.verdict["effect"] == "coulomb_friction" and d.verdict["status"] == "explained"
     assert d.verdict["judged_on_channel"] == "current_A"

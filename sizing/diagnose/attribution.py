@@ -28,7 +28,8 @@ import numpy as np
 from . import fitting, spectrum
 from .effects import library
 from .floor import total_floor
-from .judge import EXPLAINED, RESIDUAL_FACTOR, block_energy, explained
+from .judge import block_energy, explained
+from .settings import DEFAULT, Settings
 
 N_SCREEN = 10          # screened parameter sets per effect parameter
 MIN_SCREEN = 30        # and at least this many: a one-parameter effect's valley can be narrow (a
@@ -85,7 +86,7 @@ def holdout_score(bench, fit: fitting.EffectFit) -> None:
 
 
 def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 0, pairs: bool = True,
-              form_floor: float | None = None):
+              form_floor: float | None = None, settings: Settings = DEFAULT):
     """Screen, fit and rank every effect. Returns (fits sorted best first,
     verdict dict)."""
     effects = [e for e in library(bench.kind) if e.applicable(bench.rig, bench.model)]
@@ -131,8 +132,8 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
     # may still leave a spectral line (a mount ringing under a current
     # limit or a backlash whose broadband gap is far larger): pairs are
     # tried then too
-    enough = (explained(baseline_holdout, best.nrmse_holdout, total_floor(floor_holdout, form_floor)) >= EXPLAINED
-              and best.nrmse_holdout <= RESIDUAL_FACTOR * floor_holdout
+    enough = (explained(baseline_holdout, best.nrmse_holdout, total_floor(floor_holdout, form_floor, settings))
+              >= settings.explained and best.nrmse_holdout <= settings.residual_factor * floor_holdout
               and not spectrum.lines(best.holdout_residual, best.holdout_position))
     if pairs and not enough:
         tops = []                                         # the best fitted form of each of the top families

@@ -17,6 +17,8 @@ from .floor import form_floor, noise_floor, total_floor
 from .bench import Bench
 from .effects import library
 from .recalibrate import DEFAULT, nuisance, recalibrate as recalibrate_model
+from .settings import DEFAULT as DEFAULT_SETTINGS, Settings
+from .verdict import Verdict
 
 MIN_PERIODS = 1.0   # a run lasts at least this many times the longest effect time constant
 
@@ -33,7 +35,7 @@ class Diagnosis:
     where: list
     residual_tests: dict
     fits: list
-    verdict: dict
+    verdict: Verdict
     best_sim: list | None
     recalibration: dict | None = None
     seconds: float = 0.0
@@ -60,7 +62,7 @@ class Diagnosis:
                                         "white-noise floor of channel c (README, diagnose)"}
         if self.recalibration:
             baseline["recalibration"] = self.recalibration
-        return {"baseline": baseline, "where": self.where, "candidates": candidates, "verdict": self.verdict,
+        return {"baseline": baseline, "where": self.where, "candidates": candidates, "verdict": self.verdict.to_dict(),
                 "residual_tests": self.residual_tests,
                 "kind": self.kind, "holdout": [r.name for r in self.bench.runs if r.holdout],
                 "seconds": self.seconds}
@@ -95,7 +97,7 @@ def check_runs(kind: str, bench: Bench, runs) -> None:
                              f"time constant {longest:.3g} s ({which}); record longer runs")
 
 
-def floors_by_channel(bench, nominal, noise_position: float, forms) -> dict:
+def floors_by_channel(bench, nominal, noise_position: float, forms, settings: Settings = DEFAULT_SETTINGS) -> dict:
     """{channel: {"baseline", "noise", "form", "blocks"}} of the holdout runs:
     the nominal's NRMSE, the noise floor (the position's from
     floor.noise_floor, another channel's from its second differences), the
@@ -110,15 +112,17 @@ def floors_by_channel(bench, nominal, noise_position: float, forms) -> dict:
     out = {}
     for k, c in enumerate(bench.channels):
         out[c] = {"baseline": float(np.mean(E[:, k])), "noise": noise_position if k == 0 else float(noise[k]),
-                  "form": float(forms[k]) if forms is not None and k > 0 else judge.DEFAULT.form_floor_prior,
-                  "blocks": judge.block_energy(bench, [nominal[i] for i in bench.holdout], bench.holdout, channel=k)}
+                  "form": float(forms[k]) if forms is not None and k > 0 else settings.form_floor_prior,
+                  "blocks": judge.block_energy(bench, [nominal[i] for i in bench.holdout], bench.holdout, channel=k,
+                                               settings=settings)}
     return out
 
 
 def diagnose_runs(kind: str, rig, runs, holdout: list[str], recalibrate: list[str] | None = None,
-                  seed: int = 0, pairs: bool = True) -> Diagnosis:
+                  seed: int = 0, pairs: bool = True, settings: Settings = DEFAULT_SETTINGS) -> Diagnosis:
     """``recalibrate``: None re-fits the default parameters (recalibrate.DEFAULT)
-    on the training runs first; [] turns re-calibration off."""
+    on the training runs first; [] turns re-calibration off. ``settings``:
+    the thresholds (settings.py)."""
     start = time.perf_counter()
     bench = Bench(kind, rig, runs, holdout)
     check_runs(kind, bench, runs)
@@ -147,25 +151,24 @@ def diagnose_runs(kind: str, rig, runs, holdout: list[str], recalibrate: list[st
     base_channels = {c: float(np.mean(E[:, k])) for k, c in enumerate(bench.channels)}
     floor = noise_floor(bench)
     floor_ho = float(np.mean(floor[bench.holdout]))
-    channels = floors_by_channel(bench, nominal, floor_ho, form_floor(bench))
+    channels = floors_by_channel(bench, nominal, floor_ho, form_floor(bench), settings)
     form_ho = None      # the combined measure keeps the prior model-form floor (docs/diagnosis.md)
-    fits = attribution.attribute(bench, base_ho, floor_ho, seed=seed, pairs=pairs, form_floor=form_ho)
-    base_blocks = judge.block_energy(bench, [nominal[i] for i in bench.holdout], bench.holdout)
+    fits = attribution.attribute(bench, base_ho, floor_ho, seed=seed, pairs=pairs, form_floor=form_ho, settings=settings)
+    base_blocks = judge.block_energy(bench, [nominal[i] for i in bench.holdout], bench.holdout, settings=settings)
     shortest = min((float(bench.runs[i].t[-1] - bench.runs[i].t[0]) for i in bench.train), default=None)
-    chosen = judge.pick(fits, seed, total_floor(floor_ho, form_ho))
+    chosen = judge.pick(fits, seed, total_floor(floor_ho, form_ho, settings), settings)
     best_sim = [y[0] for y in bench.simulate_channels(chosen.effects, chosen.z[None, :])] if chosen else None
     line = spectrum.gap_lines(bench, [nominal[i][0] for i in bench.holdout],
                               None if best_sim is None else [best_sim[i][0] for i in bench.holdout])
     inputs = dict(baseline_holdout=base_ho, floor_holdout=floor_ho, fits=fits, baseline_blocks=base_blocks,
                   seed=seed, run_length=shortest, line=line, form_floor=form_ho, channels=channels)
-    verdict = judge.verdict(**inputs)
-    verdict["floors"] = {c: {k: v for k, v in ch.items() if k != "blocks"} for c, ch in channels.items()}
-    if verdict["status"] in ("explained", "partial") and best_sim is not None:
-        verdict["remaining"] = [{k: e[k] for k in ("run", "label", "share", "t_start_s", "t_end_s", "channel")}
-                                for e in where.gap_map(bench, best_sim, max_entries=5)]
-    elif verdict["status"] == "unexplained":
-        verdict["remaining"] = [{k: e[k] for k in ("run", "label", "share", "t_start_s", "t_end_s", "channel")}
-                                for e in where.gap_map(bench, nominal, max_entries=5)]
+    verdict = judge.verdict(**inputs, settings=settings)
+    floors = {c: {k: v for k, v in ch.items() if k != "blocks"} for c, ch in channels.items()}
+    named = verdict.status in ("explained", "partial") and best_sim is not None
+    left = (where.gap_map(bench, best_sim if named else nominal, max_entries=5)
+            if named or verdict.status == "unexplained" else None)
+    verdict = verdict.with_details(floors=floors, **({} if left is None else {"remaining": [
+        {k: e[k] for k in ("run", "label", "share", "t_start_s", "t_end_s", "channel")} for e in left]}))
     return Diagnosis(kind=kind, bench=bench, baseline_sim=sims, baseline_nrmse=base, baseline_holdout=base_ho,
                      noise_floor={r.name: float(v) for r, v in zip(bench.runs, floor)},
                      noise_floor_holdout=floor_ho, where=where.gap_map(bench, nominal),

@@ -6,7 +6,7 @@ measurement (second differences, robust, where the output is at rest:
 ``rest_noise``) plus, on a piezo rig, the spread of the simulated output
 when the logged voltage is logged again with its own noise and treated
 the same way (``noise_floor``).
-Model-form floor of the position: the prior FORM_FLOOR, of the span
+Model-form floor of the position: the prior, of the span
 (settings.form_floor_prior; rationale in docs/diagnosis.md); of another
 logged channel (the current): estimated from the campaign
 (``form_floor``). The floor an effect is judged against is
@@ -19,7 +19,6 @@ import numpy as np
 from .inputs import noise_sigma, second_difference_sigma
 from .settings import DEFAULT
 
-FORM_FLOOR = DEFAULT.form_floor_prior   # NRMSE a nominal of another form leaves (docs/diagnosis.md)
 
 
 def noise_floor(bench, replicas: int = 3, seed: int = 0) -> np.ndarray:
@@ -61,8 +60,6 @@ def rest_noise(residual: np.ndarray, nominal: np.ndarray, span: float,
     rest): only then is it inflated by something other than noise. With
     fewer than settings.rest_samples second differences at rest, the whole
     run is used."""
-    from .settings import DEFAULT
-
     settings = settings or DEFAULT
     residual = np.asarray(residual, float)
     step = np.abs(np.diff(np.asarray(nominal, float)))
@@ -83,10 +80,11 @@ def rest_noise(residual: np.ndarray, nominal: np.ndarray, span: float,
 REST_HALF_WIDTH = 10   # samples either side that must be at rest too (the hardware settles later)
 
 
-def total_floor(noise: float, form: float | None = None) -> float:
+def total_floor(noise: float, form: float | None = None, settings=DEFAULT) -> float:
     """Noise floor and model-form floor together (``form`` None: the prior
-    FORM_FLOOR, for a campaign whose form floor could not be estimated)."""
-    return float(np.hypot(noise, FORM_FLOOR if form is None else form))
+    settings.form_floor_prior, for a campaign whose form floor could not be
+    estimated)."""
+    return float(np.hypot(noise, settings.form_floor_prior if form is None else form))
 
 
 def form_floor(bench) -> np.ndarray | None:
@@ -99,7 +97,7 @@ def form_floor(bench) -> np.ndarray | None:
     output moves fast against the sample rate (steps) and small where it
     is slow or held. The current's gap already carries a one-sample timing
     tolerance (bench.timing_band), so its floor is taken through it.
-    None without a holdout run (the prior FORM_FLOOR is used then).
+    None without a holdout run (the prior settings.form_floor_prior is used then).
 
     (The run-to-run consistency of the re-calibrated nominal, fitted on
     each training run alone, was considered and is not used: an unmodelled

@@ -3,7 +3,9 @@
 The candidates come from attribution.py (every effect screened and fitted,
 pairs); this module picks the one the verdict judges (``pick``: a pair
 only when it earns its second effect), finds the runner-up, tests
-separation and states the verdict.
+separation (``evidence``) and states the verdict (verdict.Verdict): each
+rule below is a named predicate on that evidence, applied in the declared
+order of ``RULES`` (the first that applies decides), then the channel rule.
 
 Verdict (all measures are the combined measure of bench.py, holdout runs):
 - "no_significant_gap": baseline <= GAP_FACTOR x the noise floor
@@ -49,26 +51,18 @@ resampled differences favour the other candidate.
 """
 from __future__ import annotations
 
+import dataclasses
+from dataclasses import dataclass, field
+
 import numpy as np
 
 from . import spectrum
 from .floor import total_floor
 from .settings import DEFAULT, Settings
-
-# the thresholds (settings.py; rationale in docs/diagnosis.md), as names
-GAP_FACTOR = DEFAULT.gap_factor
-EXPLAINED = DEFAULT.explained
-PARTIAL = DEFAULT.partial
-RESIDUAL_FACTOR = DEFAULT.residual_factor
-BLOCK_S = DEFAULT.block_s
-N_BOOT = DEFAULT.n_boot
-ALPHA = DEFAULT.alpha
-NOISE_MATCH = DEFAULT.noise_match
-PAIR_GAIN = DEFAULT.pair_gain
-LINE_GAIN = DEFAULT.line_gain
+from .verdict import Verdict
 
 
-def block_energy(bench, sims, runs, channel: int | None = None) -> np.ndarray:
+def block_energy(bench, sims, runs, channel: int | None = None, settings: Settings = DEFAULT) -> np.ndarray:
     """Weighted squared residual energy of each BLOCK_S block of the runs
     (sims: (n_ch, n) per run), one array over all runs; ``channel``: of
     that channel alone (unweighted)."""
@@ -78,13 +72,13 @@ def block_energy(bench, sims, runs, channel: int | None = None) -> np.ndarray:
         g2 = (bench.gap(i, S) / bench.spans(i)[:, None]) ** 2
         e2 = g2[channel] if channel is not None else np.sum(bench.weights(i)[:, None] * g2, axis=0)
         dt = float(np.median(np.diff(r.t)))
-        size = max(int(round(BLOCK_S / dt)), 1)
+        size = max(int(round(settings.block_s / dt)), 1)
         n_blocks = max(len(e2) // size, 1)
         out.append(np.array([e2[k * size:(k + 1) * size].sum() for k in range(n_blocks)]) / len(e2))
     return np.concatenate(out)
 
 
-def bootstrap_p(better: np.ndarray, worse: np.ndarray, seed: int = 0, n_boot: int = N_BOOT) -> float:
+def bootstrap_p(better: np.ndarray, worse: np.ndarray, seed: int = 0, n_boot: int = DEFAULT.n_boot) -> float:
     """One-sided bootstrap p-value that ``better`` (block energies) is not
     smaller than ``worse``: share of block resamples in which it is not."""
     d = np.asarray(worse) - np.asarray(better)
@@ -231,121 +225,242 @@ def narrowband_gap(line: dict | None, best, baseline_blocks, seed: int = 0, sett
             and bootstrap_p(best.residual_blocks, baseline_blocks, seed) < settings.alpha)
 
 
-def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks=None, seed: int = 0,
-            run_length: float | None = None, line: dict | None = None, form_floor: float | None = None,
-            channels: dict | None = None, settings: Settings = DEFAULT) -> dict:
-    """``run_length``: the shortest training run (s), for the settling rule.
-    ``line``: the spectral lines of the holdout gap (spectrum.gap_lines),
-    for the line rule. ``form_floor``: the model-form floor of the combined
-    measure (floor.form_floor; None: the prior). ``channels``: {channel:
-    {"baseline", "noise", "form", "blocks"}} of a campaign that logs more
-    than the position, for the channel rule (``channel_verdict``)."""
-    out = combined_verdict(baseline_holdout, floor_holdout, fits, baseline_blocks, seed, run_length, line,
-                           form_floor, settings)
-    if channels and len(channels) > 1 and out["status"] != "explained":
-        named = channel_verdict(fits, channels, seed, settings, floor=out.get("floor_holdout"))
-        if named is not None:
-            out.update(named)
-    return out
+@dataclass(frozen=True)
+class Evidence:
+    """What the rules judge, computed once from the candidates: the gap
+    (baseline), the noise floor and the floor with model form (``floor``,
+    the one the share is measured against), the candidate ``pick`` chose
+    (``best``, None when nothing was fitted) and its runner-up, the
+    share of the gap energy above the floor it removes (or of the lines'
+    energy: ``basis`` "lines"; against the noise floor alone: "noise"),
+    the separation p-values and the fitted time constants that do not
+    settle within a run (``slow``)."""
+
+    baseline: float
+    noise: float
+    floor: float
+    settings: Settings
+    total: float = 0.0
+    best: object = None
+    second: object = None
+    narrowband: bool = False
+    basis: str = "gap"
+    shrink: float = 0.0
+    share: float = 0.0
+    p_base: float = 1.0
+    p_second: float = 1.0
+    slow: dict = field(default_factory=dict)
+    run_length: float | None = None
+    details: dict = field(default_factory=dict)
+
+    @property
+    def in_band(self) -> bool:
+        """Above the noise, within GAP_FACTOR x the floor with model form."""
+        return self.baseline <= self.settings.gap_factor * self.floor
+
+    @property
+    def removed(self) -> float:
+        return self.baseline ** 2 - self.best.nrmse_holdout ** 2
+
+    @property
+    def substantial(self) -> bool:
+        """It removes at least the floor's own energy (not asked of the line
+        rule, whose lines the broadband floor does not cover)."""
+        return self.removed >= self.floor ** 2 or self.basis == "lines"
+
+    @property
+    def significant(self) -> bool:
+        return self.shrink > 0 and self.p_base < self.settings.alpha and self.substantial
+
+    @property
+    def separated(self) -> bool:
+        return self.p_second < self.settings.alpha
+
+    @property
+    def leaves(self) -> bool:
+        return self.best.nrmse_holdout <= self.settings.residual_factor * self.floor
+
+    @property
+    def runner_up_name(self) -> str:
+        return self.second.name if self.second else "every other effect"
+
+    def null(self, rule: str, *reasons: str) -> Verdict:
+        return Verdict("unexplained", reasons=reasons, rule=rule, separation=self.details.get("separation"),
+                       details={k: v for k, v in self.details.items() if k != "separation"})
+
+    def named(self, status: str, rule: str, *reasons: str) -> Verdict:
+        return self.null(rule, *reasons).replace(status=status, effect=self.best.name, form=self.best.form,
+                                                 shrink=self.shrink)
 
 
-def combined_verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks=None, seed: int = 0,
-                     run_length: float | None = None, line: dict | None = None, form_floor: float | None = None,
-                     settings: Settings = DEFAULT) -> dict:
-    """The verdict on the combined measure (module docstring)."""
-    floor = total_floor(floor_holdout, form_floor)
+def evidence(baseline: float, noise: float, fits, baseline_blocks=None, seed: int = 0,
+             run_length: float | None = None, line: dict | None = None, form_floor: float | None = None,
+             settings: Settings = DEFAULT) -> Evidence:
+    """The evidence of the rules (Evidence) from the verdict's inputs."""
+    floor = total_floor(noise, form_floor, settings)
     best = pick(fits, seed, floor, settings)
-    if (baseline_holdout <= settings.gap_factor * floor_holdout
-            and not narrowband_gap(line, best, baseline_blocks, seed, settings)):
-        # decided before the line rule: the voltage treatment's error
-        # carried through the model is not white and can show a line that
-        # an effect halves (tests/test_diagnose.py::
-        # test_sensor_noise_alone_gives_no_gap)
-        return {"effect": None, "shrink_holdout": 0.0, "status": "no_significant_gap",
-                "floor_holdout": floor,
-                "reason": f"baseline holdout NRMSE {baseline_holdout:.4f} is within {settings.gap_factor:g} x "
-                          f"the noise floor {floor_holdout:.4f}"}
+    ev = Evidence(baseline, noise, floor, settings, total=floor, best=best, run_length=run_length,
+                  narrowband=narrowband_gap(line, best, baseline_blocks, seed, settings))
     if best is None:
-        return {"effect": None, "shrink_holdout": 0.0, "status": "unexplained",
-                "reason": "no effect applies or fits the training runs well enough to be fitted"}
-    shrink = 1.0 - best.nrmse_holdout / baseline_holdout
-    share = explained(baseline_holdout, best.nrmse_holdout, floor)
+        return ev
     second = runner_up(fits, best)
     p_base = bootstrap_p(best.residual_blocks, baseline_blocks, seed, settings.n_boot) if baseline_blocks is not None else 0.0
     p_second = bootstrap_p(best.residual_blocks, second.residual_blocks, seed, settings.n_boot) if second is not None else 0.0
-    out = {"shrink_holdout": float(shrink), "explained_gap_energy": share, "floor_holdout": floor,
-           "runner_up": None if second is None else {
-               "effect": second.name, "form": second.form, "shrink_holdout": float(1.0 - second.nrmse_holdout / baseline_holdout),
-               "explained_gap_energy": explained(baseline_holdout, second.nrmse_holdout, floor)},
-           "separation": {"test": f"block bootstrap over holdout segments ({settings.block_s:g} s blocks, "
-                                  f"{settings.n_boot} resamples, one-sided)",
-                          "p_vs_baseline": p_base, "p_vs_runner_up": p_second, "alpha": settings.alpha}}
-    # line rule: the model-form floor is broadband, smooth-model error; a
-    # spectral line of the holdout gap (spectrum.py) is not covered by it.
-    # Within that floor, a candidate is judged on the share of the lines'
-    # energy above the local level that it removes.
-    on_line = line is not None and line.get("removed", 0.0) >= settings.partial
+    share = explained(baseline, best.nrmse_holdout, floor)
+    details = {"explained_gap_energy": share, "floor_holdout": floor,
+               "runner_up": None if second is None else {
+                   "effect": second.name, "form": second.form,
+                   "shrink_holdout": float(1.0 - second.nrmse_holdout / baseline),
+                   "explained_gap_energy": explained(baseline, second.nrmse_holdout, floor)},
+               "separation": {"test": f"block bootstrap over holdout segments ({settings.block_s:g} s blocks, "
+                                      f"{settings.n_boot} resamples, one-sided)",
+                              "p_vs_baseline": p_base, "p_vs_runner_up": p_second, "alpha": settings.alpha}}
     if line is not None:
-        out["line"] = dict(line, judged_on=False)
-    in_band = baseline_holdout <= settings.gap_factor * floor     # above the noise, within the model-form floor
-    if on_line and in_band:
+        details["line"] = dict(line, judged_on=False)
+    ev = dataclasses.replace(ev, second=second, p_base=p_base, p_second=p_second, share=share,
+                             shrink=float(1.0 - best.nrmse_holdout / baseline), slow=unsettled(best, run_length),
+                             details=details)
+    return judged_basis(ev, line)
+
+
+def judged_basis(ev: Evidence, line: dict | None) -> Evidence:
+    """Within the model-form floor (``in_band``), what a candidate is judged
+    on: the share of the gap lines' energy it removes when it removes at
+    least PARTIAL of it (the model-form floor is broadband, smooth-model
+    error; a spectral line of the holdout gap is not covered by it), else
+    the noise floor alone when it leaves no more than NOISE_MATCH x the
+    noise (``noise_matched``); otherwise the gap energy above the floor."""
+    if not ev.in_band:
+        return ev
+    if line is not None and line.get("removed", 0.0) >= ev.settings.partial:
         share = float(line["removed"])
-        out["explained_gap_energy"] = share
-        out["line"]["judged_on"] = True          # within the model-form floor: judged on the lines
-    elif in_band and noise_matched(best, floor_holdout, p_second, settings):
-        floor = floor_holdout                    # no model-form error left to allow for
-        share = explained(baseline_holdout, best.nrmse_holdout, floor)
-        out.update(explained_gap_energy=share, floor_holdout=floor, judged_on_noise_floor=True)
-    elif in_band:
-        out.update(effect=None, shrink_holdout=0.0, status="unexplained",
-                   reason=f"the gap ({baseline_holdout:.4f}) is above the noise floor but within {settings.gap_factor:g} x "
-                          f"the model-form floor {floor:.4f}: no effect is blamed for what a nominal of "
-                          f"another form leaves")
-        return out
-    # what the effect removes must outweigh what a nominal of another form
-    # could leave: at a gap just above settings.gap_factor x the floor, an effect that
-    # takes out less than the model-form floor's own energy may be fitting
-    # model-form error; not asked of the line rule, whose lines the
-    # broadband floor does not cover
-    removed = baseline_holdout ** 2 - best.nrmse_holdout ** 2
-    on_lines = out.get("line", {}).get("judged_on", False)
-    substantial = removed >= floor ** 2 or on_lines
-    significant = shrink > 0 and p_base < settings.alpha and substantial
-    separated = p_second < settings.alpha
-    leaves = best.nrmse_holdout <= settings.residual_factor * floor
-    slow = unsettled(best, run_length)
-    if significant and share >= settings.explained and separated and leaves and not slow:
-        what = "of the energy of the gap's spectral lines" if on_lines else "of the holdout gap energy above the floor"
-        out.update(effect=best.name, form=best.form, status="explained",
-                   reason=f"{best.name} removes {100 * share:.0f} % {what}, "
-                          f"separated from {second.name if second else 'every other effect'} (p = {p_second:.3f})")
-        return out
-    if significant and share >= settings.partial and tied(share, separated, settings):    # another family matches what little it explains
-        out.update(effect=None, shrink_holdout=0.0, status="unexplained",
-                   reason=f"{best.name} removes {100 * share:.0f} % < {100 * settings.explained:.0f} % of the holdout gap "
-                          f"energy above the floor and is not separated from {second.name} (p = {p_second:.3f}): "
-                          f"the data do not say which")
-        return out
-    if significant and share >= settings.partial:
-        why = []
-        if share < settings.explained:
-            why.append(f"it removes {100 * share:.0f} % < {100 * settings.explained:.0f} % of the gap energy above the floor")
-        if not separated:
-            why.append(f"not separated from {second.name} (p = {p_second:.3f})")
-        if not leaves:
-            why.append(f"it leaves {best.nrmse_holdout:.4f} > {settings.residual_factor:g} x the floor {floor:.4f}")
-        for k, v in slow.items():
-            why.append(f"its fitted {k} = {v:.3g} s is longer than the shortest training run ({run_length:.3g} s): "
-                       f"it does not settle within a run and cannot be told from a slow drift")
-        out.update(effect=best.name, form=best.form, status="partial",
-                   reason=f"{best.name} explains part of the gap: " + "; ".join(why))
-        return out
-    small = "" if substantial else (f"; it removes {removed:.3g} of gap energy, less than the model-form floor's "
-                                    f"own {floor ** 2:.3g}")
-    out.update(effect=None, shrink_holdout=0.0, status="unexplained",
-               reason=f"no effect of the library removes a significant part ({100 * settings.partial:.0f} %) of the holdout "
-                      f"gap energy above the floor (best: {best.name}, {100 * share:.0f} %, p vs baseline "
-                      f"{p_base:.3f}{small})")
+        details = dict(ev.details, explained_gap_energy=share, line=dict(ev.details["line"], judged_on=True))
+        return dataclasses.replace(ev, basis="lines", share=share, details=details)
+    if noise_matched(ev.best, ev.noise, ev.p_second, ev.settings):
+        share = explained(ev.baseline, ev.best.nrmse_holdout, ev.noise)
+        details = dict(ev.details, explained_gap_energy=share, floor_holdout=ev.noise, judged_on_noise_floor=True)
+        return dataclasses.replace(ev, basis="noise", floor=ev.noise, share=share, details=details)
+    return ev
+
+
+# The rules, each a named predicate on the evidence that returns the
+# verdict when it applies (None otherwise), applied in the order of RULES.
+
+def no_significant_gap(ev: Evidence) -> Verdict | None:
+    """The baseline is within GAP_FACTOR x the noise floor, and the gap has
+    no spectral line that the best candidate removes (narrowband_gap).
+    Decided before the line rule: the voltage treatment's error carried
+    through the model is not white and can show a line that an effect
+    halves."""
+    if ev.baseline > ev.settings.gap_factor * ev.noise or ev.narrowband:
+        return None
+    return Verdict("no_significant_gap", rule="no_significant_gap", details={"floor_holdout": ev.total}, reasons=(
+        f"baseline holdout NRMSE {ev.baseline:.4f} is within {ev.settings.gap_factor:g} x "
+        f"the noise floor {ev.noise:.4f}",))
+
+
+def nothing_fitted(ev: Evidence) -> Verdict | None:
+    """No effect applies, or none fits the training runs well enough to be fitted."""
+    if ev.best is not None:
+        return None
+    return Verdict("unexplained", rule="nothing_fitted",
+                   reasons=("no effect applies or fits the training runs well enough to be fitted",))
+
+
+def within_form_floor(ev: Evidence) -> Verdict | None:
+    """Above the noise but within GAP_FACTOR x the floor with model form,
+    and judged neither on lines nor on the noise alone: no effect is blamed
+    for what a nominal of another form leaves."""
+    if not ev.in_band or ev.basis != "gap":
+        return None
+    return ev.null("within_form_floor",
+                   f"the gap ({ev.baseline:.4f}) is above the noise floor but within {ev.settings.gap_factor:g} x "
+                   f"the model-form floor {ev.floor:.4f}: no effect is blamed for what a nominal of "
+                   f"another form leaves")
+
+
+def explains(ev: Evidence) -> Verdict | None:
+    """Significantly better than the baseline, removes at least EXPLAINED
+    of the gap energy above the floor (and the floor's own energy), leaves
+    at most RESIDUAL_FACTOR x the floor, separated from the runner-up and
+    settled within a run."""
+    s = ev.settings
+    if not (ev.significant and ev.share >= s.explained and ev.separated and ev.leaves and not ev.slow):
+        return None
+    what = ("of the energy of the gap's spectral lines" if ev.basis == "lines"
+            else "of the holdout gap energy above the floor")
+    return ev.named("explained", "explains",
+                    f"{ev.best.name} removes {100 * ev.share:.0f} % {what}, "
+                    f"separated from {ev.runner_up_name} (p = {ev.p_second:.3f})")
+
+
+def tied_with_runner_up(ev: Evidence) -> Verdict | None:
+    """Significant and above PARTIAL, but ``tied``: less than most of the
+    gap and not separated from another explanation, which names nothing."""
+    s = ev.settings
+    if not (ev.significant and ev.share >= s.partial and tied(ev.share, ev.separated, s)):
+        return None
+    return ev.null("tied_with_runner_up",
+                   f"{ev.best.name} removes {100 * ev.share:.0f} % < {100 * s.explained:.0f} % of the holdout gap "
+                   f"energy above the floor and is not separated from {ev.second.name} (p = {ev.p_second:.3f}): "
+                   f"the data do not say which")
+
+
+def explains_part(ev: Evidence) -> Verdict | None:
+    """Significant and removes at least PARTIAL of the gap energy above the
+    floor, but one condition of ``explains`` fails (each is a reason)."""
+    s = ev.settings
+    if not (ev.significant and ev.share >= s.partial):
+        return None
+    why = []
+    if ev.share < s.explained:
+        why.append(f"it removes {100 * ev.share:.0f} % < {100 * s.explained:.0f} % of the gap energy above the floor")
+    if not ev.separated:
+        why.append(f"not separated from {ev.second.name} (p = {ev.p_second:.3f})")
+    if not ev.leaves:
+        why.append(f"it leaves {ev.best.nrmse_holdout:.4f} > {s.residual_factor:g} x the floor {ev.floor:.4f}")
+    for k, v in ev.slow.items():
+        why.append(f"its fitted {k} = {v:.3g} s is longer than the shortest training run ({ev.run_length:.3g} s): "
+                   f"it does not settle within a run and cannot be told from a slow drift")
+    why[0] = f"{ev.best.name} explains part of the gap: {why[0]}"
+    return ev.named("partial", "explains_part", *why)
+
+
+def explains_too_little(ev: Evidence) -> Verdict:
+    """Otherwise: no effect removes a significant part of the gap."""
+    small = "" if ev.substantial else (f"; it removes {ev.removed:.3g} of gap energy, less than the model-form "
+                                       f"floor's own {ev.floor ** 2:.3g}")
+    return ev.null("explains_too_little",
+                   f"no effect of the library removes a significant part ({100 * ev.settings.partial:.0f} %) of the "
+                   f"holdout gap energy above the floor (best: {ev.best.name}, {100 * ev.share:.0f} %, p vs baseline "
+                   f"{ev.p_base:.3f}{small})")
+
+
+RULES = (no_significant_gap, nothing_fitted, within_form_floor, explains, tied_with_runner_up, explains_part,
+         explains_too_little)
+
+
+def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks=None, seed: int = 0,
+            run_length: float | None = None, line: dict | None = None, form_floor: float | None = None,
+            channels: dict | None = None, settings: Settings = DEFAULT) -> Verdict:
+    """The first verdict of RULES on the combined measure; then, short of
+    "explained" on a campaign that logs more than the position, the
+    channel rule (``channel_verdict``). ``floor_holdout``: the noise
+    floor; ``run_length``: the shortest training run (s), for the settling
+    rule; ``line``: the spectral lines of the holdout gap
+    (spectrum.gap_lines); ``form_floor``: the model-form floor of the
+    combined measure (None: the prior); ``channels``: {channel:
+    {"baseline", "noise", "form", "blocks"}}."""
+    ev = evidence(baseline_holdout, floor_holdout, fits, baseline_blocks, seed, run_length, line, form_floor,
+                  settings)
+    out = next(v for v in (rule(ev) for rule in RULES) if v is not None)
+    if channels and len(channels) > 1 and out.status != "explained":
+        named = channel_verdict(fits, channels, seed, settings, floor=out.details.get("floor_holdout"))
+        if named is not None:
+            out = out.replace(status="explained", effect=named["effect"], form=named["form"],
+                              shrink=named["shrink_holdout"], reasons=(named["reason"],), rule="explains_a_channel",
+                              details={**out.details, "judged_on_channel": named["judged_on_channel"],
+                                       "explained_gap_energy": named["explained_gap_energy"]})
     return out
 
 
@@ -366,26 +481,7 @@ def channel_verdict(fits, channels: dict, seed: int = 0, settings: Settings = DE
     floor while the current's gap is many times its own. On channel c the
     candidates are ranked by their NRMSE on c (``pick`` and ``runner_up``
     on that ranking). None when no channel names it."""
-    found = []
-    for c, ch in channels.items():
-        ranked = sorted((f for f in fits if c in f.channel_blocks), key=lambda f: f.nrmse_channels[c])
-        best = pick(ranked, seed, floor or 0.0, settings)
-        if best is None:
-            continue
-        second = runner_up(ranked, best)
-        base, after = ch["baseline"], best.nrmse_channels.get(c)
-        total = float(np.hypot(ch["noise"], ch["form"]))
-        if after is None or base <= settings.gap_factor * total or c not in best.channel_blocks:
-            continue
-        share = explained(base, after, total)
-        p_base = bootstrap_p(best.channel_blocks[c], ch["blocks"], seed, settings.n_boot)
-        p_second = (bootstrap_p(best.channel_blocks[c], second.channel_blocks[c], seed, settings.n_boot)
-                    if second is not None and c in getattr(second, "channel_blocks", {}) else 0.0)
-        others = all(best.nrmse_channels.get(d, 0.0) ** 2 <= o["baseline"] ** 2 + o["noise"] ** 2 + o["form"] ** 2
-                     for d, o in channels.items() if d != c)
-        if (share >= settings.explained and base ** 2 - after ** 2 >= total ** 2 and after <= settings.residual_factor * total
-                and p_base < settings.alpha and p_second < settings.alpha and others):
-            found.append((share, c, after, base, total, p_second, best, second))
+    found = [x for x in (channel_case(fits, c, channels, seed, settings, floor) for c in channels) if x is not None]
     if not found:
         return None
     share, c, after, base, total, p_second, best, second = max(found, key=lambda x: x[0])
@@ -394,6 +490,32 @@ def channel_verdict(fits, channels: dict, seed: int = 0, settings: Settings = DE
             "reason": f"{best.name} removes {100 * share:.0f} % of the {c} gap energy above that channel's floor "
                       f"{total:.4g} (noise and model form), separated from "
                       f"{second.name if second else 'every other effect'} on it (p = {p_second:.3f})"}
+
+
+def channel_case(fits, c: str, channels: dict, seed: int, settings: Settings, floor: float | None):
+    """(share, channel, after, baseline, floor, p vs runner-up, best,
+    runner-up) when channel ``c`` names the candidate (channel_verdict),
+    else None."""
+    ch = channels[c]
+    ranked = sorted((f for f in fits if c in f.channel_blocks), key=lambda f: f.nrmse_channels[c])
+    best = pick(ranked, seed, floor or 0.0, settings)
+    if best is None:
+        return None
+    second = runner_up(ranked, best)
+    base, after = ch["baseline"], best.nrmse_channels.get(c)
+    total = float(np.hypot(ch["noise"], ch["form"]))
+    if after is None or base <= settings.gap_factor * total or c not in best.channel_blocks:
+        return None
+    share = explained(base, after, total)
+    p_base = bootstrap_p(best.channel_blocks[c], ch["blocks"], seed, settings.n_boot)
+    p_second = (bootstrap_p(best.channel_blocks[c], second.channel_blocks[c], seed, settings.n_boot)
+                if second is not None and c in getattr(second, "channel_blocks", {}) else 0.0)
+    others = all(best.nrmse_channels.get(d, 0.0) ** 2 <= o["baseline"] ** 2 + o["noise"] ** 2 + o["form"] ** 2
+                 for d, o in channels.items() if d != c)
+    if (share >= settings.explained and base ** 2 - after ** 2 >= total ** 2 and after <= settings.residual_factor * total
+            and p_base < settings.alpha and p_second < settings.alpha and others):
+        return share, c, after, base, total, p_second, best, second
+    return None
 
 
 def beyond_form(fits, pair, single, settings: Settings = DEFAULT) -> bool:

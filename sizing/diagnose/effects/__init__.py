@@ -1,7 +1,9 @@
 """The library of candidate unmodelled effects, one module per effect.
 
-``library(kind)`` lists the effects that apply to a technology
-("piezohydraulic" or "dc_motor"), in a fixed order.
+Every effect module declares its forms in one export, ``FORMS`` (the
+family's default form first). ``library(kind)`` lists the forms that apply
+to a technology ("piezohydraulic" or "dc_motor"), family by family in the
+fixed order of ``FAMILIES``.
 """
 from __future__ import annotations
 
@@ -10,16 +12,21 @@ from . import (amplifier_slew_limit, backlash, coulomb_friction, current_saturat
                sensor_vibration, stack_creep, viscous_damping)
 from .base import Effect, Param
 
-PIEZO = (seal_stick_slip.EFFECT, fluid_compressibility.EFFECT, viscous_damping.EFFECT,
-         leakage.EFFECT, stack_creep.EFFECT, amplifier_slew_limit.EFFECT, no_return.EFFECT,
-         sensor_delay.PIEZO, sensor_vibration.PIEZO, sensor_vibration.PIEZO_SINUSOID,
-         # further forms: alternatives of the families above
-         seal_stick_slip.LUGRE, stack_creep.LOG, fluid_compressibility.AIR, leakage.ORIFICE,
-         amplifier_slew_limit.BANDWIDTH)
-DC = (current_saturation.COMMAND, current_saturation.DRIVE, coulomb_friction.COULOMB, coulomb_friction.STRIBECK,
-      coulomb_friction.ASYMMETRIC,
-      backlash.PLAY, backlash.COASTING,
-      sensor_vibration.EFFECT, sensor_vibration.SINUSOID, sensor_delay.DC)
+# the families of each technology, in the order they are screened; each
+# module declares its forms in FORMS (the family's default first)
+FAMILIES = {
+    "piezohydraulic": (seal_stick_slip, fluid_compressibility, viscous_damping, leakage, stack_creep,
+                       amplifier_slew_limit, no_return, sensor_delay, sensor_vibration),
+    "dc_motor": (current_saturation, coulomb_friction, backlash, sensor_vibration, sensor_delay),
+}
+
+
+def _forms(kind: str) -> tuple[Effect, ...]:
+    return tuple(form for family in FAMILIES[kind] for form in family.FORMS if form.technology == kind)
+
+
+PIEZO = _forms("piezohydraulic")
+DC = _forms("dc_motor")
 
 
 def library(kind: str) -> tuple[Effect, ...]:

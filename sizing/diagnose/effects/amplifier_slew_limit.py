@@ -30,7 +30,7 @@ import numpy as np
 from .base import Effect, Param
 
 
-EFFECT = Effect(
+SLEW = Effect(
     form="slew",
     name="amplifier_slew_limit", technology="piezohydraulic",
     params=(Param("slew_rate_V_s", 20.0, 2e5, log=True, doc="largest dV/dt the amplifier delivers"),),
@@ -46,3 +46,6 @@ BANDWIDTH = Effect(
     sizes=({"slew_rate_V_s": 1000.0, "bandwidth_rad_s": 628.0}, {"slew_rate_V_s": 300.0, "bandwidth_rad_s": 188.0}),
     fields={"slew_rate_V_s": "slew_rate", "bandwidth_rad_s": "amp_bandwidth"},
     source="first-order amplifier with slew limit (Fleming and Leang 2014, ch. 13)")
+
+# the forms this module adds to the library (effects.library), the family's default first
+FORMS = (SLEW, BANDWIDTH)

@@ -98,4 +98,5 @@ COASTING = CoastingBacklash(
     sizes=({"backlash_m": 1e-4, "coast_time_s": 3e-3}, {"backlash_m": 3e-4, "coast_time_s": 1e-2}),
     source="dead-zone backlash model with load inertia (Nordin and Gutman, Automatica 38 (2002) 1633)", post=True)
 
-EFFECT = PLAY   # the historical form
+# the forms this module adds to the library (effects.library), the family's default first
+FORMS = (PLAY, COASTING)

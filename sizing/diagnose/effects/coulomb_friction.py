@@ -74,4 +74,5 @@ ASYMMETRIC = Asymmetric(
     source="direction-dependent friction: Armstrong-Helouvry, Dupont, Canudas de Wit, Automatica 30 (1994) 1083; "
            + SOURCE)
 
-EFFECT = COULOMB   # the historical form
+# the forms this module adds to the library (effects.library), the family's default first
+FORMS = (COULOMB, STRIBECK, ASYMMETRIC)

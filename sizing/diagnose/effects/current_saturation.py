@@ -48,4 +48,5 @@ DRIVE = DriveLimit(
     source=SOURCE + "; servo amplifier peak-current limit / I^2 t fold-back in current mode "
                     "(e.g. Maxon ESCON 50/5 hardware reference, 'current limit')")
 
-EFFECT = COMMAND   # the historical form
+# the forms this module adds to the library (effects.library), the family's default first
+FORMS = (COMMAND, DRIVE)

@@ -26,7 +26,7 @@ class EntrainedAir(Effect):
         return {"air_fraction": values["air_fraction"], "air_polytropic": values["polytropic_index"]}
 
 
-EFFECT = Effect(
+BULK_MODULUS = Effect(
     form="bulk_modulus",
     name="fluid_compressibility", technology="piezohydraulic",
     params=(Param("bulk_modulus_Pa", 5e6, 2e9, log=True, doc="effective bulk modulus of the oil"),),
@@ -40,3 +40,6 @@ AIR = EntrainedAir(
             Param("polytropic_index", 1.0, 1.4, doc="polytropic index of the air (1 isothermal, 1.4 adiabatic)")),
     sizes=({"air_fraction": 0.01, "polytropic_index": 1.4}, {"air_fraction": 0.04, "polytropic_index": 1.0}),
     source="Merritt, Hydraulic Control Systems (1967) sec. 2.3; Gholizadeh et al., Int. J. Fluid Power 15 (2014) 1")
+
+# the forms this module adds to the library (effects.library), the family's default first
+FORMS = (BULK_MODULUS, AIR)

@@ -17,7 +17,7 @@ from __future__ import annotations
 from .base import Effect, Param
 
 
-EFFECT = Effect(
+LAMINAR = Effect(
     form="laminar",
     name="leakage", technology="piezohydraulic",
     params=(Param("leak_conductance_m3_s_Pa", 1e-15, 1e-11, log=True, doc="laminar leak conductance"),),
@@ -34,3 +34,6 @@ ORIFICE = Effect(
            {"leak_conductance_m3_s_Pa": 1e-14, "orifice_area_m2": 2e-10}),
     fields={"leak_conductance_m3_s_Pa": "leak_conductance", "orifice_area_m2": "leak_orifice_area"},
     source="laminar plus orifice leakage, Q = G p + Cd A sqrt(2 p / rho) (Merritt 1967, sec. 3)")
+
+# the forms this module adds to the library (effects.library), the family's default first
+FORMS = (LAMINAR, ORIFICE)

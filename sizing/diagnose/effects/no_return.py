@@ -20,6 +20,9 @@ class NoReturn(Effect):
         return {"no_return": np.ones(n)}
 
 
-EFFECT = NoReturn(
+NO_RETURN = NoReturn(
     name="no_return", technology="piezohydraulic", params=(), sizes=({}, {}),
     source="seed sec. 4 (first prototype without return mechanism); docs/models.md")
+
+# the forms this module adds to the library (effects.library), the family's default first
+FORMS = (NO_RETURN,)

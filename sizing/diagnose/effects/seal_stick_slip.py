@@ -52,7 +52,7 @@ class SealStickSlip(Effect):
                 "narrow_breakaway": ratio, "wide_breakaway": ratio}
 
 
-EFFECT = SealStickSlip(
+KARNOPP = SealStickSlip(
     form="karnopp",
     name="seal_stick_slip", technology="piezohydraulic",
     params=(Param("narrow_friction_N", 0.0, 20.0, doc="running friction of the output seal"),
@@ -79,3 +79,6 @@ LUGRE = SealLuGre(
     sizes=({"narrow_friction_N": 1.5, "breakaway_ratio": 1.8, "stribeck_velocity_m_s": 5e-3, "presliding_m": 1e-5},
            {"narrow_friction_N": 3.0, "breakaway_ratio": 2.0, "stribeck_velocity_m_s": 1e-3, "presliding_m": 3e-5}),
     source="LuGre friction (Canudas de Wit et al., IEEE TAC 40 (1995) 419)")
+
+# the forms this module adds to the library (effects.library), the family's default first
+FORMS = (KARNOPP, LUGRE)

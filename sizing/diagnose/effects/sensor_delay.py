@@ -30,3 +30,6 @@ PIEZO = SensorDelay(name="sensor_delay", technology="piezohydraulic", params=PAR
                     source=SOURCE, post=True)
 DC = SensorDelay(name="sensor_delay", technology="dc_motor", params=PARAMS, sizes=SIZES,
                  source=SOURCE, post=True)
+
+# the forms this module adds to the library (effects.library), the family's default first
+FORMS = (PIEZO, DC)

@@ -133,7 +133,7 @@ class SensorSinusoid(Effect):
             2 * np.pi * size["frequency_Hz"] * (t - t[0]) + rng.uniform(0, 2 * np.pi))
 
 
-EFFECT = SensorVibration(
+MOUNT = SensorVibration(
     form="mount",
     name="sensor_vibration", technology="dc_motor",
     params=(Param("frequency_Hz", 3.0, 300.0, log=True, doc="natural frequency of the sensor mount"),
@@ -152,5 +152,8 @@ SINUSOID = SensorSinusoid(
     post=True, extra={"fd_step": 1e-4})
 
 # A sensor on a bracket vibrates on a piezohydraulic rig too: the same two forms.
-PIEZO = dataclasses.replace(EFFECT, technology="piezohydraulic")
+PIEZO_MOUNT = dataclasses.replace(MOUNT, technology="piezohydraulic")
 PIEZO_SINUSOID = dataclasses.replace(SINUSOID, technology="piezohydraulic")
+
+# the forms this module adds to the library (effects.library), the family's default first
+FORMS = (MOUNT, SINUSOID, PIEZO_MOUNT, PIEZO_SINUSOID)

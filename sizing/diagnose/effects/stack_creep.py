@@ -30,7 +30,7 @@ class StackCreep(Effect):
         return {"creep_fraction": values["creep_fraction"], "creep_time": values["creep_time_s"]}
 
 
-EFFECT = StackCreep(
+EXPONENTIAL = StackCreep(
     form="exponential",
     name="stack_creep", technology="piezohydraulic",
     params=(Param("creep_fraction", 0.0, 0.4, doc="final creep over the instantaneous free stroke"),
@@ -46,3 +46,6 @@ LOG = LogCreep(
     sizes=({"creep_per_decade": 0.01, "creep_shortest_time_s": 0.01},
            {"creep_per_decade": 0.025, "creep_shortest_time_s": 0.003}),
     source="Jung and Gweon, Rev. Sci. Instrum. 71 (2000) 3396 (logarithmic creep); Prony series of the log law")
+
+# the forms this module adds to the library (effects.library), the family's default first
+FORMS = (EXPONENTIAL, LOG)

@@ -11,9 +11,12 @@ from __future__ import annotations
 from .base import Effect, Param
 
 
-EFFECT = Effect(
+VISCOUS = Effect(
     name="viscous_damping", technology="piezohydraulic",
     params=(Param("viscous_damping_N_s_m", 1.0, 1e4, log=True, doc="viscous damping of the output piston"),),
     sizes=({"viscous_damping_N_s_m": 200.0}, {"viscous_damping_N_s_m": 600.0}),
     fields={"viscous_damping_N_s_m": "viscous_damping"},
     source="linear viscous friction of a lubricated seal (Merritt 1967, sec. 6)")
+
+# the forms this module adds to the library (effects.library), the family's default first
+FORMS = (VISCOUS,)

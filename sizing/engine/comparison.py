@@ -8,7 +8,9 @@ import math
 
 from .flip import flip
 
-LABELS = {"piezohydraulic": "piezohydraulic actuator", "dc_motor": "DC motor actuator"}
+LABELS = {"piezohydraulic": "piezohydraulic actuator", "dc_motor": "DC motor actuator",
+          "piezo_pump": "piezo pump actuator"}
+TECHNOLOGIES = (("piezohydraulic", "piezohydraulic"), ("dc_motor", "DC motor"), ("piezo_pump", "piezo pump"))
 
 OBJECTIVE_KEYS = {"mass": "mass_kg", "cost": "cost_usd", "volume": "volume_m3", "power": "power_W"}
 STAGE_ORDER = {"pruned": 0, "gp_failed": 0, "gp_infeasible": 1, "sized": 2, "simulated": 3}
@@ -43,7 +45,7 @@ def technology_comparison(req, candidates: list[dict], catalog=None) -> dict:
     """{technology: {best, feasible, binding, binding_margin, metrics}, text}."""
     keys = [OBJECTIVE_KEYS[k] for k in req.objectives.minimize]
     out, lines = {}, []
-    for tech, label in (("piezohydraulic", "piezohydraulic"), ("dc_motor", "DC motor")):
+    for tech, label in TECHNOLOGIES:
         members = [c for c in candidates if c["technology"] == tech and c.get("metrics")]
         if not members:
             continue
@@ -71,23 +73,48 @@ def technology_comparison(req, candidates: list[dict], catalog=None) -> dict:
                 lines.append(f"the best {label} design that misses only one check, {near.get('name', near['id'])} "
                              f"({', '.join(format_metric(k, near['metrics'].get(k)) for k in keys)}), misses "
                              f"{near['driver']}")
-    for tech, label in (("piezohydraulic", "piezohydraulic"), ("dc_motor", "DC motor")):
+    for tech, label in TECHNOLOGIES:
         if tech in out:
             lines.append(f"{label}: " + _rests_text(out[tech]) + "; " + _flip_text(out[tech]["flip"]))
-    if len(out) == 2:
-        a, b = out["piezohydraulic"], out["dc_motor"]
-        ma, mb = (t.get("one_miss", t)["metrics"] for t in (a, b))   # an infeasible side: its one-miss design
-        ratios = []
-        for k in keys:
-            x, y = ma.get(k), mb.get(k)
-            if x and y and math.isfinite(x) and math.isfinite(y) and y > 0:
-                ratios.append(f"{k.split('_')[0]} x{x / y:.3g}")
-        tag = {(True, True): "both feasible", (True, False): "only piezohydraulic feasible",
-               (False, True): "only DC motor feasible", (False, False): "neither feasible"}[(a["feasible"], b["feasible"])]
-        stand_in = " (an infeasible side counted by its one-miss design)" if "one_miss" in a or "one_miss" in b else ""
-        lines.append(f"piezohydraulic best over DC best ({tag}{stand_in}): " + (", ".join(ratios) or "not comparable"))
+    if "piezo_pump" in out:
+        out["piezo_pump"].update(pump_power(req, candidates))
+        lines.append(_pump_power_text(out["piezo_pump"]))
+    for first, second in (("piezohydraulic", "dc_motor"), ("piezo_pump", "dc_motor")):
+        if first in out and second in out:
+            lines.append(_ratio_line(out[first], out[second], keys, LABELS[first].removesuffix(" actuator")))
     return {"technologies": out, "text": ". ".join(lines) + ("." if lines else ""),
             "recommendation": _recommendation(out, keys)}
+
+
+def pump_power(req, candidates) -> dict:
+    """The pump's required output power (the largest load at the required
+    speed) against the best demonstrated pump power (``pump.BEST_DEMONSTRATED_POWER_W``)."""
+    from .pump import BEST_DEMONSTRATED_POWER_W, BEST_DEMONSTRATED_SOURCE
+    loads = [k["load_N"] for c in candidates if c["technology"] == "piezo_pump"
+             for k in (c.get("simulated") or {}).get("cases", [])]
+    required = max(loads, default=0.0) * req.requirements.speed
+    return {"required_output_power_W": required, "best_demonstrated_power_W": BEST_DEMONSTRATED_POWER_W,
+            "best_demonstrated_source": BEST_DEMONSTRATED_SOURCE}
+
+
+def _pump_power_text(entry) -> str:
+    need, best = entry["required_output_power_W"], entry["best_demonstrated_power_W"]
+    return (f"the piezo pump must deliver {need:.3g} W at the output ({need / best:.2g} x the best demonstrated "
+            f"piezo pump, {best:.3g} W)")
+
+
+def _ratio_line(a, b, keys, label) -> str:
+    """``label`` best over the DC best in every objective."""
+    ma, mb = (t.get("one_miss", t)["metrics"] for t in (a, b))   # an infeasible side: its one-miss design
+    ratios = []
+    for k in keys:
+        x, y = ma.get(k), mb.get(k)
+        if x and y and math.isfinite(x) and math.isfinite(y) and y > 0:
+            ratios.append(f"{k.split('_')[0]} x{x / y:.3g}")
+    tag = {(True, True): "both feasible", (True, False): f"only {label} feasible",
+           (False, True): "only DC motor feasible", (False, False): "neither feasible"}[(a["feasible"], b["feasible"])]
+    stand_in = " (an infeasible side counted by its one-miss design)" if "one_miss" in a or "one_miss" in b else ""
+    return f"{label} best over DC best ({tag}{stand_in}): " + (", ".join(ratios) or "not comparable")
 
 
 def _recommendation(out: dict, keys: list[str]) -> str:
@@ -95,7 +122,8 @@ def _recommendation(out: dict, keys: list[str]) -> str:
     against the other's best (or its one-miss design)."""
     feasible = {t: e for t, e in out.items() if e["feasible"]}
     if not feasible or not keys:
-        return "No technology meets every requirement: see what blocks each and what would flip it."
+        return ("No technology meets every requirement: see what blocks each and what would flip it"
+                + _pump_clause(out) + ".")
     key = keys[0]
     tech, best = min(feasible.items(), key=lambda kv: kv[1]["metrics"].get(key) or math.inf)
     text = f"Choose the {LABELS.get(tech, tech)}: {best['name']} ({format_metric(key, best['metrics'].get(key))})"
@@ -110,7 +138,12 @@ def _recommendation(out: dict, keys: list[str]) -> str:
     deciding = best.get("deciding_assumed") or []
     if deciding:
         text += f"; its binding check rests on assumed {', '.join(deciding[:3])}"
-    return text + "."
+    return text + _pump_clause(out) + "."
+
+
+def _pump_clause(out: dict) -> str:
+    entry = out.get("piezo_pump", {})
+    return "; " + _pump_power_text(entry) if "required_output_power_W" in entry else ""
 
 
 def _rests_text(entry) -> str:

@@ -41,7 +41,9 @@ RATINGS = {"amplifier_continuous_current": ("amplifier", "continuous_current"),
            "drive_current": ("amplifier", "max_current"),
            "pressure": ("seal", "pressure_rating"),
            "compensator_capacity": ("compensator", "capacity"),
-           "amplifier_temperature": ("amplifier", "max_temperature")}
+           "amplifier_temperature": ("amplifier", "max_temperature"),
+           "valve_resonance": ("valve", "max_frequency"),
+           "accumulator_capacity": ("accumulator", "capacity")}
 
 
 def _moved(value: float, margin: float, how: str) -> float:
@@ -58,7 +60,8 @@ def _moved(value: float, margin: float, how: str) -> float:
 DISPLAY = {"requirement stroke": ("mm", 1e3), "requirement speed": ("mm/s", 1e3), "requirement blocked_force": ("N", 1.0),
            "requirement max_temperature": ("degC", 1.0), "duty hold_time": ("s", 1.0),
            "option min_natural_frequency": ("Hz", 1.0), "continuous_current": ("A", 1.0), "max_current": ("A", 1.0),
-           "pressure_rating": ("MPa", 1e-6), "capacity": ("cm^3", 1e6), "max_temperature": ("degC", 1.0)}
+           "pressure_rating": ("MPa", 1e-6), "capacity": ("cm^3", 1e6), "max_temperature": ("degC", 1.0),
+           "max_frequency": ("Hz", 1.0)}
 
 
 def _shown(what: str, value: float) -> str:

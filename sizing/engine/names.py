@@ -4,6 +4,7 @@ engineer would say of the design, the ``id`` staying the machines' key.
     piezohydraulic   "17xP056.90 87257 PTFE-OR Al orif"   stacks, fluid, seal, structure, compensation
     DC from parts    "DC MF0127008 R12-05K4 belt-2"    motor, screw, gear
     DC catalog       "DC exlar-gsx20-0301"
+    piezo pump       "PP 1xP056.90 reed-3mm 50Hz 0.5MPa"   stacks, valve, pumping frequency, bias
 """
 from __future__ import annotations
 
@@ -72,9 +73,20 @@ def _tokens(part_id: str | None, n: int) -> str:
     return "-".join(_short(part_id, 64).split("-")[:n])
 
 
+def _pump(c: dict) -> str:
+    """PP, stacks, valve, pumping frequency and bias: "PP 1xP056.90 reed-3mm 50Hz 0.5MPa"."""
+    comp, d = c["components"], c.get("design", {})
+    stack = _short(comp.get("stack"))
+    stack = stack.upper().replace("-", "", 1) if re.match(r"^[a-z]-\d", stack) else stack
+    valve = "-".join(str(comp.get("valve") or "").split("-")[::2])[:10]
+    return (f"PP {comp.get('n_stacks')}x{stack} {valve} {d.get('pump_frequency', 0):.0f}Hz "
+            f"{d.get('bias_pressure', 0) / 1e6:.2g}MPa")
+
+
 def name(c: dict) -> str:
     """The candidate's short name, at most MAX_NAME characters."""
-    text = _piezo(c) if c.get("technology") == "piezohydraulic" else _dc(c)
+    tech = c.get("technology")
+    text = _piezo(c) if tech == "piezohydraulic" else _pump(c) if tech == "piezo_pump" else _dc(c)
     return text[:MAX_NAME]
 
 

@@ -19,12 +19,13 @@ from .verify import simulate_cases
 
 TRACE_POINTS = 600
 GROUPS = (("piezohydraulic", "uncompensated"), ("piezohydraulic", "passive"), ("piezohydraulic", "compensated"),
-          ("dc_motor", "catalog"), ("dc_motor", "parts"))
+          ("dc_motor", "catalog"), ("dc_motor", "parts"), ("piezo_pump", "pump"))
 LABELS = {("piezohydraulic", "uncompensated"): "piezohydraulic, as built (no thermal compensation)",
           ("piezohydraulic", "passive"): "piezohydraulic, passive compensation (low-expansion spacer, longer frame)",
           ("piezohydraulic", "compensated"): "piezohydraulic with thermal compensator",
           ("dc_motor", "catalog"): "DC motor lead-screw actuators (catalog)",
-          ("dc_motor", "parts"): "DC motor actuators sized from parts (motor x screw x gear x drive)"}
+          ("dc_motor", "parts"): "DC motor actuators sized from parts (motor x screw x gear x drive)",
+          ("piezo_pump", "pump"): "piezo pump: stacks pumping through reed check valves into a cylinder"}
 
 
 def _requirements_si(req: RequirementsFile) -> dict:
@@ -244,7 +245,8 @@ def _traces(req, candidates, stages, dc, loads, top=3) -> list[dict]:
             for s in sims:
                 t, y = _downsample(s["t"], s["position_m"][0])
                 cases.append({"load_N": float(s["load_N"][0]), "t": t, "position_m": y})
-        out.append({"id": c["id"], "technology": c["technology"], "feasible": c["feasible"], "cases": cases})
+        out.append({"id": c["id"], "name": c.get("name", c["id"]), "technology": c["technology"],
+                    "feasible": c["feasible"], "cases": cases})
     return out
 
 

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Annotated, Literal, Optional
 
-from pydantic import AfterValidator, Field, field_validator, model_validator
+from pydantic import AfterValidator, Field, ValidationInfo, field_validator, model_validator
 
 from ..errors import InputError
 from .schema import BW_LINEAR, BW_SHAPE, GAIN, Qty, Strict, load_toml, parse_model, read_input_bytes
@@ -290,6 +290,45 @@ class Compensator(Entry):
     cost_usd: Qty("dimensionless", nonnegative=True)
 
 
+class Valve(Entry):
+    """A reed check valve of the piezo pump (catalogs/valves.toml): a reed
+    over a round port, preloaded to its cracking pressure."""
+
+    reed_stiffness: Qty("stiffness", positive=True)
+    reed_mass: Qty("mass", positive=True)
+    cracking_pressure: Qty("pressure", nonnegative=True)
+    port_area: Qty("area", positive=True)
+    max_lift: Qty("length", positive=True)
+    discharge_coefficient: Qty("dimensionless", positive=True)
+    max_frequency: Qty("frequency", positive=True)           # highest pumping frequency it is rated for
+    max_temperature: Qty("temperature")
+    mass: Qty("mass", positive=True)
+    cost_usd: Qty("dimensionless", nonnegative=True)
+
+    @field_validator("max_frequency")
+    @classmethod
+    def _below_resonance(cls, value: float, info: ValidationInfo) -> float:
+        k, m = info.data.get("reed_stiffness"), info.data.get("reed_mass")
+        if k and m:
+            resonance = (k / m) ** 0.5 / (2 * 3.141592653589793)
+            if value >= resonance:
+                raise ValueError(f"expected a pumping frequency below the reed's resonance "
+                                 f"sqrt(reed_stiffness / reed_mass) / 2 pi = {resonance:.4g} Hz, got {value:.4g} Hz")
+        return value
+
+
+class Accumulator(Entry):
+    """The piezo pump's bias-pressure accumulator (catalogs/accumulators.toml):
+    it holds the low side at ``bias_pressure`` (gauge) and takes the oil's
+    thermal expansion up to its capacity."""
+
+    bias_pressure: Qty("pressure", nonnegative=True)
+    capacity: Qty("volume", positive=True)
+    max_temperature: Qty("temperature")
+    mass: Qty("mass", positive=True)
+    cost_usd: Qty("dimensionless", nonnegative=True)
+
+
 # file name -> (TOML array name, model)
 KINDS: dict[str, tuple[str, type[Entry]]] = {
     "stacks.toml": ("stack", Stack),
@@ -303,6 +342,8 @@ KINDS: dict[str, tuple[str, type[Entry]]] = {
     "screws.toml": ("screw", Screw),
     "gears.toml": ("gear", Gear),
     "drives.toml": ("drive", Drive),
+    "valves.toml": ("valve", Valve),
+    "accumulators.toml": ("accumulator", Accumulator),
     # parts imported from makers' tables (``sizing catalog import-mgdb``)
     "motors-mgdb.toml": ("motor", Motor),
     "gears-mgdb.toml": ("gear", Gear),
@@ -324,6 +365,8 @@ class Catalog:
     screws: dict[str, Screw] = field(default_factory=dict)
     gears: dict[str, Gear] = field(default_factory=dict)
     drives: dict[str, Drive] = field(default_factory=dict)
+    valves: dict[str, Valve] = field(default_factory=dict)
+    accumulators: dict[str, Accumulator] = field(default_factory=dict)
     files: dict[str, str] = field(default_factory=dict)   # file name -> sha256
     origin: dict[str, str] = field(default_factory=dict)  # entry id -> file name
 
@@ -331,7 +374,8 @@ class Catalog:
         return {"stack": self.stacks, "fluid": self.fluids, "seal": self.seals,
                 "amplifier": self.amplifiers, "dc_actuator": self.dc_actuators,
                 "material": self.materials, "compensator": self.compensators,
-                "motor": self.motors, "screw": self.screws, "gear": self.gears, "drive": self.drives}
+                "motor": self.motors, "screw": self.screws, "gear": self.gears, "drive": self.drives,
+                "valve": self.valves, "accumulator": self.accumulators}
 
     def entries(self) -> list[tuple[str, Entry]]:
         return [(kind, e) for kind, group in self.groups().items() for e in group.values()]

@@ -161,8 +161,8 @@ def _entry_problems(kind: str, entry: Entry, today: dt.date):
         yield "max_temperature", f"expected above min_temperature ({low:g} degC), got {high:g} degC"
     checks = {"stack": _stack, "fluid": _fluid, "seal": _seal, "amplifier": _amplifier, "dc_actuator": _dc,
               "motor": _motor, "screw": _no_check, "gear": _no_check, "drive": _drive,
-              "material": _no_check, "compensator": _no_check}
-    yield from checks[kind](entry)
+              "material": _no_check, "compensator": _no_check, "valve": _no_check, "accumulator": _no_check}
+    yield from checks.get(kind, _no_check)(entry)
 
 
 def _range_problems(kind: str, entry: Entry):

@@ -73,6 +73,8 @@ def pareto_figure(results: dict) -> go.Figure:
         "DC motor, infeasible": dict(symbol="diamond-open", color="#d62728"),
         "DC motor from parts, feasible": dict(symbol="triangle-up", color="#ff7f0e"),
         "DC motor from parts, infeasible": dict(symbol="triangle-up-open", color="#ff7f0e"),
+        "piezo pump, feasible": dict(symbol="star", color="#17becf"),
+        "piezo pump, infeasible": dict(symbol="star-open", color="#17becf"),
     }
     pts = {k: ([], [], []) for k in groups}
     fronts: dict[str, list] = {}
@@ -86,6 +88,8 @@ def pareto_figure(results: dict) -> go.Figure:
             key = "DC motor from parts"
         elif c["technology"] == "dc_motor":
             key = "DC motor"
+        elif c["technology"] == "piezo_pump":
+            key = "piezo pump"
         elif c.get("stage") in SHOWN_STAGES:
             key = f"piezohydraulic, {c.get('variant', 'uncompensated')}"
         else:
@@ -132,7 +136,7 @@ def traces_figure(results: dict, traces: list[dict]) -> go.Figure:
         color = palette[k % len(palette)]
         for i, case in enumerate(tr["cases"][:n]):
             fig.add_trace(go.Scatter(x=case["t"], y=[v * 1e3 for v in case["position_m"]], mode="lines",
-                                     name=tr["id"] + ("" if tr["feasible"] else " (infeasible)"),
+                                     name=tr.get("name", tr["id"]) + ("" if tr["feasible"] else " (infeasible)"),
                                      legendgroup=tr["id"], showlegend=(i == 0),
                                      line=dict(color=color, dash="solid" if tr["technology"] != "dc_motor" else "dash")),
                           row=1, col=i + 1)
@@ -153,8 +157,8 @@ def comparison_figure(results: dict, picks: list[dict]) -> go.Figure:
     keys = [k for k in MARGIN_ORDER if any(k in c["margins"] for c in picks)]
     for c in picks:
         y = [c["margins"].get(k) for k in keys]
-        fig.add_trace(go.Bar(x=keys, y=[v * 100 if v is not None else None for v in y], name=c["id"],
-                             hovertext=[f"{c['id']}<br>{k}: {v:+.1%}" if v is not None else f"{k}: n/a"
+        fig.add_trace(go.Bar(x=keys, y=[v * 100 if v is not None else None for v in y], name=c.get("name", c["id"]),
+                             hovertext=[f"{c.get('name', c['id'])}<br>{k}: {v:+.1%}" if v is not None else f"{k}: n/a"
                                         for k, v in zip(keys, y)], hoverinfo="text"))
     fig.add_hline(y=0, line=dict(color="black"))
     fig.update_layout(barmode="group", title="Piezohydraulic against DC motor: margin per requirement "

@@ -78,10 +78,15 @@ def _margin_table(cands: list[dict]) -> str:
                 cls.append("drv")
             text = "" if v == "" else ("n/a" if v is None else f"{v:+.1%}")
             cells.append(f"<td class='{' '.join(cls)}'>{text}</td>")
-        rows.append(f"<tr><td>{c['rank']}</td><td class='id'>{_e(c['id'])}</td>"
+        rows.append(f"<tr><td>{c['rank']}</td>{design_cell(c)}"
                     f"<td>{'yes' if c['feasible'] else 'no'}</td><td class='l'>{_e(c['driver'])}</td>{''.join(cells)}</tr>")
     return (f"<div class='scroll'><table><tr><th>rank</th><th class='l'>design</th><th>feasible</th>"
             f"<th class='l'>driver</th>{head}</tr>" + "".join(rows) + "</table></div>")
+
+
+def design_cell(c: dict) -> str:
+    """A design's short name; its full id (the parts list) on hover."""
+    return f"<td class='id' title='{_e(c['id'])}'>{_e(c.get('name') or c['id'])}</td>"
 
 
 def _design_table(cands: list[dict]) -> str:
@@ -92,13 +97,19 @@ def _design_table(cands: list[dict]) -> str:
             k = c["components"]
             parts = (f"DC actuator {k['actuator']}" if "actuator" in k else
                      f"DC from parts: {k['motor']}, {k['screw']}, {k['gear'] or 'no gear'}, {k['drive']}")
+        elif c["technology"] == "piezo_pump":
+            d = c.get("design", {})
+            parts = (f"pump: {d.get('n_stacks')} x {d.get('stack')} at {_num(d.get('pump_frequency'), fmt='{:.0f}')} Hz, "
+                     f"piston {_num(d.get('pump_diameter'), 1e3, '{:.0f}')} mm, bore {_num(d.get('cylinder_diameter'), 1e3, '{:.0f}')} mm, "
+                     f"{d.get('valve')}, bias {_num(d.get('bias_pressure'), 1e-6, '{:.2g}')} MPa, "
+                     f"{_num(s.get('output_power_W'), fmt='{:.0f}')} W out, {_num(s.get('amplifier_power_VA'), fmt='{:.0f}')} VA drive, {d.get('amplifier')}")
         else:
             k = c["components"]
             parts = (f"{k['n_stacks']} x {k['stack']}, R = {_num(k['ratio'], fmt='{:.1f}')}, "
                      f"bores {_num(s.get('wide_diameter_m'), 1e3, '{:.0f}')}/{_num(s.get('narrow_diameter_m'), 1e3, '{:.1f}')} mm, "
                      f"{k['fluid']}, {k['seal']}, {k['amplifier']}")
         rows.append(
-            f"<tr><td>{c['rank']}</td><td class='id'>{_e(c['id'])}</td><td class='parts'>{_e(parts)}</td>"
+            f"<tr><td>{c['rank']}</td>{design_cell(c)}<td class='parts'>{_e(parts)}</td>"
             f"<td>{_num(m.get('mass_kg'), fmt='{:.1f}')}</td><td>{_num(m.get('cost_usd'), fmt='{:,.0f}')}</td>"
             f"<td>{_num(m.get('volume_m3'), 1e3, '{:.2f}')}</td><td>{_num(m.get('power_W'), fmt='{:.0f}')}</td>"
             f"<td>{_num(s.get('free_stroke_m'), 1e3, '{:.1f}')}</td>"
@@ -119,7 +130,7 @@ def _checks_table(cands: list[dict]) -> str:
         s, f = c["static"], c.get("fluid_at_temperature", {})
         temps = "; ".join(f"{k} {v['rated_degC']:g}/{v['required_degC']:g}" for k, v in c.get("temperatures", {}).items())
         rows.append(
-            f"<tr><td class='id'>{_e(c['id'])}</td><td>{_num(s.get('blocked_pressure_Pa'), 1e-6, '{:.1f}')}</td>"
+            f"<tr>{design_cell(c)}<td>{_num(s.get('blocked_pressure_Pa'), 1e-6, '{:.1f}')}</td>"
             f"<td>{_num(s.get('compliance_force_fraction'), 100, '{:.0f}')}</td>"
             f"<td>{_num(s.get('required_current_A'), fmt='{:.2f}')}</td>"
             f"<td>{_num(s.get('natural_frequency_Hz'), fmt='{:.0f}')}</td>"
@@ -185,6 +196,7 @@ def _pick_comparison(cands: list[dict]) -> list[dict]:
             picks.append(group[0])
     picks += [c for c in cands if c["technology"] == "dc_motor" and "actuator" in c["components"]]
     picks += [c for c in cands if c.get("variant") == "parts" and c.get("stage") == "simulated"][:2]
+    picks += [c for c in cands if c["technology"] == "piezo_pump"][:1]
     return picks
 
 
@@ -196,7 +208,7 @@ def _dc_parts_line(counts: dict) -> str:
             f"static screen, {p['simulated']} verified by simulation)")
 
 
-TECH_LABELS = {"piezohydraulic": "piezohydraulic", "dc_motor": "DC motor"}
+TECH_LABELS = {"piezohydraulic": "piezohydraulic", "dc_motor": "DC motor", "piezo_pump": "piezo pump"}
 
 
 def _answer(summary: dict) -> str:
@@ -269,11 +281,12 @@ def render(results: dict, traces: list[dict]) -> str:
     checks = "".join(f"<li><b>{_e(k)}</b>: {_e(v)}</li>" for k, v in CHECKS.items())
     assumptions = "".join(f"<li>{_e(a)}</li>" for a in results["assumptions"])
     dis = results["disagreements"]
+    short = {c["id"]: c.get("name") for c in results.get("candidates", [])}
     dis_html = ("<p>The static screen and the simulation agree within 10 % on stroke and speed for every "
                 "simulated design, and never disagree on a verdict.</p>" if not dis else
                 "<table><tr><th class='l'>design</th><th class='l'>requirement</th><th>static</th><th>simulated</th>"
                 "<th>static margin</th><th>simulated margin</th><th>verdict changes</th></tr>" + "".join(
-                    f"<tr><td class='l'>{_e(d['id'])}</td><td class='l'>{_e(d['requirement'])}</td>"
+                    f"<tr>{design_cell(dict(d, name=short.get(d['id'])))}<td class='l'>{_e(d['requirement'])}</td>"
                     f"<td>{d['static']:.4g}</td><td>{d['simulated']:.4g}</td><td>{d['static_margin']:+.1%}</td>"
                     f"<td>{d['simulated_margin']:+.1%}</td><td>{'yes' if d['verdict_changes'] else 'no'}</td></tr>"
                     for d in dis[:50]) + "</table>")

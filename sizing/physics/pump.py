@@ -1,0 +1,190 @@
+"""The frequency-rectified piezohydraulic pump: chamber, reed check valves,
+and the cycle-averaged flow (docs/models.md, "Piezo pump").
+
+Stacks drive a pump piston (area A_p) into a chamber of volume V_c with an
+inlet and an outlet reed check valve; the inlet draws from a bias-pressure
+accumulator at p_b, the outlet feeds the output cylinder (area A_c) whose
+other side returns to the accumulator.
+
+Chamber (Sirohi and Chopra, J. Intell. Mater. Syst. Struct. 14(3), 2003,
+"quasi-static model"): the stacks (stiffness K, free stroke x_f) and the
+oil (effective bulk modulus beta_e) are springs in series, so the chamber
+takes a volume C dp for a pressure rise dp, with the compliance
+
+    C = V_c / beta_e + A_p^2 / K                                     (P1)
+
+beta_e: Wood's rule for oil with free air (fraction a0 at atmospheric
+pressure, compressed polytropically) plus the radial growth of a thin
+chamber wall, dV / (V dp) = D / (E t):
+
+    1 / beta_e = (1 - a) / beta + a / (kappa p) + D / (E t)          (P2)
+
+Reed check valve (a cantilever reed over a round port of area A_v, preload
+set by the cracking pressure p_cr, stiffness k_v, reed mass m_v): the reed
+lifts x = (dp - p_cr) A_v / k_v up to its stop, the flow area is the curtain
+pi d_v x capped at the port, Q = C_d A sqrt(2 dp / rho) (orifice), and the
+reed follows the pressure only well below its resonance
+f_v = sqrt(k_v / m_v) / (2 pi).                                      (P3)
+
+Cycle-averaged flow: a cycle starts with the chamber at the inlet pressure
+p_b - p_in; it delivers once it reaches the cylinder pressure plus the outlet
+valve's drop. With the total drop dp across the pump, one cycle delivers
+
+    V_del = A_p x_f - C dp,   Q = f V_del,   v = Q / A_c             (P4)
+
+and the stall (blocked) pressure is A_p x_f / C. dp includes both valves'
+cracking pressures and their orifice drops at the delivery-phase flow.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+P_ATM = 101325.0          # Pa
+BISECTION_STEPS = 40
+
+
+def air_fraction_at(air_fraction, pressure, polytropic=1.4):
+    """Free-air volume fraction at absolute pressure p, from a0 at
+    atmospheric pressure (the air compresses as p V^kappa = const)."""
+    a0 = np.asarray(air_fraction, float)
+    v_air = a0 * (P_ATM / np.maximum(np.asarray(pressure, float), P_ATM * 1e-3)) ** (1.0 / polytropic)
+    return v_air / (1.0 - a0 + v_air)
+
+
+def wall_compliance(bore, wall_thickness, youngs_modulus):
+    """Volumetric compliance of a thin cylindrical wall, dV / (V dp) = D / (E t), 1/Pa."""
+    return np.asarray(bore) / (np.asarray(youngs_modulus) * np.asarray(wall_thickness))
+
+
+def effective_bulk_modulus(bulk_modulus, air_fraction, pressure, wall=0.0, polytropic=1.4):
+    """Eq. P2: oil with entrained air at absolute pressure p (Pa) in a
+    compliant chamber (``wall``: D / (E t), 1/Pa), Pa."""
+    a = air_fraction_at(air_fraction, pressure, polytropic)
+    gas = polytropic * np.maximum(np.asarray(pressure, float), 1e3)
+    return 1.0 / ((1.0 - a) / np.asarray(bulk_modulus) + a / gas + np.asarray(wall))
+
+
+def chamber_stiffness(bulk_modulus, pump_area, chamber_volume):
+    """Oil in the pumping chamber as a spring on the pump piston, beta A^2 / V, N/m."""
+    return np.asarray(bulk_modulus) * np.asarray(pump_area) ** 2 / np.asarray(chamber_volume)
+
+
+def chamber_compliance(chamber_volume, bulk_modulus, pump_area, stack_stiffness):
+    """Eq. P1: volume the chamber takes up per pascal, stacks and oil in series, m^3/Pa."""
+    return np.asarray(chamber_volume) / np.asarray(bulk_modulus) + np.asarray(pump_area) ** 2 / np.asarray(stack_stiffness)
+
+
+def valve_resonance(reed_stiffness, reed_mass):
+    """f_v = sqrt(k_v / m_v) / (2 pi), Hz."""
+    return np.sqrt(np.asarray(reed_stiffness) / np.asarray(reed_mass)) / (2.0 * np.pi)
+
+
+def valve_lift(dp, cracking_pressure, port_area, reed_stiffness, max_lift):
+    """Reed lift at a pressure difference dp (Pa), m: shut below cracking."""
+    x = (np.asarray(dp) - np.asarray(cracking_pressure)) * np.asarray(port_area) / np.asarray(reed_stiffness)
+    return np.clip(x, 0.0, np.asarray(max_lift))
+
+
+def valve_area(dp, cracking_pressure, port_area, reed_stiffness, max_lift):
+    """Open area of a reed valve, m^2: its curtain pi d x, at most the port."""
+    d = np.sqrt(4.0 * np.asarray(port_area) / np.pi)
+    x = valve_lift(dp, cracking_pressure, port_area, reed_stiffness, max_lift)
+    return np.minimum(np.pi * d * x, np.asarray(port_area))
+
+
+def orifice_flow(area, dp, density, discharge_coefficient):
+    """Q = C_d A sqrt(2 |dp| / rho), signed with dp, m^3/s."""
+    dp = np.asarray(dp, float)
+    return np.asarray(discharge_coefficient) * np.asarray(area) * np.sign(dp) * np.sqrt(2.0 * np.abs(dp) / np.asarray(density))
+
+
+def valve_flow(dp, density, cracking_pressure, port_area, reed_stiffness, max_lift, discharge_coefficient):
+    """Forward flow through a reed check valve at dp (Pa), m^3/s; 0 when dp <= p_cr."""
+    dp = np.maximum(np.asarray(dp, float), 0.0)
+    area = valve_area(dp, cracking_pressure, port_area, reed_stiffness, max_lift)
+    return orifice_flow(area, dp, density, discharge_coefficient)
+
+
+def valve_drop(flow, density, cracking_pressure, port_area, reed_stiffness, max_lift, discharge_coefficient):
+    """The pressure difference (Pa) at which a reed valve passes ``flow``
+    (m^3/s): the inverse of ``valve_flow`` (monotone), by bisection."""
+    flow = np.asarray(flow, float)
+    lo = np.broadcast_to(np.asarray(cracking_pressure, float), flow.shape).copy()
+    # at full lift over the cracking pressure and the orifice drop of the
+    # full-lift area, the valve passes at least the flow: an upper bound
+    d = np.sqrt(4.0 * np.asarray(port_area) / np.pi)
+    full = np.minimum(np.pi * d * np.asarray(max_lift), np.asarray(port_area))
+    hi = (lo + np.asarray(reed_stiffness) * np.asarray(max_lift) / np.asarray(port_area)
+          + 0.5 * np.asarray(density) * (flow / (np.asarray(discharge_coefficient) * full)) ** 2)
+    args = (density, cracking_pressure, port_area, reed_stiffness, max_lift, discharge_coefficient)
+    for _ in range(BISECTION_STEPS):
+        mid = 0.5 * (lo + hi)
+        over = valve_flow(mid, *args) >= flow
+        hi, lo = np.where(over, mid, hi), np.where(over, lo, mid)
+    return hi
+
+
+def swept_volume(pump_area, stack_free_stroke):
+    """Volume one pumping cycle sweeps, A_p x_f, m^3."""
+    return np.asarray(pump_area) * np.asarray(stack_free_stroke)
+
+
+def stall_pressure(swept, compliance):
+    """Pressure difference at which the pump delivers nothing, A_p x_f / C, Pa."""
+    return np.asarray(swept) / np.asarray(compliance)
+
+
+def delivered_volume(swept, compliance, dp):
+    """Eq. P4: volume delivered per cycle against a total drop dp, m^3 (>= 0)."""
+    return np.maximum(np.asarray(swept) - np.asarray(compliance) * np.asarray(dp), 0.0)
+
+
+def delivery_fraction(swept, compliance, dp):
+    """Fraction of a cycle the outlet is open under a sine drive: from where
+    the chamber reaches the delivery pressure to the top of the stroke."""
+    opens = np.clip(np.asarray(compliance) * np.asarray(dp) / np.maximum(np.asarray(swept), 1e-30), 0.0, 1.0)
+    theta = np.arccos(1.0 - 2.0 * opens)               # x_f = (1 - cos theta) / 2 reaches ``opens``
+    return np.maximum((np.pi - theta) / (2.0 * np.pi), 1e-3)
+
+
+def sine_current(capacitance, voltage, frequency):
+    """Peak and rms current of a stack group driven 0..V by a sine at f:
+    i = C dv/dt, peak pi f C V, rms pi f C V / sqrt 2, A."""
+    peak = np.pi * np.asarray(frequency) * np.asarray(capacitance) * np.asarray(voltage)
+    return peak, peak / np.sqrt(2.0)
+
+
+def reactive_power(capacitance, voltage, frequency):
+    """Reactive power of a capacitor driven 0..V by a sine at f, var:
+    omega C V_a^2 / 2 with amplitude V_a = V / 2, = (pi / 4) C V^2 f."""
+    return np.pi / 4.0 * np.asarray(capacitance) * np.asarray(voltage) ** 2 * np.asarray(frequency)
+
+
+def apparent_power(capacitance, voltage, frequency):
+    """What the amplifier must supply, V x I_rms, VA (its output swings to V)."""
+    return np.asarray(voltage) * sine_current(capacitance, voltage, frequency)[1]
+
+
+def cycle_averaged(swept, chamber_volume, bulk_modulus, air_fraction, wall, pump_area, stack_stiffness,
+                   frequency, bias_pressure, load_pressure, cracking_pressure):
+    """Eq. P4, vectorised over candidates: the quasi-static model of Sirohi
+    and Chopra (2003), who found the viscous losses through the valves and
+    tubing negligible beside the chamber's compliance and the load's inertia.
+    A cycle loses C dp with dp the cylinder's pressure over the bias
+    (``load_pressure``: load and seal friction over the bore) plus both
+    valves' cracking pressures; the orifice drop of the delivery flow is
+    returned by the chamber as the stack slows at the top of its sine, so
+    it enters only as a check (``peak_flow``, ``valve_drop``). The chamber's
+    modulus is taken at its mean pressure, p_b + dp / 2.
+    Returns {"flow_m3_s", "delivered_m3", "drop_Pa", "compliance_m3_Pa"}.
+    """
+    dp = np.asarray(load_pressure, float) + 2.0 * np.asarray(cracking_pressure)
+    beta = effective_bulk_modulus(bulk_modulus, air_fraction, np.asarray(bias_pressure) + P_ATM + dp / 2.0, wall)
+    C = chamber_compliance(chamber_volume, beta, pump_area, stack_stiffness)
+    V = delivered_volume(swept, C, dp)
+    return {"flow_m3_s": V * np.asarray(frequency), "delivered_m3": V, "drop_Pa": dp, "compliance_m3_Pa": C}
+
+
+def peak_flow(swept, frequency):
+    """Peak of A_p dx_f/dt under a sine drive, pi f A_p x_f, m^3/s."""
+    return np.pi * np.asarray(frequency) * np.asarray(swept)

@@ -97,11 +97,31 @@ class CatalogUpdate(Payload):
         return dict(self.texts)
 
 
+def _read_back(texts: dict[Path, str], check=None) -> None:
+    """Load the catalog with ``texts`` ({path: text}, one folder) in place of
+    its files, in a scratch folder, before anything is written;
+    ``check(catalog)`` for what loading does not check."""
+    from ..io.atomic import scratch_folder
+    from ..io.catalog import KINDS
+    folder = next(iter(texts)).parent
+    names = {path.name: text for path, text in texts.items()}
+    kept = {name: (folder / name).read_bytes() for name in KINDS if (folder / name).exists() and name not in names}
+    with scratch_folder({**kept, **names}, prefix="sizing-catalog-") as tmp:
+        catalog = load_catalog(tmp)
+        if check is not None:
+            check(catalog)
+
+
 def catalog_add(kind: str, sheet: str | Path, folder: str | Path | None = None) -> CatalogUpdate:
     """Validate a vendor sheet (CSV) and append its parts to the kind's
-    catalog file, atomically."""
+    catalog file, atomically, once the whole catalog loads with them."""
     from ..io.catalog_import import plan_parts
     planned = plan_parts(kind, sheet, folder)
+    try:
+        _read_back({planned.file: planned.text})
+    except InputError as exc:
+        raise InputError(str(sheet), exc.field,
+                         f"{exc.message} (in the {planned.file.name} this sheet would give)") from None
     update = CatalogUpdate({"file": planned.file, "kind": planned.kind, "ids": list(planned.ids)},
                            {planned.file: planned.text})
     output.write(update)
@@ -111,9 +131,11 @@ def catalog_add(kind: str, sheet: str | Path, folder: str | Path | None = None) 
 def catalog_import_mgdb(tables: str | Path, screws: str | Path | None = None,
                         folder: str | Path | None = None) -> CatalogUpdate:
     """Brushless motors, their gearheads and ball screws from makers' tables
-    into motors-mgdb.toml, gears-mgdb.toml (and screws-sourced.toml)."""
+    into motors-mgdb.toml, gears-mgdb.toml (and screws-sourced.toml), once
+    the catalog reads back with them and is physically plausible."""
     from ..io.mgdb import plan_mgdb
-    counts, texts = plan_mgdb(tables, screws, folder)
+    counts, texts, check = plan_mgdb(tables, screws, folder)
+    _read_back(texts, check)
     update = CatalogUpdate(counts, texts)
     output.write(update, option="--catalog")
     return update

@@ -38,11 +38,12 @@ class SolveResult(Payload):
     def files(self) -> dict:
         """results.json, candidates.csv, report.html, plotly.js and the
         catalog snapshot a later ``--baseline`` diffs against."""
+        from ..io.catalog_diff import snapshot_files
         from ..report.csv_table import candidates_csv
         from ..report.html import render
         files = {"results.json": results_json(self.results), "candidates.csv": candidates_csv(self.results),
                  "report.html": render(self.results, self.traces), PLOTLY_FILE: plotly_js}
-        files.update(_catalog_snapshot(self.catalog_folder))
+        files.update(snapshot_files(self.catalog_folder))
         return files
 
 
@@ -101,14 +102,6 @@ def results_json(results: dict) -> str:
         rows = ",\n".join(json.dumps(c, separators=(",", ":"), allow_nan=False) for c in results.get(key, []))
         text += f',\n "{key}": [\n{rows}\n ]'
     return text + "\n}\n"
-
-
-def _catalog_snapshot(folder: Path) -> dict[str, bytes]:
-    from ..io.catalog import KINDS
-    from ..io.catalog_diff import SNAPSHOT_DIR
-    from ..io.schema import read_input_bytes
-    return {f"{SNAPSHOT_DIR}/{name}": read_input_bytes(folder / name)
-            for name in KINDS if (folder / name).exists()}
 
 
 def _load_robust(path: str | Path) -> dict[str, dict]:

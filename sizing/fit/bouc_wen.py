@@ -7,7 +7,7 @@ Model (sizing.physics.bouc_wen, as the seed writes it):
 
 How the fit works
 - Scaling: the raw parameters span 1e-8..1, so the solver works on the
-  dimensionless groups of ``bouc_wen.normalised_groups`` with the stroke
+  dimensionless groups of ``physics.bouc_wen.params_to_groups`` with the stroke
   scale H = peak-to-peak of the measured displacement and the voltage scale
   V = the largest |voltage|: [d33/d, alpha/d, beta H^n/d, gamma H^n/d,
   delta/d, n] with d = H/V. They are all of order one.
@@ -42,10 +42,12 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from ..errors import FitError
-from ..physics.bouc_wen import BoucWen, free_displacement
+from ..physics.bouc_wen import (BoucWen, free_displacement, groups_jacobian, groups_to_params,
+                                params_to_groups)  # noqa: F401  (params_to_groups: for callers of the estimator)
 from ..sim.signals import nrmse
 from .common import (Z95, ConvergenceWarning, HysteresisRecord, IdentifiabilityWarning, check_hysteresis_records, correlation,
                      covariance, filter_inputs, identifiability, lag1_correlation, run_weights)
+from .prior import regularise
 
 PARAM_NAMES = ("d33", "alpha", "beta", "gamma", "delta", "n")
 # bounds of the dimensionless groups (physics: d33 > 0, n of order one)
@@ -54,38 +56,6 @@ GROUP_BOUNDS = np.array([[1e-3, 20.0], [-20.0, 20.0], [-100.0, 100.0], [-100.0, 
 # where random starting points are drawn
 START_BOX = np.array([[0.5, 2.0], [-1.0, 0.5], [-2.0, 10.0], [-2.0, 10.0], [-0.5, 0.5], [0.8, 2.5]])
 STATE_BOUND = 2.0   # |h0| and |offset| up to twice the stroke
-
-
-def groups_to_params(z: np.ndarray, H: float, V: float) -> np.ndarray:
-    """Physical parameters (..., 6) from groups (..., 6)."""
-    z = np.asarray(z, float)
-    d = H / V
-    out = z.copy()
-    out[..., 0:2] = z[..., 0:2] * d
-    out[..., 2:4] = z[..., 2:4] * d / H ** z[..., 5:6]
-    out[..., 4] = z[..., 4] * d
-    return out
-
-
-def params_to_groups(theta: np.ndarray, H: float, V: float) -> np.ndarray:
-    theta = np.asarray(theta, float)
-    d = H / V
-    out = theta.copy()
-    out[..., 0:2] = theta[..., 0:2] / d
-    out[..., 2:4] = theta[..., 2:4] * H ** theta[..., 5:6] / d
-    out[..., 4] = theta[..., 4] / d
-    return out
-
-
-def _dparams_dgroups(z: np.ndarray, H: float, V: float) -> np.ndarray:
-    d = H / V
-    T = np.zeros((6, 6))
-    T[0, 0] = T[1, 1] = T[4, 4] = d
-    T[2, 2] = T[3, 3] = d / H ** z[5]
-    T[2, 5] = -z[2] * d / H ** z[5] * np.log(H)
-    T[3, 5] = -z[3] * d / H ** z[5] * np.log(H)
-    T[5, 5] = 1.0
-    return T
 
 
 class BoucWenEstimator:
@@ -189,7 +159,6 @@ class BoucWenEstimator:
             warnings.warn(f"Bouc-Wen fit did not converge: {best.message}", ConvergenceWarning, stacklevel=2)
         self._finish(best, records, lb, ub)
         if self.prior is not None:
-            from .prior import regularise
             self._report(len(starts) / (len(starts) + 1), "prior")
             self.regularised_ = regularise(self, records, np.asarray(self.prior, float), self.prior_sigma, lb, ub)
         self._report(1.0, "done")
@@ -246,7 +215,7 @@ class BoucWenEstimator:
         rho = min(max(self.residual_correlation_, 0.0), 0.999)
         self.interval_inflation_ = (1 + rho) / (1 - rho)
         cov_z = covariance(J, r) * self.interval_inflation_
-        T = _dparams_dgroups(g, H, V)
+        T = groups_jacobian(g, H, V)
         self.cov_ = T @ cov_z[:6, :6] @ T.T
         self.stderr_ = np.sqrt(np.clip(np.diag(self.cov_), 0, None))
         self.corr_ = correlation(self.cov_)

@@ -5,7 +5,7 @@ enter a one-amplitude loop almost only through d33 + alpha, beta and gamma
 trade against each other). The plain least-squares values then wander along
 that valley and are no material constants. The rig-ready values therefore
 come from a second, regularised fit (maximum a posteriori with a Gaussian
-prior on the dimensionless groups of ``bouc_wen.groups_to_params``):
+prior on the dimensionless groups of ``physics.bouc_wen.params_to_groups``):
 
     minimise  sum r_i^2 + s^2 sum_j ((g_j - g_prior_j) / sd_j)^2,
     sd_j = sigma_rel max(|g_prior_j|, 0.1)
@@ -34,7 +34,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.optimize import least_squares
 
-from ..physics.bouc_wen import BoucWen, from_groups, normalised_groups
+from ..physics.bouc_wen import BoucWen, groups_jacobian, groups_to_params, params_to_groups, transfer
 from ..sim.signals import nrmse
 from .common import Z95
 
@@ -59,14 +59,11 @@ def transfer_prior(params: BoucWen, source_stroke: float, source_voltage: float,
                    target_stroke: float, target_voltage: float) -> np.ndarray:
     """Physical prior (6,) for a stack of stroke ``target_stroke`` over the
     voltage range ``target_voltage``: the same dimensionless loop."""
-    groups = normalised_groups(params, source_stroke, source_voltage)
-    return from_groups(groups, target_stroke, target_voltage).as_array()
+    return transfer(params, source_stroke, source_voltage, target_stroke, target_voltage).as_array()
 
 
 def regularise(est, records, prior: np.ndarray, sigma_rel: float, lb: np.ndarray, ub: np.ndarray) -> Regularised:
     """MAP refit of a fitted BoucWenEstimator ``est`` toward ``prior``."""
-    from .bouc_wen import _dparams_dgroups, groups_to_params, params_to_groups
-
     H, V = est.scales_
     g_prior = params_to_groups(prior, H, V)
     sd = sigma_rel * np.maximum(np.abs(g_prior), PRIOR_FLOOR)
@@ -104,7 +101,7 @@ def regularise(est, records, prior: np.ndarray, sigma_rel: float, lb: np.ndarray
     fitted.regularised_ = None
     result = Regularised(params=fitted.params_, h0=fitted.h0_, offset=fitted.offset_, prior=np.asarray(prior, float),
                          prior_share=share, nrmse={r.name: nrmse(r.position, fitted.predict(r)) for r in records},
-                         cov=(T := _dparams_dgroups(g, H, V)) @ posterior[:6, :6] @ T.T, estimator=fitted)
+                         cov=(T := groups_jacobian(g, H, V)) @ posterior[:6, :6] @ T.T, estimator=fitted)
     return result
 
 

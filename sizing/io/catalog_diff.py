@@ -3,7 +3,7 @@
 OLD and NEW are catalog folders or git revisions of the repository
 (``HEAD~3``, a tag, a commit; ``REV:path/to/catalogs`` for another folder
 than ``catalogs/``). A revision is materialised from
-``git show REV:catalogs/FILE`` into a temporary folder and read like any
+``git show REV:catalogs/FILE`` into a scratch folder (``io.atomic``) and read like any
 other folder.
 
 Entries are compared by id. Quantities are compared in SI, so
@@ -16,10 +16,10 @@ field by field, from its raw values.
 """
 from __future__ import annotations
 
+import contextlib
 import datetime as dt
 import math
 import subprocess
-import tempfile
 import typing
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
@@ -28,8 +28,9 @@ from pydantic import BaseModel, BeforeValidator
 
 from ..errors import InputError
 from ..units import KINDS as UNIT_KINDS, UnitError, parse_quantity, to_si
+from .atomic import scratch_folder
 from .catalog import DEFAULT_CATALOG, KINDS, load_catalog
-from .schema import load_toml
+from .schema import load_toml, read_input_bytes
 
 REL_TOL = 1e-9          # quantities closer than this (relative) are equal
 
@@ -115,10 +116,10 @@ def _repositories() -> list[Path]:
     return found
 
 
-def materialise(spec: str, dest: Path, repo: Path | None = None) -> Path:
-    """Write the catalog files of git revision ``spec`` (``REV`` or
-    ``REV:folder``) into ``dest``; returns ``dest``. InputError when no
-    repository knows the revision or it holds no catalog files."""
+def revision_files(spec: str, repo: Path | None = None) -> dict[str, bytes]:
+    """{file name: content} of the catalog files of git revision ``spec``
+    (``REV`` or ``REV:folder``). InputError when no repository knows the
+    revision or it holds no catalog files."""
     rev, _, sub = spec.partition(":")
     sub = (sub or "catalogs").strip("/")
     repos = [repo] if repo is not None else _repositories()
@@ -131,13 +132,13 @@ def materialise(spec: str, dest: Path, repo: Path | None = None) -> Path:
         names = [n for n in listing.stdout.split() if n in KINDS] if listing.returncode == 0 else []
         if not names:
             raise InputError(spec, None, f"revision {rev} of {root} has no catalog files in {sub}/ ({', '.join(KINDS)})")
-        dest.mkdir(parents=True, exist_ok=True)
+        files = {}
         for name in names:
             shown = subprocess.run(["git", "show", f"{rev}:{sub}/{name}"], cwd=root, capture_output=True)
             if shown.returncode != 0:
                 raise InputError(spec, name, f"git show failed: {shown.stderr.decode(errors='replace').strip()}")
-            (dest / name).write_bytes(shown.stdout)
-        return dest
+            files[name] = shown.stdout
+        return files
     raise InputError(spec, None, "expected a catalog folder or a git revision (no such folder, "
                                  f"and no revision {rev!r} in {', '.join(map(str, repos))})")
 
@@ -282,16 +283,12 @@ def _read_labelled(folder: Path, spec) -> dict:
 SNAPSHOT_DIR = "catalog"     # folder beside results.json holding the catalog it was computed with
 
 
-def snapshot_catalog(catalog_folder: str | Path, out_dir: str | Path) -> Path:
-    """Copy the catalog files into ``out_dir/catalog/`` so that a later
-    ``--baseline out_dir/results.json`` can diff against them."""
-    from .atomic import write_text
-    target = Path(out_dir) / SNAPSHOT_DIR
-    for name in KINDS:
-        source = Path(catalog_folder) / name
-        if source.exists():
-            write_text(target / name, source.read_text(encoding="utf-8"))
-    return target
+def snapshot_files(catalog_folder: str | Path) -> dict[str, bytes]:
+    """{``catalog/FILE``: content} of the catalog files: what ``sizing solve``
+    writes beside results.json so that a later ``--baseline
+    out_dir/results.json`` can diff against them."""
+    folder = Path(catalog_folder)
+    return {f"{SNAPSHOT_DIR}/{name}": read_input_bytes(folder / name) for name in KINDS if (folder / name).exists()}
 
 
 def baseline_catalog(results_path: str | Path, results: dict | None = None) -> Path | None:
@@ -348,14 +345,10 @@ def _sha(folder: Path) -> str | None:
 
 def diff_catalogs(old: str | Path, new: str | Path) -> CatalogDiff:
     """Compare two catalogs (folders or git revisions, see module doc)."""
-    with tempfile.TemporaryDirectory(prefix="sizing-diff-") as tmp:
-        folders = []
-        for label, spec in (("old", old), ("new", new)):
-            path = Path(spec)
-            if path.is_dir():
-                folders.append(path)
-            else:
-                folders.append(materialise(str(spec), Path(tmp) / label))
+    with contextlib.ExitStack() as stack:
+        folders = [Path(spec) if Path(spec).is_dir() else
+                   stack.enter_context(scratch_folder(revision_files(str(spec)), prefix="sizing-diff-"))
+                   for spec in (old, new)]
         a, b = (_read_labelled(f, spec) for f, spec in zip(folders, (old, new)))
         diff = CatalogDiff(old=str(old), new=str(new), old_sha256=_sha(folders[0]), new_sha256=_sha(folders[1]))
     for entry_id, (kind, file_name, _) in b.items():

@@ -26,15 +26,16 @@ from __future__ import annotations
 import csv
 import datetime as dt
 import fnmatch
+import functools
 import math
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Callable
 
 from ..errors import InputError
 from ..units import UnitError, to_si
-from .atomic import scratch_folder
-from .catalog import DEFAULT_CATALOG, KINDS, Gear, Motor, Screw, load_catalog
+from .catalog import DEFAULT_CATALOG, Gear, Motor, Screw
 from .catalog_import import entry_toml
 from .schema import parse_model
 
@@ -486,11 +487,11 @@ def _plausible(catalog, data: MgdbImport) -> None:
 
 
 def plan_mgdb(mgdb_dir: str | Path, screws_csv: str | Path | None = None,
-              catalog_dir: str | Path | None = None) -> tuple[dict, dict[Path, str]]:
+              catalog_dir: str | Path | None = None) -> tuple[dict, dict[Path, str], Callable]:
     """motors-mgdb.toml, gears-mgdb.toml (and screws-sourced.toml when
-    ``screws_csv`` is given) for the catalog folder, checked to load back
-    and be plausible with the rest of it: (counts, {path: text});
-    ``api.catalogs`` writes them."""
+    ``screws_csv`` is given) for the catalog folder: (counts, {path: text},
+    ``check(catalog)``, which raises InputError when the catalog read back
+    with them is implausible); ``api.catalogs`` reads back and writes."""
     data = build(mgdb_dir, screws_csv)
     folder = Path(catalog_dir) if catalog_dir is not None else DEFAULT_CATALOG
     command = "sizing catalog import-mgdb"
@@ -498,9 +499,6 @@ def plan_mgdb(mgdb_dir: str | Path, screws_csv: str | Path | None = None,
              OUT_FILES["gear"]: _file_text("gear", data.gears, command)}
     if screws_csv is not None:
         texts[OUT_FILES["screw"]] = _file_text("screw", data.screws, command)
-    kept = {name: (folder / name).read_bytes() for name in KINDS if (folder / name).exists() and name not in texts}
-    with scratch_folder({**kept, **texts}, prefix="sizing-mgdb-") as tmp:
-        _plausible(load_catalog(tmp), data)     # the written text reads back, and is physically plausible
     counts = {"motors": len(data.motors), "gears": len(data.gears), "screws": len(data.screws),
               "skipped": data.skipped, "files": sorted(texts)}
-    return counts, {folder / name: text for name, text in texts.items()}
+    return counts, {folder / name: text for name, text in texts.items()}, functools.partial(_plausible, data=data)

@@ -47,33 +47,51 @@ class BoucWen:
 # stacks. The notes take H = d33 V_max; we take the nominal (datasheet) stroke
 # because it is the one quantity every datasheet gives, and it keeps the
 # transferred stack's simulated stroke at its datasheet stroke.
+def params_to_groups(theta, stroke: float, max_voltage: float) -> np.ndarray:
+    """Dimensionless groups [d33/d, alpha/d, beta H^n/d, gamma H^n/d, delta/d, n]
+    of parameters ``theta`` (..., 6) in the order of ``BoucWen.as_array``;
+    H = ``stroke`` (m), d = H / ``max_voltage`` (m/V)."""
+    theta = np.asarray(theta, float)
+    d = stroke / max_voltage
+    out = theta.copy()
+    out[..., 0:2] = theta[..., 0:2] / d
+    out[..., 2:4] = theta[..., 2:4] * stroke ** theta[..., 5:6] / d
+    out[..., 4] = theta[..., 4] / d
+    return out
+
+
+def groups_to_params(groups, stroke: float, max_voltage: float) -> np.ndarray:
+    """Inverse of ``params_to_groups``: parameters (..., 6) from groups (..., 6)."""
+    z = np.asarray(groups, float)
+    d = stroke / max_voltage
+    out = z.copy()
+    out[..., 0:2] = z[..., 0:2] * d
+    out[..., 2:4] = z[..., 2:4] * d / stroke ** z[..., 5:6]
+    out[..., 4] = z[..., 4] * d
+    return out
+
+
+def groups_jacobian(groups, stroke: float, max_voltage: float) -> np.ndarray:
+    """d params / d groups (6, 6) of ``groups_to_params`` at ``groups`` (6,)."""
+    z = np.asarray(groups, float)
+    d = stroke / max_voltage
+    T = np.zeros((6, 6))
+    T[0, 0] = T[1, 1] = T[4, 4] = d
+    T[2, 2] = T[3, 3] = d / stroke ** z[5]
+    T[2, 5] = -z[2] * d / stroke ** z[5] * np.log(stroke)
+    T[3, 5] = -z[3] * d / stroke ** z[5] * np.log(stroke)
+    T[5, 5] = 1.0
+    return T
+
+
 def normalised_groups(params: BoucWen, nominal_stroke: float, max_voltage: float) -> np.ndarray:
     """Dimensionless groups [d33/d, alpha/d, beta H^n/d, gamma H^n/d, delta/d, n]."""
-    d_nom = nominal_stroke / max_voltage
-    h_n = nominal_stroke ** params.n
-    return np.array([
-        params.d33 / d_nom,
-        params.alpha / d_nom,
-        params.beta * h_n / d_nom,
-        params.gamma * h_n / d_nom,
-        params.delta / d_nom,
-        params.n,
-    ])
+    return params_to_groups(params.as_array(), nominal_stroke, max_voltage)
 
 
 def from_groups(groups: np.ndarray, nominal_stroke: float, max_voltage: float) -> BoucWen:
     """Inverse of ``normalised_groups`` for a stack of the given nominal stroke."""
-    d_nom = nominal_stroke / max_voltage
-    n = float(groups[5])
-    h_n = nominal_stroke ** n
-    return BoucWen(
-        d33=float(groups[0] * d_nom),
-        alpha=float(groups[1] * d_nom),
-        beta=float(groups[2] * d_nom / h_n),
-        gamma=float(groups[3] * d_nom / h_n),
-        delta=float(groups[4] * d_nom),
-        n=n,
-    )
+    return BoucWen.from_array(groups_to_params(groups, nominal_stroke, max_voltage))
 
 
 def transfer(params: BoucWen, source_stroke: float, source_vmax: float,

@@ -12,7 +12,8 @@ case names an effect in <= 5 %, median holdout shrink of the correctly
 named cases >= 70 %, under a minute per campaign.
 
     python benchmarks/diagnose_benchmark.py [--quick] [--json FILE]
-    python benchmarks/diagnose_benchmark.py --crossform [--heldout | --heldout2 | --heldout3 | --heldout4 | --heldout5 | --heldout6 | --heldout7 | --heldout8 | --heldout9 | --heldout10 | --heldout11 | --heldout12] [--json FILE]
+    python benchmarks/diagnose_benchmark.py --crossform [--set NAME] [--json FILE]
+    python benchmarks/diagnose_benchmark.py --published [--set NAME] [--json FILE]
 
 --crossform runs the campaigns of the second generator (benchmarks/crossform:
 its own integrator and its own forms of the effects, a mis-stated nominal,
@@ -22,10 +23,12 @@ reports its confusion matrix and the sensitivity of its verdicts to each
 threshold of sizing/diagnose/settings.py (each varied by x0.8 and x1.25,
 the fits held). Targets: right effect named (explained or partial) >= 90 %,
 no null case named, no outside effect explained, median holdout shrink
->= 80 %. --heldout ... --heldout12 run the held-out sets instead of the
-development set (benchmarks/crossform/cases.py SETS: other sizes, rigs,
-pairs and noise seeds each); a set not yet run on the code being changed
-is kept for that change's final measurement (docs/diagnosis.md).
+>= 80 %. The case sets are data: each generator's sets/manifest.json
+lists them (name, purpose, seed offset) and sets/NAME.json holds their
+cases; --set NAME runs one (default: the development set, dev). A set not
+yet run on the code being changed is kept for that change's final
+measurement (docs/diagnosis-benchmarks.md). --published runs the third
+generator's (benchmarks/published) instead.
 --only restricts a run to the cases whose names contain any of its
 comma-separated strings.
 
@@ -36,6 +39,7 @@ without leakage, and the loaded rigs carry it.
 from __future__ import annotations
 
 import argparse
+import importlib
 import json
 import sys
 import tempfile
@@ -44,12 +48,17 @@ from pathlib import Path
 
 import numpy as np
 
-from sizing.diagnose import synth
-from sizing.diagnose.check import NONE, Case, CheckResult
-from sizing.diagnose.diagnosis import diagnose_runs
-from sizing.diagnose.effects import library
-from sizing.io.rig import load_rig
-from sizing.sim.rigs import dc_model, piezo_model
+if __package__ in (None, ""):      # run as a script: the repository root holds the benchmarks package
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+from benchmarks.crossform.common import write_campaign  # noqa: E402
+from sizing.diagnose import synth  # noqa: E402
+from sizing.diagnose.check import NONE, Case, CheckResult  # noqa: E402
+from sizing.diagnose.diagnosis import diagnose_runs  # noqa: E402
+from sizing.diagnose.effects import library  # noqa: E402
+from sizing.io.campaign import campaign_split, load_campaign  # noqa: E402
+from sizing.io.rig import load_rig  # noqa: E402
+from sizing.sim.rigs import dc_model, piezo_model  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 SEED = 5
@@ -175,54 +184,69 @@ def _same(a: str, b: str) -> bool:
     return set(a.split("+")) == set(b.split("+"))
 
 
-def run_crossform(verbose: bool = True, only: str = "", which: str = "dev", generator: str = "crossform") -> dict:
-    """``which``: a set of the generator's cases.py SETS; ``generator``:
-    "crossform" (the second generator) or "published" (the third:
-    benchmarks/published, a published model with its published parameters)."""
-    import importlib
+def generator(name: str):
+    """The case sets of a generator: "crossform" (the second generator,
+    benchmarks/crossform) or "published" (the third, benchmarks/published:
+    a published model with its published parameters)."""
+    return importlib.import_module(f"benchmarks.{name}.cases")
 
-    sys.path.insert(0, str(ROOT))
-    from benchmarks.crossform.common import write_campaign
 
-    xcases = importlib.import_module(f"benchmarks.{generator}.cases")
-    from sizing import api
+def diagnose_folder(folder, holdout: str):
+    """A campaign folder diagnosed as ``sizing diagnose FOLDER --holdout RUN``
+    does, with the default options."""
+    campaign = load_campaign(folder)
+    campaign_split(campaign, [holdout])
+    return diagnose_runs(campaign.kind, campaign.rig, campaign.runs, [holdout])
 
+
+def run_case(xcases, case) -> tuple[dict, dict | None]:
+    """(the case's row, the verdict's inputs for the sensitivity table)."""
+    start = time.perf_counter()
+    rig, runs, holdout = xcases.generate(case)
+    with tempfile.TemporaryDirectory() as folder:
+        write_campaign(Path(folder), rig, runs)
+        generated = time.perf_counter() - start
+        d = diagnose_folder(folder, holdout)
+    v = d.verdict
+    first = d.fits[0] if d.fits else None
+    row = {"case": case.name, "technology": case.technology, "truth": case.truth,
+           "predicted": v["effect"] or NONE, "form": v.get("form"), "status": v["status"],
+           "rule": getattr(v, "rule", ""), "first": first.name if first else NONE,
+           "shrink": float(v.get("shrink_holdout", 0.0)),
+           "shrink_first": float(1 - first.nrmse_holdout / d.baseline_holdout) if first else 0.0,
+           "params_first": first.params if first else {},
+           "reason": v.get("reason", ""), "line": v.get("line"),
+           "nrmse_baseline": d.baseline_holdout, "noise_floor": d.noise_floor_holdout,
+           # what a perfect model's raw shrink would be: it still leaves the noise
+           "shrink_ceiling": float(1 - d.noise_floor_holdout / d.baseline_holdout),
+           "explained_gap_energy": float(v.get("explained_gap_energy", 0.0)),
+           "seconds": d.seconds, "seconds_generate": generated, "ok": _right(case.truth, v)}
+    return row, d.extra.get("verdict_inputs")
+
+
+def run_crossform(verbose: bool = True, only: str = "", which: str = "dev", generator_name: str = "crossform") -> dict:
+    """Every case of the set ``which`` of a generator (``generator``)
+    diagnosed; the summary, the cases and the set's manifest entry."""
+    xcases = generator(generator_name)
+    case_set = xcases.case_set(which)
     rows, sensitivity = [], []
-    dc_table, piezo_table, offset = xcases.SETS[which]
-    tables = (("dc_motor", dc_table), ("piezohydraulic", piezo_table))
-    seed0 = SEED * 100 + offset
-    for technology, table in tables:
-        for k, case in enumerate(table):
-            if only and not any(o in case[0] for o in only.split(",")):
-                continue
-            start = time.perf_counter()
-            rig, runs, holdout = xcases.generate(case, seed0 + k, technology)
-            with tempfile.TemporaryDirectory() as folder:
-                write_campaign(Path(folder), rig, runs)
-                generated = time.perf_counter() - start
-                d = api.diagnose(folder, [holdout])
-            v = d.verdict
-            truth = case[1]
-            predicted = v["effect"] or NONE
-            ok = _right(truth, v)
-            if "verdict_inputs" in d.extra:          # the verdict's inputs, for the sensitivity table
-                sensitivity.append((truth, d.extra["verdict_inputs"]))
-            rows.append({"case": case[0], "technology": technology, "truth": truth, "predicted": predicted,
-                         "form": v.get("form"),
-                         "status": v["status"], "first": d.fits[0].name if d.fits else NONE,
-                         "shrink": float(v.get("shrink_holdout", 0.0)),
-                         "shrink_first": float(1 - d.fits[0].nrmse_holdout / d.baseline_holdout) if d.fits else 0.0,
-                         "params_first": d.fits[0].params if d.fits else {},
-                         "reason": v.get("reason", ""), "line": v.get("line"),
-                         "nrmse_baseline": d.baseline_holdout, "noise_floor": d.noise_floor_holdout,
-                         # what a perfect model's raw shrink would be: it still leaves the noise
-                         "shrink_ceiling": float(1 - d.noise_floor_holdout / d.baseline_holdout),
-                         "explained_gap_energy": float(v.get("explained_gap_energy", 0.0)),
-                         "seconds": d.seconds, "seconds_generate": generated, "ok": ok})
-            if verbose:
-                print(f"{'ok ' if ok else 'BAD'} {case[0]:<20} {truth:<32} -> {v['status']:<18} {predicted:<30} "
-                      f"first {rows[-1]['first']:<28} shrink {100 * rows[-1]['shrink_first']:5.1f} %  "
-                      f"{d.seconds:.1f} s", flush=True)
+    for case in case_set.cases:
+        if only and not any(o in case.name for o in only.split(",")):
+            continue
+        row, inputs = run_case(xcases, case)
+        rows.append(row)
+        if inputs is not None:
+            sensitivity.append((case.truth, inputs))
+        if verbose:
+            print(f"{'ok ' if row['ok'] else 'BAD'} {case.name:<20} {case.truth:<32} -> {row['status']:<18} "
+                  f"{row['predicted']:<30} first {row['first']:<28} shrink {100 * row['shrink_first']:5.1f} %  "
+                  f"{row['seconds']:.1f} s", flush=True)
+    return {"generator": generator_name, "set": which, "purpose": case_set.purpose,
+            "summary": summarise(rows, sensitivity), "cases": rows}
+
+
+def summarise(rows, sensitivity) -> dict:
+    """The figures of a cross-form or published run (targets: module docstring)."""
     effect = [r for r in rows if r["truth"] != NONE and not r["truth"].startswith("outside:")]
     null = [r for r in rows if r["truth"] == NONE]
     outside = [r for r in rows if r["truth"].startswith("outside:")]
@@ -238,8 +262,13 @@ def run_crossform(verbose: bool = True, only: str = "", which: str = "dev", gene
                                                      if right else float("nan")),
                "seconds_per_campaign": {"median": float(np.median([r["seconds"] for r in rows])),
                                         "max": float(np.max([r["seconds"] for r in rows]))},
-               "confusion": crossform_table(rows), "sensitivity": sensitivity_table(sensitivity)}
-    return {"summary": summary, "cases": rows}
+               "per_technology": {t: {"median_s": float(np.median([r["seconds"] for r in rows if r["technology"] == t])),
+                                      "n": sum(r["technology"] == t for r in rows)}
+                                  for t in sorted({r["technology"] for r in rows})},
+               "confusion": crossform_table(rows)}
+    summary["sensitivity_rows"] = sensitivity_rows(sensitivity)
+    summary["sensitivity"] = render_sensitivity(summary["sensitivity_rows"]) if sensitivity else "(no verdict inputs kept)"
+    return summary
 
 
 def _right(truth: str, v: dict) -> bool:
@@ -255,38 +284,40 @@ def _right(truth: str, v: dict) -> bool:
 SENSITIVITY_FACTORS = (0.8, 1.25)
 
 
-def sensitivity_table(cases) -> str:
+def sensitivity_rows(cases) -> list[dict]:
     """How the verdicts move when each threshold of sizing/diagnose/settings.py
     is multiplied by each of SENSITIVITY_FACTORS, the fits held (only the
-    verdict is re-judged; the spectral-line input is the default run's).
-    cases: [(truth, Diagnosis.extra["verdict_inputs"])]."""
-    if not cases:
-        return "(no verdict inputs kept)"
+    verdict is re-judged; the spectral-line input is the default run's):
+    one row per (threshold, factor), the first with the defaults, counting
+    the effect cases named right, the null cases named and the outside
+    effects explained. cases: [(truth, Diagnosis.extra["verdict_inputs"])]."""
     from sizing.diagnose import judge
     from sizing.diagnose.settings import DEFAULT, VERDICT_THRESHOLDS
 
-    def score(settings):
-        right = null = outside = 0
+    def row(name, factor, settings):
+        out = {"threshold": name, "default": getattr(DEFAULT, name) if name else None, "factor": factor,
+               "right": 0, "null": 0, "outside": 0,
+               "n_effect": sum(t != NONE and not t.startswith("outside:") for t, _ in cases)}
         for truth, inputs in cases:
-            v = judge.verdict(**inputs, settings=settings)
-            ok = _right(truth, v)
-            if truth == NONE:
-                null += not ok
-            elif truth.startswith("outside:"):
-                outside += not ok
-            else:
-                right += ok
-        return right, null, outside
+            ok = _right(truth, judge.verdict(**inputs, settings=settings))
+            kind = "null" if truth == NONE else "outside" if truth.startswith("outside:") else "right"
+            out[kind] += ok if kind == "right" else not ok
+        return out
 
-    n_effect = sum(t != NONE and not t.startswith("outside:") for t, _ in cases)
-    base = score(DEFAULT)
+    if not cases:
+        return []
+    return [row(None, 1.0, DEFAULT)] + [row(name, factor, DEFAULT.varied(name, factor))
+                                        for name in VERDICT_THRESHOLDS for factor in SENSITIVITY_FACTORS]
+
+
+def render_sensitivity(rows) -> str:
     lines = ["| threshold | default | x factor | right named | null named | outside explained |",
-             "|---|---|---|---|---|---|",
-             f"| (defaults) | | | {base[0]}/{n_effect} | {base[1]} | {base[2]} |"]
-    for name in VERDICT_THRESHOLDS:
-        for factor in SENSITIVITY_FACTORS:
-            right, null, outside = score(DEFAULT.varied(name, factor))
-            lines.append(f"| {name} | {getattr(DEFAULT, name):g} | {factor:g} | {right}/{n_effect} | {null} | {outside} |")
+             "|---|---|---|---|---|---|"]
+    for r in rows:
+        name = r["threshold"] or "(defaults)"
+        default = "" if r["threshold"] is None else f"{r['default']:g}"
+        factor = "" if r["threshold"] is None else f"{r['factor']:g}"
+        lines.append(f"| {name} | {default} | {factor} | {r['right']}/{r['n_effect']} | {r['null']} | {r['outside']} |")
     return "\n".join(lines)
 
 
@@ -301,31 +332,27 @@ def crossform_table(rows) -> str:
     return "\n".join(lines)
 
 
-# --crossform sets other than the development set: flag name -> what it holds
-HELDOUT_SETS = {f"heldout{k}" if k > 1 else "heldout":
-                f"the held-out set {k} (other sizes, rigs, pairs and noise seeds)" for k in range(1, 13)}
-
-
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="one size per effect, one null per rig")
     parser.add_argument("--default-forms", action="store_true",
                         help="inject only the first form of each family (the library still diagnoses with every form)")
     parser.add_argument("--json", type=Path, help="write every case and the summary here")
-    parser.add_argument("--crossform", action="store_true", help="the second generator's campaigns instead")
+    parser.add_argument("--crossform", action="store_true",
+                        help="the second generator's campaigns instead (its development set unless --set)")
     parser.add_argument("--published", action="store_true",
                         help="the third generator's campaigns instead (benchmarks/published: LuGre with the "
                              "parameters of Canudas de Wit et al. 1995 under the paper's PID)")
+    parser.add_argument("--set", dest="case_set", metavar="NAME",
+                        help="a case set of the generator's sets/manifest.json (default dev; implies --crossform "
+                             "unless --published): " + ", ".join(generator("crossform").sets()))
     parser.add_argument("--only", default="",
                         help="with --crossform: only the cases whose name contains this (comma-separated: any of these)")
-    sets = parser.add_mutually_exclusive_group()
-    for name, what in HELDOUT_SETS.items():
-        sets.add_argument(f"--{name}", action="store_true", help=f"with --crossform: {what}")
     args = parser.parse_args(argv)
     start = time.perf_counter()
-    if args.crossform or args.published:
-        which = next((name for name in HELDOUT_SETS if getattr(args, name)), "dev")
-        result = run_crossform(only=args.only, which=which, generator="published" if args.published else "crossform")
+    if args.crossform or args.published or args.case_set:
+        result = run_crossform(only=args.only, which=args.case_set or "dev",
+                               generator_name="published" if args.published else "crossform")
         s = result["summary"]
         print(s["confusion"])
         print()

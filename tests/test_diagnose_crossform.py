@@ -16,10 +16,10 @@ import pytest
 from sizing import api
 from sizing.errors import InputError
 
+from benchmarks.crossform import cases, dc
+from benchmarks.crossform.common import write_campaign
+
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
-from benchmarks.crossform import cases, dc  # noqa: E402
-from benchmarks.crossform.common import write_campaign  # noqa: E402
 
 
 def _campaign(tmp_path, effects, seed, **options):
@@ -27,13 +27,14 @@ def _campaign(tmp_path, effects, seed, **options):
     return write_campaign(tmp_path / "c", rig, runs)
 
 
+@pytest.mark.slow
 def test_lugre_friction_in_a_stiff_loop_is_named_from_the_current(tmp_path):
     """LuGre friction with a Stribeck rise (a form the library does not use:
     it holds Karnopp-Coulomb) under a stiff position loop that logs its
     current: the diagnosis names coulomb_friction, and the current channel
     shrinks more than the position does (the loop hides friction in the
     position)."""
-    folder = _campaign(tmp_path, {"friction": cases.LUGRE_B}, seed=7)
+    folder = _campaign(tmp_path, {"friction": cases.find("dc-lugre-b").effects["friction"]}, seed=7)
     d = api.diagnose(folder, ["stairs_b"], tmp_path / "out")
     assert d.bench.channels == ("position_m", "current_A")
     assert d.verdict["effect"] == "coulomb_friction"
@@ -117,6 +118,7 @@ def test_drive_current_limit_is_named_with_its_form(tmp_path):
     assert best.params["current_limit_A"] == pytest.approx(4.5, rel=0.1)
 
 
+@pytest.mark.slow
 def test_lugre_seal_from_the_second_generator_is_named_as_seal_stick_slip(tmp_path):
     """Acceptance (piezo): the second generator's output seal is
     LuGre with a Stribeck rise (3 N running, 6 N breakaway, 1 mm/s, 10 um
@@ -134,7 +136,7 @@ def test_lugre_seal_from_the_second_generator_is_named_as_seal_stick_slip(tmp_pa
     README's misses), and the Karnopp form ranks above the LuGre one; the
     dev set's two seal cases are ``explained``."""
     from benchmarks.crossform import piezo
-    rig, runs = piezo.campaign({"seal": cases.SEAL_B}, seed=17)
+    rig, runs = piezo.campaign({"seal": cases.find("pz-seal-b").effects["seal"]}, seed=17)
     folder = write_campaign(tmp_path / "c", rig, runs)
     d = api.diagnose(folder, ["stairs_b"])
     assert d.verdict["status"] in ("explained", "partial"), d.verdict["reason"]
@@ -156,6 +158,7 @@ def test_a_small_backlash_behind_a_large_delay_is_named_as_the_pair(tmp_path):
     assert params["backlash.backlash_m"] == pytest.approx(2e-4, rel=0.2)
 
 
+@pytest.mark.slow
 def test_a_seal_masked_by_a_large_delay_is_named_with_it(tmp_path):
     """A 12 ms Pade delay over a LuGre output seal (2 N running, 3.3 N
     breakaway) on four stacks. Against the nominal the delay screens first
@@ -173,6 +176,7 @@ def test_a_seal_masked_by_a_large_delay_is_named_with_it(tmp_path):
     assert d.fits[0].params["sensor_delay.delay_s"] == pytest.approx(0.012, rel=0.2)
 
 
+@pytest.mark.slow
 def test_an_output_lag_is_not_taken_for_an_amplifier_bandwidth(tmp_path):
     """Viscous damping of 180 N s/m on the output of a 3.5 in rig: a
     first-order lag of c R^2 / (n k_s), about 20 ms. An amplifier
@@ -224,6 +228,7 @@ def test_a_small_backlash_in_a_stiff_loop_is_named_when_it_leaves_only_the_noise
     assert d.baseline_holdout < 1.5 * np.hypot(d.noise_floor_holdout, 0.002)    # inside the band
 
 
+@pytest.mark.slow
 def test_a_current_limit_behind_a_delay_is_found_by_a_screen_fine_enough_for_its_valley(tmp_path):
     """A 4.5 A drive current limit and a 6.5 ms Pade delay on an 11.2 mm
     stroke (the seventh held-out set's dc-h7-ilimit+pade, its seed). With
@@ -234,9 +239,8 @@ def test_a_current_limit_behind_a_delay_is_found_by_a_screen_fine_enough_for_its
     bound, every fit followed, and nothing was named with a gap 23 x the
     noise. At least MIN_SCREEN points per effect find the valley and the
     pair is named."""
-    case = next(c for c in cases.DC_HELDOUT7 if c[0] == "dc-h7-ilimit+pade")
-    k = cases.DC_HELDOUT7.index(case)
-    rig, runs, holdout = cases.generate(case, 5 * 100 + cases.SETS["heldout7"][2] + k, "dc_motor")
+    case = cases.find("dc-h7-ilimit+pade")
+    rig, runs, holdout = cases.generate(case)
     folder = write_campaign(tmp_path / "c", rig, runs)
     d = api.diagnose(folder, [holdout])
     named = set((d.verdict["effect"] or "").split("+"))
@@ -246,6 +250,7 @@ def test_a_current_limit_behind_a_delay_is_found_by_a_screen_fine_enough_for_its
     assert params["sensor_delay.delay_s"] == pytest.approx(0.0065, rel=0.15)
 
 
+@pytest.mark.slow
 def test_a_ringing_mount_at_the_noise_is_named_from_its_spectral_line(tmp_path):
     """A 38 Hz sensor mount with 1.8 % damping and gain 0.17 (the fifth
     held-out set's dc-h5-mount-high, its seed): it rings for a few cycles
@@ -253,9 +258,8 @@ def test_a_ringing_mount_at_the_noise_is_named_from_its_spectral_line(tmp_path):
     and the campaign was judged "no significant gap". Its holdout gap has
     a line at 38 Hz far above the local level (LINE_FACTOR), which the
     fitted mount removes: named from the line, at the true frequency."""
-    case = next(c for c in cases.DC_HELDOUT5 if c[0] == "dc-h5-mount-high")
-    k = cases.DC_HELDOUT5.index(case)
-    rig, runs, holdout = cases.generate(case, 5 * 100 + cases.SETS["heldout5"][2] + k, "dc_motor")
+    case = cases.find("dc-h5-mount-high")
+    rig, runs, holdout = cases.generate(case)
     d = api.diagnose(write_campaign(tmp_path / "c", rig, runs), [holdout])
     assert d.baseline_holdout <= 1.5 * d.noise_floor_holdout              # at the noise, broadband
     assert d.verdict["effect"] == "sensor_vibration" and d.verdict["status"] == "explained", d.verdict["reason"]
@@ -265,6 +269,7 @@ def test_a_ringing_mount_at_the_noise_is_named_from_its_spectral_line(tmp_path):
     assert mount.params["frequency_Hz"] == pytest.approx(38.0, rel=0.02)
 
 
+@pytest.mark.slow
 def test_a_mount_behind_a_backlash_is_paired_from_the_line_the_backlash_leaves(tmp_path):
     """A 0.17 mm backlash and a 36 Hz sensor mount with 2 % damping (the
     ninth set's dc-h9-backlash+mount, its seed). Backlash alone removes all of the
@@ -272,10 +277,9 @@ def test_a_mount_behind_a_backlash_is_paired_from_the_line_the_backlash_leaves(t
     was tried and backlash alone was named; but it leaves the mount's
     line, of which it removes 14 %. Pairs are tried when the best single
     leaves a line, and backlash + mount removes most of it."""
-    case = next(c for c in cases.DC_HELDOUT9 if c[0] == "dc-h9-backlash+mount")
-    k = cases.DC_HELDOUT9.index(case)
-    rig, runs, holdout = cases.generate(case, 5 * 100 + cases.SETS["heldout9"][2] + k, "dc_motor")
+    case = cases.find("dc-h9-backlash+mount")
+    rig, runs, holdout = cases.generate(case)
     d = api.diagnose(write_campaign(tmp_path / "c", rig, runs), [holdout])
     assert set((d.verdict["effect"] or "").split("+")) == {"backlash", "sensor_vibration"}, d.verdict["reason"]
     assert d.verdict["status"] == "explained"
-    assert d.fits[0].params["sensor_vibration.frequency_Hz"] == pytest.approx(case[2]["mount"]["f_Hz"], rel=0.05)
+    assert d.fits[0].params["sensor_vibration.frequency_Hz"] == pytest.approx(case.effects["mount"]["f_Hz"], rel=0.05)

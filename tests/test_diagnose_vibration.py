@@ -93,16 +93,11 @@ def test_line_rule_names_a_mount_inside_the_model_form_floor(tmp_path):
     within 1.5 x the model-form floor): the holdout gap has a line near
     35 Hz that the mount form removes, so sensor_vibration is named by the
     line rule."""
-    import sys
-    from pathlib import Path
-
-    from sizing import api
-    root = Path(__file__).resolve().parents[1]
-    sys.path.insert(0, str(root))
     from benchmarks.crossform import cases, dc
     from benchmarks.crossform.common import write_campaign
+    from sizing import api
 
-    rig, runs = dc.campaign({"mount": cases.MOUNT_B}, seed=17)
+    rig, runs = dc.campaign({"mount": cases.find("dc-mount-b").effects["mount"]}, seed=17)
     d = api.diagnose(write_campaign(tmp_path / "c", rig, runs), ["stairs_b"])
     assert d.verdict["effect"] == "sensor_vibration"
     line = d.verdict["line"]

@@ -3,16 +3,11 @@ and the paper's servo without friction against its continuous closed
 loop."""
 from __future__ import annotations
 
-import sys
-from pathlib import Path
-
 import numpy as np
 import pytest
 from scipy import signal
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
-from benchmarks.published import cases, servo  # noqa: E402
+from benchmarks.published import cases, servo
 
 
 def test_table_i_values_are_the_published_ones():
@@ -35,6 +30,8 @@ def test_frictionless_servo_follows_the_continuous_closed_loop():
 
 
 def test_cases_have_their_truth_and_write_a_campaign():
-    rig, runs, holdout = cases.generate(cases.DEV[0], 1)
+    dev = cases.case_set("dev")
+    assert {c.truth for c in dev.cases} == {"none", "coulomb_friction"}
+    rig, runs, holdout = cases.generate(dev.cases[0])
     assert holdout in runs and set(runs[holdout]) == {"time_s", "reference_m", "position_m", "current_A"}
     assert 'kind = "dc_motor"' in rig

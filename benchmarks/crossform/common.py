@@ -1,7 +1,10 @@
 """Shared pieces of the cross-form generator: RK4, noise, Pade delay,
-writers. numpy/scipy only (no sizing import)."""
+writers, and the case sets read from data files (``load_set``). numpy/scipy
+only (no sizing import)."""
 from __future__ import annotations
 
+import json
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -71,3 +74,59 @@ def write_campaign(folder: Path, rig_toml: str, runs: dict[str, dict[str, np.nda
         np.savetxt(folder / "runs" / f"{name}.csv", data, delimiter=",", header=",".join(keys),
                    comments="", fmt="%.9g")
     return folder
+
+
+@dataclass(frozen=True)
+class Case:
+    """One campaign of a case set: ``truth`` is the library effect a right
+    diagnosis names ("none" for a null case, "outside:<what>" for an
+    effect the library does not hold, "a+b" for a pair); ``effects`` and
+    ``options`` are the generator's; ``seed`` the campaign's noise seed."""
+
+    name: str
+    technology: str
+    truth: str
+    effects: dict
+    options: dict
+    seed: int
+
+
+@dataclass(frozen=True)
+class CaseSet:
+    """A case set of a generator, as its manifest declares it."""
+
+    name: str
+    purpose: str
+    seed_offset: int
+    cases: tuple
+
+    def case(self, name: str) -> Case:
+        return next(c for c in self.cases if c.name == name)
+
+
+TECHNOLOGIES = ("dc_motor", "piezohydraulic")
+
+
+def manifest(folder: Path) -> dict:
+    """The manifest of a folder of case sets (``sets/manifest.json``):
+    {"seed_base": int, "sets": [{"name", "file", "seed_offset", "purpose"}]}."""
+    return json.loads((Path(folder) / "manifest.json").read_text())
+
+
+def load_set(folder: Path, name: str) -> CaseSet:
+    """A case set read from ``folder`` (its data file named in the manifest).
+    The seed of a case is seed_base + the set's seed_offset + its index in
+    its technology's table."""
+    m = manifest(folder)
+    entry = next((s for s in m["sets"] if s["name"] == name), None)
+    if entry is None:
+        raise KeyError(f"no case set {name!r} in {folder} (sets: {', '.join(set_names(folder))})")
+    tables = json.loads((Path(folder) / entry["file"]).read_text())
+    seed0 = m["seed_base"] + entry["seed_offset"]
+    cases = tuple(Case(c["name"], tech, c["truth"], c.get("effects", {}), c.get("options", {}), seed0 + k)
+                  for tech in TECHNOLOGIES for k, c in enumerate(tables.get(tech, [])))
+    return CaseSet(name, entry["purpose"], entry["seed_offset"], cases)
+
+
+def set_names(folder: Path) -> list[str]:
+    return [s["name"] for s in manifest(folder)["sets"]]

@@ -1,27 +1,32 @@
-"""The third generator's campaigns: (name, truth, friction, options).
+"""The third generator's campaigns: case sets as data (``sets/*.json``,
+listed with their purpose and seed offset in ``sets/manifest.json``).
 
 The friction is the published LuGre model with the parameters of
-Canudas de Wit et al. (1995), Table I (servo.py), under the paper's PID;
-the null cases run the same servo without friction. Sensor noise: white,
-on the position (``white_m``, m rms) and on the logged command
-(``current_A``, A rms); each case has its own seed.
+Canudas de Wit et al. (1995), Table I (servo.py, named "table_i" in the
+data), under the paper's PID; the null cases run the same servo without
+friction. Sensor noise: white, on the position (option ``white_m``, m rms)
+and on the logged command (``current_A``, A rms); each case has its own
+seed. ``scale`` scales the set-points.
 """
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 
+from ..crossform.common import Case, CaseSet, load_set, set_names
 from . import servo
 
-DEV = [
-    ("pub-null-1", "none", None, {}),
-    ("pub-null-2", "none", None, {"white_m": 3e-4}),
-    ("pub-lugre-1", "coulomb_friction", servo.TABLE_I, {}),
-    ("pub-lugre-2", "coulomb_friction", servo.TABLE_I, {"white_m": 3e-4}),
-    ("pub-lugre-half-steps", "coulomb_friction", servo.TABLE_I, {"scale": 0.5}),
-]
+SETS_DIR = Path(__file__).resolve().parent / "sets"
+FRICTION = {"table_i": servo.TABLE_I}     # the published parameter sets the data name
 
-# a set: (DC table, piezo table, seed offset), as benchmarks/crossform/cases.py
-SETS = {"dev": (DEV, [], 70000)}
+
+def sets() -> list[str]:
+    return set_names(SETS_DIR)
+
+
+def case_set(name: str) -> CaseSet:
+    return load_set(SETS_DIR, name)
 
 
 def excitations(scale: float = 1.0, fs: float = 1000.0, duration: float = 12.0) -> tuple[dict, np.ndarray]:
@@ -36,10 +41,11 @@ def excitations(scale: float = 1.0, fs: float = 1000.0, duration: float = 12.0) 
     return {"stairs_a": stairs([0, 1.0, 0.4, 0.8]), "wave": wave, "stairs_b": stairs([0, 0.5, 0.9, 0.2])}, t
 
 
-def generate(case, seed: int, technology: str = "dc_motor"):
+def generate(case: Case):
     """(rig.toml, runs, holdout run) of one case."""
-    _name, _truth, friction, options = case
-    rng = np.random.default_rng(seed)
+    friction = FRICTION[case.effects["friction"]] if case.effects.get("friction") else None
+    options = case.options
+    rng = np.random.default_rng(case.seed)
     refs, t = excitations(options.get("scale", 1.0))
     runs = {}
     for name, xd in refs.items():

@@ -24,7 +24,7 @@ WRITING_FUNCTIONS = {("os", n) for n in ("replace", "rename", "remove", "unlink"
     {("numpy", "save"), ("np", "save"), ("np", "savetxt"), ("pickle", "dump"), ("json", "dump")}
 WRITING_METHODS = {"write_text", "write_bytes", "to_csv", "write_html", "write_image", "savefig", "mkdir",
                    "touch", "unlink", "rmdir", "symlink_to", "hardlink_to"}
-ATOMIC_WRITERS = {"write_folder", "write_files", "write_text", "scratch_folder"}
+ATOMIC_WRITERS = {"write_folder", "write_files", "write_text", "scratch_folder", "store_cache"}
 
 
 def _modules() -> dict[str, Path]:
@@ -184,14 +184,15 @@ def _allowed(module: str, function: str, what: str) -> bool:
         return True
     if what.endswith("scratch_folder") and module.startswith(SCRATCH_USERS):
         return True
-    return (module, function) in CACHES
+    return what.endswith("store_cache") and (module, function) in CACHES
 
 
 # The file layer reads back what a command would write, or a git
 # revision's catalog, from a scratch folder the atomic writer makes and
 # removes (``io.atomic.scratch_folder``); nothing else of it writes.
 SCRATCH_USERS = "sizing.io."
-# A cache outside every output folder: parsed catalogs keyed by content.
+# A cache outside every output folder, written by the atomic writer:
+# parsed catalogs keyed by content.
 CACHES = {("sizing.io.catalog", "_store")}
 
 
@@ -220,8 +221,9 @@ def test_the_writer_scan_tells_writes_from_reads(source, writes):
 
 
 def test_the_writer_scan_allows_only_the_named_exceptions():
-    cache = "def _store(d):\n    os.replace(a, b)"
+    cache = "def _store(d):\n    store_cache(path, data, 200)"
     assert file_writers({"sizing.io.catalog": ast.parse(cache)}) == []
     assert file_writers({"sizing.io.catalog": ast.parse(cache.replace("_store", "load"))}) != []
+    assert file_writers({"sizing.io.catalog": ast.parse(cache.replace("store_cache", "os.replace"))}) != []
     assert file_writers({"sizing.io.catalog_diff": ast.parse("scratch_folder(files)")}) == []
     assert file_writers({"sizing.api.solution": ast.parse("write_folder(d, files)")}) == []

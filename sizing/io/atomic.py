@@ -283,6 +283,28 @@ def _write_files(paths: list[Path], contents: list) -> None:
             leftover.unlink(missing_ok=True)
 
 
+def store_cache(target: Path, content: bytes, keep: int) -> None:
+    """A cache file, renamed over ``target`` once written; only the ``keep``
+    most recent files of its kind (suffix) stay in its folder. A cache that
+    cannot be written is skipped: the next reader computes again."""
+    tmp = None
+    try:
+        target.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(dir=target.parent, suffix=".tmp")
+        with os.fdopen(fd, "wb") as handle:
+            handle.write(content)
+        os.replace(tmp, target)
+        tmp = None
+        kept = sorted(target.parent.glob(f"*{target.suffix}"), key=lambda f: f.stat().st_mtime, reverse=True)
+        for old in kept[keep:]:
+            old.unlink(missing_ok=True)
+    except OSError:
+        pass
+    finally:
+        if tmp is not None:
+            Path(tmp).unlink(missing_ok=True)
+
+
 @contextlib.contextmanager
 def scratch_folder(files: Mapping[str, Content], prefix: str = "sizing-"):
     """A temporary folder holding ``files`` ({name: content}), removed after

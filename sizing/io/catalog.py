@@ -472,19 +472,9 @@ def _cached(digest: str):
 
 def _store(digest: str, parsed: list) -> None:
     import pickle
-    import tempfile
-    target = _cache_path(digest)
-    try:
-        target.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(dir=target.parent, suffix=".tmp")
-        with os.fdopen(fd, "wb") as handle:
-            pickle.dump(parsed, handle, protocol=pickle.HIGHEST_PROTOCOL)
-        os.replace(tmp, target)
-        kept = sorted(target.parent.glob("*.pickle"), key=lambda f: f.stat().st_mtime, reverse=True)
-        for old in kept[CACHE_KEEP:]:
-            old.unlink(missing_ok=True)
-    except OSError:
-        pass                    # no cache: the next load parses again
+
+    from .atomic import store_cache
+    store_cache(_cache_path(digest), pickle.dumps(parsed, protocol=pickle.HIGHEST_PROTOCOL), CACHE_KEEP)
 
 
 def _check_drives(catalog: Catalog) -> None:

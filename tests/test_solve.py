@@ -368,7 +368,7 @@ def test_seed_solve_end_to_end(tmp_path, seed_requirements):
         if c["variant"] == "parts":
             assert "winding_temperature" in c["margins"]
             assert c["simulated"]["peak_speed_m_s"] <= c["static"]["no_load_max_speed_m_s"] * (1 + 1e-6)
-    assert r["summary"]["comparison"]["technologies"].keys() == {"piezohydraulic", "dc_motor"}
+    assert r["summary"]["comparison"]["technologies"].keys() == {"piezohydraulic", "dc_motor", "piezo_pump"}
     plain = [c for c in r["candidates"] if c["technology"] == "piezohydraulic" and c["variant"] == "uncompensated"]
     assert not any(c["feasible"] for c in plain)
     html = (out / "report.html").read_text()

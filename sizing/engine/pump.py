@@ -30,9 +30,12 @@ OBJECTIVE_KEYS = {"mass": "mass_kg", "cost": "cost_usd", "volume": "volume_m3", 
 MAX_FEASIBLE_SIMULATED = 24    # designs that pass the screen, verified by simulation
 MIN_CLOSEST_SIMULATED = 8      # and at least this many of the closest of those that do not,
 SIMULATED = 24                 # up to this many in all
-# the cycle-averaged mean speed and the simulated one agree within this
-# fraction on the simulated designs (tests/test_pump_engine.py; docs/models.md)
-AGREEMENT_TOLERANCE = 0.15
+# the simulated mean speed over the cycle-averaged one, less 1, lies in this
+# band on the simulated designs (tests/test_pump_engine.py; docs/models.md):
+# the averaged model is conservative, for it omits the load ringing on the
+# high-side oil at each valve opening (with a light load they agree within
+# 5 %, tests/test_pump_physics.py)
+AGREEMENT_TOLERANCE = (-0.05, 0.35)
 NOT_SIMULATED = "not simulated: passes the pump screen, dominated by the simulated designs"
 BEST_DEMONSTRATED_POWER_W = 46.0
 BEST_DEMONSTRATED_SOURCE = ("46 W at 1 kHz, 1 kV, 500 psi bias (Kinetic Ceramics / Lynch group, "
@@ -51,7 +54,7 @@ def pump_candidates(req, catalog, loads: list[float], progress=None) -> dict:
         return {"candidates": [], "ruled_out": Counter(), "counts": {"combinations": 0}}
     gs, ruled = screen.groups(req, catalog)
     if not gs:
-        return {"candidates": [], "ruled_out": Counter(ruled), "counts": {"combinations": 0}}
+        return {"candidates": [], "ruled_out": Counter(), "counts": {"combinations": 0, "parts_not_rated": ruled}}
     R = screen.rows(req, catalog, gs)
     st = screen.figures(req, R, loads)
     M = screen.margins(req, gs, R, st, loads)
@@ -69,8 +72,9 @@ def pump_candidates(req, catalog, loads: list[float], progress=None) -> dict:
     sims = _simulate(req, gs, R, st, chosen, loads)
     _progress(progress, "simulating pumps", len(chosen), len(chosen))
     candidates = [_candidate(req, gs, R, st, M, met, i, sims, k, loads) for k, i in enumerate(chosen)]
-    out = Counter(ruled)
-    out["no bore gives the blocked force"] += int((~valid).sum())
+    out = Counter()
+    if (~valid).any():
+        out["no bore gives the blocked force"] = int((~valid).sum())
     names = list(M)
     rest = np.setdiff1d(np.flatnonzero(valid), chosen)
     for i in rest:
@@ -80,7 +84,7 @@ def pump_candidates(req, catalog, loads: list[float], progress=None) -> dict:
             out[min(names, key=lambda k: M[k][i] if np.isfinite(M[k][i]) else -np.inf)] += 1
     return {"candidates": candidates, "ruled_out": out,
             "counts": {"combinations": int(len(R["group"])), "groups": len(gs), "simulated": len(chosen),
-                       "screen_feasible": int((worst >= 0).sum())}}
+                       "screen_feasible": int((worst >= 0).sum()), "parts_not_rated": ruled}}
 
 
 def _choose(req, R, met, worst, violation, valid) -> list[int]:
@@ -138,7 +142,7 @@ def _simulate(req, gs, R, st, chosen, loads) -> list[dict]:
         bias_pressure=R["bias_pressure"][idx], cylinder_area=st["cylinder_area_m2"][idx],
         dead_length=screen.DEAD_LENGTH, load_mass=st["output_mass_kg"][idx],
         friction=R["f0"][idx], friction_pressure=R["cp"][idx], target_stroke=r.stroke,
-        t_end=3.0 * r.stroke / r.speed, **{k: R[k][idx] for k in screen.valve_of(R)})
+        t_end=2.0 * r.stroke / r.speed, **{k: R[k][idx] for k in screen.valve_of(R)})
     return [simulate(PumpModel(load_force=F, **args)) for F in loads]
 
 

@@ -42,7 +42,7 @@ OUTPUTS = ("stroke_m", "time_to_stroke_s", "mean_speed_m_s", "cycles", "pumped_v
 STEPS_PER_CYCLE = 100
 P_ATM = 101325.0
 POLYTROPIC = 1.4
-BISECTION = 48
+BISECTION = 36
 
 
 @dataclass
@@ -109,6 +109,8 @@ def _chamber(p, ph, pb, C, dV, dt, pcr, Av, kv, lift, cd, rho, dport):
     """Chamber pressure after a step that sweeps dV: solves
     C (p1 - p) - dV + dt (Q_out(p1 - ph) - Q_in(pb - p1)) = 0 (increasing in p1)."""
     free = p + dV / C
+    if pb - pcr <= free <= ph + pcr:
+        return free                     # both valves shut: the chamber only compresses
     lo = min(free, ph + pcr, pb - pcr)
     hi = max(free, ph + pcr, pb - pcr)
     for _ in range(BISECTION):

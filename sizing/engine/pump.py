@@ -21,6 +21,7 @@ from collections import Counter
 import numpy as np
 
 from ..physics import pump as pump_phys
+from ..physics.stack import derated_stroke
 from ..sim.pump import PumpModel, simulate
 from . import pump_screen as screen
 from .piezo import reference_bouc_wen, stack_bouc_wen
@@ -57,6 +58,7 @@ def pump_candidates(req, catalog, loads: list[float], progress=None) -> dict:
         return {"candidates": [], "ruled_out": Counter(), "counts": {"combinations": 0, "parts_not_rated": ruled}}
     R = screen.rows(req, catalog, gs)
     st = screen.figures(req, R, loads)
+    st.update(screen.drive(req, gs, R, st))
     M = screen.margins(req, gs, R, st, loads)
     met = screen.metrics(req, gs, R, st)
     valid = np.isfinite(st["cylinder_diameter_m"])
@@ -109,7 +111,7 @@ def _choose(req, R, met, worst, violation, valid) -> list[int]:
                 break
             if not pool[i]:
                 continue
-            key = (R["group"][i] // 1, R["pump_diameter"][i])
+            key = (int(R["group"][i]), float(R["pump_diameter"][i]))
             if key in seen:
                 continue
             seen.add(key)
@@ -127,15 +129,14 @@ def _simulate(req, gs, R, st, chosen, loads) -> list[dict]:
     r = req.requirements
     ref = reference_bouc_wen({g.stack.id: g.stack for g in gs})
     bws = [stack_bouc_wen(gs[R["group"][i]].stack, ref)[0] for i in idx]
-    nominal = np.array([b.d33 * R["voltage"][i] for b, i in zip(bws, idx)])
-    # the Bouc-Wen stroke at the frequency is already derated; the kernel runs
-    # the model and scales its output by the derating alone
+    # the kernel runs the Bouc-Wen model and scales its output by the
+    # temperature derating, as bouc_wen_stroke does for the screen
     derate = np.array([_derating(gs[R["group"][i]].stack, r.max_temperature) for i in idx])
     args = dict(
         k_stacks=st["stack_stiffness_N_m"][idx], d33=np.array([b.d33 for b in bws]),
         alpha=np.array([b.alpha for b in bws]), beta=np.array([b.beta for b in bws]),
         gamma=np.array([b.gamma for b in bws]), delta=np.array([b.delta for b in bws]),
-        n_bw=np.array([b.n for b in bws]), stroke_scale=derate * np.where(nominal > 0, 1.0, 0.0),
+        n_bw=np.array([b.n for b in bws]), stroke_scale=derate,
         voltage=R["voltage"][idx], frequency=R["frequency"][idx], pump_area=st["pump_area_m2"][idx],
         chamber_volume=st["chamber_volume_m3"][idx], bulk_modulus=R["bulk_modulus"][idx],
         air_fraction=screen.AIR_FRACTION, wall_compliance=st["wall_compliance_1_Pa"][idx], density=R["density"][idx],
@@ -147,7 +148,6 @@ def _simulate(req, gs, R, st, chosen, loads) -> list[dict]:
 
 
 def _derating(stack, temperature) -> float:
-    from ..physics.stack import derated_stroke
     return float(derated_stroke(1.0, stack.stroke_temperature_coefficient, temperature))
 
 

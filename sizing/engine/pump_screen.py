@@ -196,7 +196,7 @@ def figures(req, R: dict, loads: list[float]) -> dict[str, np.ndarray]:
         "peak_current_A": peak, "rms_current_A": rms,
         "amplifier_power_VA": pump.apparent_power(C_L, R["voltage"], R["frequency"]),
         "reactive_power_var": pump.reactive_power(C_L, R["voltage"], R["frequency"]),
-        "amplifier_heat_W": np.zeros_like(peak), "stack_heat_W": heat, "run_fraction": np.full_like(peak, run),
+        "stack_heat_W": heat, "run_fraction": np.full_like(peak, run),
         "stack_temperature_rise_K": stack_phys.temperature_rise(heat, area, PUMP_FILM_COEFFICIENT),
         "output_natural_frequency_Hz": f_n, "output_mass_kg": m_out,
         "oil_volume_m3": V_c + A_c * (2.0 * r.stroke + 2.0 * DEAD_LENGTH),
@@ -213,6 +213,20 @@ def _bore(net, g, force):
     return np.ceil(D * 1e3 - 1e-9) / 1e3
 
 
+def drive(req, gs, R, st) -> dict[str, np.ndarray]:
+    """The amplifier units each row needs (the sine's peak on max_current,
+    its rms on continuous_current), those counted (at most the option's),
+    and the heat they shed over the run fraction (physics/amplifier.py)."""
+    gi = R["group"]
+    pick = lambda fn: np.array([fn(g) for g in gs], dtype=float)[gi]   # noqa: E731
+    needed = np.maximum(np.ceil(np.maximum(st["peak_current_A"] / pick(lambda g: g.amplifier.max_current),
+                                           st["rms_current_A"] / pick(lambda g: g.amplifier.continuous_current)) - 1e-9), 1)
+    heat = amp_phys.dissipated_power(st["capacitance_large_F"], R["voltage"], R["frequency"],
+                                     pick(lambda g: g.amplifier.energy_recovery)) * st["run_fraction"]
+    return {"amplifier_units_needed": needed, "amplifier_units": np.minimum(needed, req.options.max_amplifier_units),
+            "amplifier_heat_W": heat}
+
+
 def margins(req, gs, R, st, loads) -> dict[str, np.ndarray]:
     """Every static check of every row, floor/ceiling margins (>= 0 met)."""
     r, o = req.requirements, req.options
@@ -222,12 +236,7 @@ def margins(req, gs, R, st, loads) -> dict[str, np.ndarray]:
     amp_T = T if o.amplifier_location == "actuator" else o.electronics_bay_temperature
     temps = pick(lambda g: min(temperature_margin(p.max_temperature, T)
                                for p in (g.stack, g.fluid, g.seal, g.valve, g.accumulator)))
-    needed = np.maximum(np.ceil(np.maximum(st["peak_current_A"] / pick(lambda g: g.amplifier.max_current),
-                                           st["rms_current_A"] / pick(lambda g: g.amplifier.continuous_current)) - 1e-9), 1)
-    st["amplifier_units_needed"] = needed
-    st["amplifier_units"] = np.minimum(needed, o.max_amplifier_units)
-    st["amplifier_heat_W"] = amp_phys.dissipated_power(st["capacitance_large_F"], R["voltage"], R["frequency"],
-                                                       pick(lambda g: g.amplifier.energy_recovery)) * st["run_fraction"]
+    needed = st["amplifier_units_needed"]
     thermal_volume = st["oil_volume_m3"] * pick(lambda g: g.fluid.thermal_expansion) * (T - o.drift_reference_temperature)
     speed = np.min(st["speeds"], axis=0) if loads else st["mean_speed_m_s"]
     return {

@@ -3,6 +3,7 @@ and the effect modules' one declared export (FORMS)."""
 from __future__ import annotations
 
 import json
+import pickle
 
 import numpy as np
 import pytest
@@ -30,6 +31,7 @@ def test_verdict_to_dict_gives_the_documented_fields():
                  "explained_gap_energy": 0.9}
     assert v["status"] == "explained" and v.get("form") == "karnopp" and v.get("line") is None
     assert v == d and json.loads(json.dumps(d)) == d
+    assert pickle.loads(pickle.dumps(v)) == v and pickle.loads(pickle.dumps(v)).rule == "explains"
     # a null verdict has no form
     assert "form" not in Verdict("unexplained", reasons=("a", "b")).to_dict()
     assert Verdict("unexplained", reasons=("a", "b")).reason == "a; b"

@@ -14,7 +14,6 @@ from __future__ import annotations
 import dataclasses
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from types import MappingProxyType
 
 STATUSES = ("explained", "partial", "unexplained", "no_significant_gap")
 
@@ -43,7 +42,7 @@ class Verdict(Mapping):
             raise ValueError(f"unknown verdict status {self.status!r}")
         if self.effect is None and self.status in ("explained", "partial"):
             raise ValueError(f"a verdict {self.status!r} names an effect")
-        object.__setattr__(self, "details", MappingProxyType(dict(self.details)))
+        object.__setattr__(self, "details", dict(self.details))      # a copy: the caller's dict may change
 
     @property
     def reason(self) -> str:

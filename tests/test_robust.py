@@ -89,7 +89,7 @@ def test_stroke_tolerance_gives_the_closed_form_probability(tmp_path, small_cata
     assert d["driving_tolerance"] == "stack.stroke"
     from sizing.report.robust_html import render
     page = render(out)                    # self-contained: plotly.js inline, no CDN
-    assert design["id"] in page and "Plotly" in page and "<script src" not in page
+    assert design.get("name", design["id"]) in page and "Plotly" in page and "<script src" not in page
     # a spread of zero leaves the nominal verdict: compliance certain
     req0, _ = load_requirements(_requirements(tmp_path, '\n[tolerances]\n"stack.stroke" = "0 %"\n'))
     zero = robust(req0, small_catalog, [design], samples=20, seed=3, executor=Executor(0))["designs"][0]

@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import dataclasses
 import json
+import re
 import math
 
 import numpy as np
@@ -391,6 +392,11 @@ def test_seed_solve_end_to_end(tmp_path, seed_requirements):
                | {(t.get("flip") or {}).get("design") for t in r["summary"]["comparison"]["technologies"].values()}
                | {g.get(k) for g in r["summary"]["groups"] for k in ("best", "closest")}
                for c in r["candidates"])
+    # people read short names: a long id shows only on hover (title) and in plotly's legend groups
+    visible = re.sub(r"title='[^']*'|\"legendgroup\":\"[^\"]*\"", "", html)
+    long_ids = {c["id"] for c in r["candidates"] if len(c["id"]) > 32} | {x["id"] for x in r["ruled_out"]}
+    assert long_ids and not [i for i in long_ids if i in visible]
+    assert all(len(c["name"]) <= 32 for c in r["candidates"])
     assert "Plotly.newPlot" in html and r["catalog_sha256"] in html and r["requirements_sha256"] in html
     header = (out / "candidates.csv").read_text().splitlines()[0]
     assert header.startswith("rank,id,technology")

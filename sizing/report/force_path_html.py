@@ -32,7 +32,7 @@ def piezo_designs(cands: list[dict], limit: int = 6) -> list[dict]:
 
 def force_path_figure(designs: list[dict]) -> go.Figure:
     fig = go.Figure()
-    names = [d["id"] for d in designs]
+    names = [d.get("name", d["id"]) for d in designs]
     members = [m for m in MEMBER_COLORS if any(x["member"] == m for d in designs for x in d["force_path"])]
     for m in members:
         share = [next((x["compliance_share"] for x in d["force_path"] if x["member"] == m), 0.0) for d in designs]
@@ -51,7 +51,7 @@ def thermal_figure(design: dict) -> go.Figure:
     fig = go.Figure(go.Waterfall(x=labels, y=values, measure=["relative"] * len(TERMS) + ["total"],
                                  hovertemplate="%{x}: %{y:.2f} mm<extra></extra>"))
     fig.update_layout(height=330, margin=dict(l=10, r=10, t=30, b=30), showlegend=False,
-                      title=f"thermal budget of {design['id']}", yaxis=dict(title="output displacement, mm"))
+                      title=f"thermal budget of {design.get('name', design['id'])}", yaxis=dict(title="output displacement, mm"))
     return fig
 
 
@@ -61,7 +61,7 @@ def section(cands: list[dict], to_div) -> str:
     if not designs:
         return "<h2>Force path, thermal budget, seals</h2><p>No piezohydraulic design was sized.</p>"
     rows = "".join(
-        f"<tr><td class='id'>{_e(d['id'])}</td><td class='l'>{_e(d.get('variant', ''))}</td>"
+        f"<tr><td class='id' title='{_e(d['id'])}'>{_e(d.get('name', d['id']))}</td><td class='l'>{_e(d.get('variant', ''))}</td>"
         f"<td>{d['static']['blocked_force_ideal_N']:.0f}</td><td>{d['static']['blocked_force_N']:.0f}</td>"
         f"<td>{d['static'].get('blocked_force_net_N', float('nan')):.0f}</td>"
         f"<td>{d['seal_friction_N']['wide']:.0f}</td><td>{d['seal_friction_N']['narrow']:.1f}</td>"

@@ -14,7 +14,7 @@ def _front(data: dict) -> go.Figure:
         sel = [d for d in ds if d.get("robust_pareto") == front]
         fig.add_trace(go.Scatter(
             x=[d["metrics"].get("mass_kg") for d in sel], y=[d["p_compliance"] for d in sel], mode="markers",
-            name=name, text=[d["id"] for d in sel],
+            name=name, text=[d.get("name", d["id"]) for d in sel],
             error_y=dict(type="data", symmetric=False, array=[d["p_ci95"][1] - d["p_compliance"] for d in sel],
                          arrayminus=[d["p_compliance"] - d["p_ci95"][0] for d in sel]),
             marker=dict(symbol=symbol, size=11, color=[d["metrics"].get("cost_usd") for d in sel],
@@ -28,7 +28,7 @@ def _front(data: dict) -> go.Figure:
 def _sensitivity(data: dict) -> go.Figure:
     ds = data["designs"]
     keys = list(data["tolerances"])
-    fig = go.Figure([go.Bar(name=k, x=[d["id"] for d in ds], y=[d["sensitivity"].get(k, 0.0) for d in ds])
+    fig = go.Figure([go.Bar(name=k, x=[d.get("name", d["id"]) for d in ds], y=[d["sensitivity"].get(k, 0.0) for d in ds])
                      for k in keys])
     fig.update_layout(barmode="group", title="First-order sensitivity of the worst margin (RBD-FAST)",
                       yaxis_title="S1", height=480, xaxis_tickangle=-30)
@@ -37,7 +37,7 @@ def _sensitivity(data: dict) -> go.Figure:
 
 def render(data: dict) -> str:
     ds = data["designs"]
-    rows = [[d["rank"], d["id"], f"{d['metrics'].get('mass_kg', float('nan')):.1f}",
+    rows = [[d["rank"], d.get("name", d["id"]), f"{d['metrics'].get('mass_kg', float('nan')):.1f}",
              f"{d['metrics'].get('cost_usd', float('nan')):.0f}", f"{d['p_compliance']:.3f}",
              f"[{d['p_ci95'][0]:.3f}, {d['p_ci95'][1]:.3f}]",
              ", ".join(f"{k} {d['p_requirement'][k]:.3f}" for k in d["failing_requirements"]) or "none",

@@ -37,7 +37,7 @@ def _fronts(data: dict) -> go.Figure:
         if not pts:
             continue
         fig.add_trace(go.Scatter(x=[p.get("mass_kg") for p in pts], y=[p.get("cost_usd") for p in pts],
-                                 mode="lines+markers", name=_label(g), text=[p["id"] for p in pts],
+                                 mode="lines+markers", name=_label(g), text=[p.get("name", p["id"]) for p in pts],
                                  hovertemplate="%{text}<br>%{x:.1f} kg, %{y:.0f} USD<extra></extra>"))
     fig.update_layout(title="Pareto front (feasible designs) at each grid point", xaxis_title="mass, kg",
                       yaxis_title="cost, USD", height=480)
@@ -50,7 +50,7 @@ def render(data: dict) -> str:
     for g in grid:
         b = g["best"]
         rows.append([_label(g), *(g["feasible"][t] for t in sorted(g["feasible"])),
-                     b["id"] if b else "none feasible",
+                     b.get("name", b["id"]) if b else "none feasible",
                      f"{b['metrics'].get('mass_kg', float('nan')):.1f}" if b else "",
                      f"{b['metrics'].get('cost_usd', float('nan')):.0f}" if b else ""])
     techs = sorted({t for g in grid for t in g["feasible"]})

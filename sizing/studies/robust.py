@@ -170,7 +170,8 @@ def _summarise(cand: dict, parts: list[dict], seed: int) -> dict:
     sens = sensitivity(names, z, worst, seed=seed)
     p_req = {k: float(np.mean(margins[k] >= 0)) for k in keys}
     failing = sorted((k for k in keys if p_req[k] < 1.0), key=p_req.get)
-    return {"id": cand["id"], "technology": cand["technology"], "rank": cand.get("rank"),
+    return {"id": cand["id"], "name": cand.get("name", cand["id"]), "technology": cand["technology"],
+            "rank": cand.get("rank"),
             "nominal_feasible": cand.get("feasible"), "nominal_driver": cand.get("driver"),
             "p_compliance": ok / n, "p_ci95": list(wilson(ok, n)),
             "p_requirement": p_req,

@@ -107,7 +107,8 @@ def point_summary(results: dict, varied: dict) -> dict:
     feasible = {t: sum(1 for c in cands if c["technology"] == t and c.get("feasible")) for t in techs}
     best_by = {t: _brief(next((c for c in cands if c["technology"] == t and c.get("feasible")), None)) for t in techs}
     best = _brief(cands[0] if cands and cands[0].get("feasible") else None)
-    front = [{"id": c["id"], "technology": c["technology"], **_two(c["metrics"])} for c in cands if c.get("pareto")]
+    front = [{"id": c["id"], "name": c.get("name", c["id"]), "technology": c["technology"], **_two(c["metrics"])}
+             for c in cands if c.get("pareto")]
     return {"varied": varied, "requirements": results["requirements"], "feasible": feasible, "best": best,
             "best_by_technology": best_by, "front": front,
             "requirements_sha256": results["requirements_sha256"], "runtime_s": results.get("runtime_s")}
@@ -120,8 +121,8 @@ def _two(metrics: dict) -> dict:
 def _brief(c: dict | None) -> dict | None:
     if c is None:
         return None
-    return {"id": c["id"], "technology": c["technology"], "metrics": dict(c["metrics"]), "driver": c.get("driver"),
-            "rank": c.get("rank")}
+    return {"id": c["id"], "name": c.get("name", c["id"]), "technology": c["technology"],
+            "metrics": dict(c["metrics"]), "driver": c.get("driver"), "rank": c.get("rank")}
 
 
 def limits(grid: list[dict], varies: list[Vary]) -> dict:

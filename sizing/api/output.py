@@ -1,10 +1,11 @@
 """Writing a command's result: the one step every command shares.
 
 A command first computes its result (``api.solution``, ``api.studies``, ...),
-which names the files it stands for (``files()``); ``write`` then hands them
-to the atomic writer (``io.atomic``), so every command's outputs are complete
-or untouched. ``check`` runs before any work, so a bad ``--out`` costs
-nothing.
+a frozen dataclass that declares its ``layout``, the ``inputs`` it must
+never overwrite and the files it stands for (``files()``); ``write`` then
+hands them to the atomic writer (``io.atomic``), so every command's outputs
+are complete or untouched. ``check`` runs before any work, so a bad
+``--out`` costs nothing.
 
 Two layouts:
 
@@ -20,7 +21,6 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from pathlib import Path
-from typing import ClassVar
 
 from ..io.atomic import check_files, check_folder, write_files, write_folder
 from ..report.bundle import PLOTLY_FILE       # a constant; the bundle itself loads only when written
@@ -79,15 +79,4 @@ def produce(names, dest, inputs, compute):
     return result
 
 
-class Written:
-    """What a result that writes files declares: its layout, the inputs it
-    must never overwrite and ``files()``."""
-
-    layout: ClassVar[str] = "folder"
-    inputs: tuple
-
-    def files(self) -> dict:
-        raise NotImplementedError
-
-
-__all__ = ["PLOTLY_FILE", "Payload", "Written", "check", "plotly_js", "produce", "write"]
+__all__ = ["PLOTLY_FILE", "Payload", "check", "plotly_js", "produce", "write"]

@@ -31,10 +31,6 @@ class SolveResult(Payload):
     def _payload(self) -> dict:
         return self.results
 
-    @property
-    def warnings(self) -> list:
-        return list(self.results.get("warnings", []))
-
     def files(self) -> dict:
         """results.json, candidates.csv, report.html, plotly.js and the
         catalog snapshot a later ``--baseline`` diffs against."""

@@ -15,7 +15,7 @@ operator states start at y_r(0) = clip(u, v0 - r, v0 + r), with u the
 input's last turning point before the record (u = 0 and v0 = 0: the virgin
 state; u = the far extreme: the periodic steady state). u is fitted per run
 by a grid search with the weights held, alternating with the QP (three
-rounds); a run not used in the fit gets u and its offset the same way.
+passes); a run not used in the fit gets u and its offset the same way.
 """
 from __future__ import annotations
 
@@ -45,13 +45,13 @@ class PrandtlIshlinskiiEstimator:
     """
 
     def __init__(self, n_operators: int = 16, ridge: float = 1e-8, cutoff_hz: float | None = None,
-                 fit_offset: bool = True, fit_state: bool = True, rounds: int = 3):
+                 fit_offset: bool = True, fit_state: bool = True, passes: int = 3):
         self.n_operators = n_operators
         self.ridge = ridge
         self.cutoff_hz = cutoff_hz
         self.fit_offset = fit_offset
         self.fit_state = fit_state
-        self.rounds = rounds
+        self.passes = passes
 
     def fit(self, records: list[HysteresisRecord]) -> "PrandtlIshlinskiiEstimator":
         self.cutoff_hz_ = dict(zip([r.name for r in records], filter_inputs(records, self.cutoff_hz)))
@@ -64,7 +64,7 @@ class PrandtlIshlinskiiEstimator:
         self.scales_ = (H, V)
         self.y0_ = {r.name: pi.initial_state(r.voltage_filtered, self.thresholds_) for r in records}
         self.memory_ = {r.name: None for r in records}
-        for _ in range(self.rounds if self.fit_state else 1):
+        for _ in range(self.passes if self.fit_state else 1):
             sol, problem = self._solve(records, weights=run_weights(records))
             self.weights_ = np.clip(sol[:self.n_operators], 0.0, None) * H / V        # m/V, projected onto w >= 0
             if self.fit_state:

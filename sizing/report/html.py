@@ -24,6 +24,7 @@ td.parts{text-align:left;min-width:30em}
 .box{border-left:6px solid #d62728;background:#fff4f4;padding:0.6em 1em;margin:1em 0}
 .ok{border-left-color:#2ca02c;background:#f3fbf3}
 .stamp{font-family:monospace;font-size:0.8em;color:#555}
+ul.ruled details{display:inline;color:#555}ul.ruled summary{display:inline;cursor:pointer;font-size:0.9em}
 """
 
 CHECKS = {
@@ -236,9 +237,7 @@ def _answer(summary: dict) -> str:
                     f"<td class='l'>{binding}</td>"
                     f"<td class='l'>{rests}</td><td class='l'>{flip}</td></tr>")
     by_tech = summary.get("ruled_out_by_technology") or {"": summary.get("ruled_out") or {}}
-    ruled_text = " ".join(f"{_e(tech) or 'Ruled out'}: " + ", ".join(f"{_e(k)} {v:,}" for k, v in counts.items()) + "."
-                          for tech, counts in by_tech.items() if counts)
-    ruled_text = ("Ruled out before ranking (by the check each misses most) &mdash; " + ruled_text) if ruled_text else ""
+    ruled_text = _ruled_out_text(by_tech)
     sourced = (summary.get("dc_sourced") or {}).get("text")
     if sourced:
         ruled_text = f"{_e(sourced)}</p><p>{ruled_text}"
@@ -246,6 +245,24 @@ def _answer(summary: dict) -> str:
     return ("<h2>The answer</h2>" + (f"<div class='box ok'><b>{_e(advice)}</b></div>" if advice else "") + "<table><tr><th class='l'>technology</th><th class='l'>verdict</th>"
             "<th class='l'>best design</th><th class='l'>binding check</th><th class='l'>rests on</th>"
             "<th class='l'>what would flip the verdict</th></tr>" + "".join(rows) + f"</table><p>{ruled_text}</p>")
+
+
+def _ruled_out_text(by_tech: dict) -> str:
+    """Per technology, how many designs were left out and the three checks
+    that left out most; the whole count by check one click away."""
+    lines = []
+    for tech, counts in by_tech.items():
+        if not counts:
+            continue
+        top = sorted(counts.items(), key=lambda kv: -kv[1])
+        head = ", ".join(f"{_e(k)} {v:,}" for k, v in top[:3]) + (f", {len(top) - 3} other checks" if len(top) > 3 else "")
+        rest = ", ".join(f"{_e(k)} {v:,}" for k, v in top)
+        lines.append(f"<li><b>{_e(TECH_LABELS.get(tech, tech) or 'all')}</b>: {sum(counts.values()):,} "
+                     f"({head}) <details><summary>every check</summary>{rest}</details></li>")
+    if not lines:
+        return ""
+    return ("Left out before ranking, by the check each misses most:</p><ul class='ruled'>" + "".join(lines)
+            + "</ul><p>")
 
 
 def _names(cands: list[dict], ids: list[str]) -> list[str]:

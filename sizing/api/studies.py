@@ -91,12 +91,14 @@ def run_robust(requirements_path, catalog_dir=None, samples: int = 1000, seed: i
     with _executor(scheduler, workers, cluster, progress) as ex:        # an unreachable scheduler fails here, first
         from ..engine.solve import solve as run                # (the engine's imports take seconds)
         from ..studies.robust import pick_designs, robust as study
-        results = run(req, sha, cat, progress=progress).results
+        solved = run(req, sha, cat, progress=progress)
+        results = solved.results
         picked = pick_designs(results, designs, technology)
         if not picked:
             raise InputError(str(requirements_path), None, "no sized design (piezohydraulic, or DC from parts) "
                                                            f"to study{'' if technology is None else ' of ' + technology}")
-        data = study(req, cat, picked, samples, seed, ex, extra_spreads=extra, progress=_stage(progress, "sampling"))
+        data = study(req, cat, picked, samples, seed, ex, extra_spreads=extra, progress=_stage(progress, "sampling"),
+                     stages=solved.stages)        # the solve's own records, not re-read from results
     data["requirements_sha256"] = sha
     data["catalog_sha256"] = cat.sha256
     return StudyResult("robust", data, (requirements_path, catalog_dir, bouc_wen_fit))

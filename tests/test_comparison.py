@@ -61,3 +61,27 @@ def test_the_recommendation_names_the_lighter_feasible_technology():
     assert text.startswith("Choose the DC motor actuator") and "75 x lighter" in text
     none = [dict(c, feasible=False, margins={"speed": -0.1}, driver="speed") for c in cands]
     assert technology_comparison(req, none)["recommendation"].startswith("No technology meets")
+
+
+def test_names_are_unique_short_and_stable():
+    """Designs whose short names coincide add the part they differ in (then
+    a hash of their id): unique, at most 32 characters, and the same for a
+    design whatever the others are."""
+    from sizing.engine import names
+    base = {"technology": "dc_motor", "variant": "parts"}
+    a = dict(base, id="dc-a", components={"motor": "allied-mf0127008-48v", "screw": "hiwin-r12-05k4",
+                                          "gear": "belt-2", "drive": "servo-48v-10a"})
+    b = dict(base, id="dc-b", components=dict(a["components"], drive="servo-96v-12a"))
+    c = dict(base, id="dc-c", components=dict(a["components"], screw="thk-bif1605-5"))
+    alone = [dict(a)]
+    names.fill(alone)
+    assert alone[0]["name"] == "DC MF0127008 R12-05K4 belt-2"
+    group = [a, b, c]
+    names.fill(group)
+    got = [x["name"] for x in group]
+    assert len(set(got)) == 3 and all(len(n) <= 32 for n in got)
+    assert got[0].endswith("48v") and got[1].endswith("96v")
+    # the same design gets the same name in a list ordered otherwise
+    again = [dict(b), dict(a), dict(c)]
+    names.fill(again)
+    assert [x["name"] for x in again] == [got[1], got[0], got[2]]

@@ -397,6 +397,7 @@ def test_seed_solve_end_to_end(tmp_path, seed_requirements):
     long_ids = {c["id"] for c in r["candidates"] if len(c["id"]) > 32} | {x["id"] for x in r["ruled_out"]}
     assert long_ids and not [i for i in long_ids if i in visible]
     assert all(len(c["name"]) <= 32 for c in r["candidates"])
+    assert len({c["name"] for c in r["candidates"]}) == len(r["candidates"])      # one name, one design
     assert "Plotly.newPlot" in html and r["catalog_sha256"] in html and r["requirements_sha256"] in html
     header = (out / "candidates.csv").read_text().splitlines()[0]
     assert header.startswith("rank,id,technology")

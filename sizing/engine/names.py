@@ -93,6 +93,49 @@ def name(c: dict) -> str:
 
 
 def fill(candidates: list[dict]) -> None:
-    """Every candidate's ``name`` (in place)."""
+    """Every candidate's ``name`` (in place), unique within the list: designs
+    whose names would coincide add the part they differ in (the drive, the
+    amplifier, ...), and a few letters of their id's hash when even that
+    coincides, so a name depends only on the design, not on its rank."""
+    groups: dict[str, list[dict]] = {}
     for c in candidates:
-        c["name"] = name(c)
+        groups.setdefault(name(c), []).append(c)
+    for text, group in groups.items():
+        if len(group) == 1:
+            group[0]["name"] = text
+            continue
+        tags = [_difference(c, group) for c in group]
+        if len(set(tags)) < len(group):
+            tags = [f"{t} {_hash(c['id'])}".strip() for t, c in zip(tags, group)]
+        for c, tag in zip(group, tags):
+            c["name"] = _with_tag(text, tag)
+    seen: dict[str, int] = {}
+    for c in candidates:                    # a cut that made two names one again
+        seen[c["name"]] = seen.get(c["name"], 0) + 1
+    for c in candidates:
+        if seen[c["name"]] > 1:
+            c["name"] = _with_tag(c["name"], _hash(c["id"]))
+
+
+def _with_tag(text: str, tag: str) -> str:
+    """``text`` and ``tag`` within MAX_NAME, ``text`` cut at a word boundary."""
+    room = MAX_NAME - len(tag) - 1
+    if len(text) > room:
+        text = text[:room + 1].rsplit(" ", 1)[0]
+    return f"{text} {tag}"
+
+
+def _difference(c: dict, group: list[dict]) -> str:
+    """The first component in which ``c`` differs from others of ``group``,
+    abbreviated (servo-96v-12a -> 96v)."""
+    comp = c.get("components", {})
+    for key in comp:
+        values = {str(g.get("components", {}).get(key)) for g in group}
+        if len(values) > 1:
+            return _short(str(comp.get(key)), 64).split("-")[1 if "-" in _short(str(comp.get(key)), 64) else 0][:8]
+    return ""
+
+
+def _hash(text: str) -> str:
+    import hashlib
+    return hashlib.sha1(text.encode()).hexdigest()[:4]

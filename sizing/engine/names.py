@@ -109,11 +109,11 @@ def fill(candidates: list[dict]) -> None:
             tags = [f"{t} {_hash(c['id'])}".strip() for t, c in zip(tags, group)]
         for c, tag in zip(group, tags):
             c["name"] = _with_tag(text, tag)
-    seen: dict[str, int] = {}
+    known: dict[str, int] = {}
     for c in candidates:                    # a cut that made two names one again
-        seen[c["name"]] = seen.get(c["name"], 0) + 1
+        known[c["name"]] = known.get(c["name"], 0) + 1
     for c in candidates:
-        if seen[c["name"]] > 1:
+        if known[c["name"]] > 1:
             c["name"] = _with_tag(c["name"], _hash(c["id"]))
 
 

@@ -92,7 +92,7 @@ class Candidates:
     amp_recovery: np.ndarray        # fraction of C V^2 a cycle the drive returns
     amp_units: np.ndarray           # units in parallel (amp_* ratings, mass and cost are per unit)
     loss_factor: np.ndarray         # small-signal tan(delta) of the stack
-    stack_square: np.ndarray        # 1: square section, 0: round
+    stack_square: np.ndarray        # 1: square section, 0: circular
 
     @classmethod
     def from_rows(cls, rows: list[dict]) -> "Candidates":

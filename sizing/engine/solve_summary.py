@@ -215,13 +215,13 @@ def _traces(req, candidates, stages, dc, loads, top=3) -> list[dict]:
         members = [c for c in candidates if _group(c) == key and c.get("stage") in ("simulated", "sized")]
         if members and members[0] not in chosen:
             chosen.append(members[0])
-    out, seen = [], set()
+    out, known = [], set()
     S = req.requirements.stroke
     for c in chosen:
         base = c["id"]
-        if base in seen:
+        if base in known:
             continue
-        seen.add(base)
+        known.add(base)
         if c["technology"] == "dc_motor":
             if "actuator" in c["components"]:
                 act = dc["actuators"][c["components"]["actuator"]]

@@ -401,7 +401,7 @@ def load_catalog(folder: str | Path | None = None) -> Catalog:
     if not folder.is_dir():
         raise InputError(str(folder), None, "expected a catalog folder")
     catalog = Catalog(folder=folder)
-    seen: dict[str, str] = {}
+    defined_in: dict[str, str] = {}
     found = False
     for file_name, (array_name, model) in KINDS.items():
         path = folder / file_name
@@ -415,9 +415,9 @@ def load_catalog(folder: str | Path | None = None) -> Catalog:
             parsed = _parse_file(path, array_name, model)
             _store(catalog.files[file_name], parsed)
         for label, entry in parsed:
-            if entry.id in seen:
-                raise InputError(str(path), f"{label}: id", f"duplicate id, already defined in {seen[entry.id]}")
-            seen[entry.id] = file_name
+            if entry.id in defined_in:
+                raise InputError(str(path), f"{label}: id", f"duplicate id, already defined in {defined_in[entry.id]}")
+            defined_in[entry.id] = file_name
             catalog.origin[entry.id] = file_name
             group[entry.id] = entry
     if not found:

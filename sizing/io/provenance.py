@@ -53,8 +53,8 @@ def status_counts(catalog: Catalog, component_ids: Iterable[str]) -> dict[str, i
 
 
 def _unique(ids) -> list[str]:
-    seen: list[str] = []
+    found: list[str] = []
     for value in ids:
-        if isinstance(value, str) and value not in seen:
-            seen.append(value)
-    return seen
+        if isinstance(value, str) and value not in found:
+            found.append(value)
+    return found

@@ -109,7 +109,7 @@ class EnvelopeTable(Strict):
 
     @property
     def diameter(self) -> float | None:
-        """The tightest of max_diameter and max_width (a round body in a square bay)."""
+        """The tightest of max_diameter and max_width (a circular body in a square bay)."""
         given = [v for v in (self.max_diameter, self.max_width) if v is not None]
         return min(given) if given else None
 

@@ -98,11 +98,11 @@ def _header(path: Path, text: str, required) -> list[str]:
     for sep in OTHER_SEPARATORS:
         if len(header) == 1 and sep in header[0]:
             raise InputError(str(path), "line 1", f"expected comma-separated columns, got {sep!r} as separator")
-    seen = set()
+    known = set()
     for name in header:
-        if name in seen and name:
+        if name in known and name:
             raise InputError(str(path), "line 1", f"duplicated column {name!r}; each column must appear once")
-        seen.add(name)
+        known.add(name)
     missing = [name for name in required if name not in header]
     if missing:
         raise InputError(str(path), "line 1", f"missing column {missing[0]!r}; expected {','.join(required)}, "

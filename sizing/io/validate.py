@@ -24,7 +24,7 @@ from ..errors import InputError
 from .catalog import KINDS, Catalog, Entry, load_catalog
 
 # Blocked force should be close to stiffness x stroke for a stack (datasheets
-# round both and measure them differently; more than this is a unit error).
+# give both to few digits and measure them differently; more than this is a unit error).
 STACK_CONSISTENCY = 0.5
 STROKE_PER_VOLT_TOLERANCE = 0.05
 # The Bouc-Wen linear term d33 and the nominal stroke per volt differ (the

@@ -43,7 +43,7 @@ def pressure_drop(narrow_velocity, density, ratio, k_contract, k_expand):
 
 
 def fluid_stiffness(bulk_modulus, wide_area, oil_volume):
-    """Oil column stiffness seen by the wide piston, beta A_w^2 / V (N/m)."""
+    """Oil column stiffness felt by the wide piston, beta A_w^2 / V (N/m)."""
     return np.asarray(bulk_modulus) * np.asarray(wide_area) ** 2 / np.asarray(oil_volume)
 
 

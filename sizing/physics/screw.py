@@ -42,7 +42,7 @@ def output_speed(motor_speed, lead, ratio=1.0):
 
 
 def buckling_load(elastic_modulus, root_diameter, length, fixity: str = ACTUATOR_END_FIXITY):
-    """Euler critical load (N) of a solid round shaft of ``root_diameter``
+    """Euler critical load (N) of a solid circular shaft of ``root_diameter``
     and unsupported ``length`` with the named end fixity (END_FIXITY)."""
     K = END_FIXITY[fixity]
     inertia = np.pi * np.asarray(root_diameter) ** 4 / 64.0

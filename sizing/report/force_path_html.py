@@ -21,11 +21,11 @@ def _e(text) -> str:
 def piezo_designs(cands: list[dict], limit: int = 6) -> list[dict]:
     """The best-ranked sized piezohydraulic designs, one per variant first."""
     sized = [c for c in cands if c["technology"] == "piezohydraulic" and c.get("force_path")]
-    picks, seen = [], set()
+    picks, known = [], set()
     for c in sized:
-        if c.get("variant") not in seen:
+        if c.get("variant") not in known:
             picks.append(c)
-            seen.add(c.get("variant"))
+            known.add(c.get("variant"))
     picks += [c for c in sized if c not in picks]
     return picks[:limit]
 

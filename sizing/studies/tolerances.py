@@ -49,7 +49,7 @@ AIR_PRESSURE_PA = 1.0e6
 DISPLACEMENT_FIELDS = ("stroke", "stroke_per_volt")
 OPERATING_TEMPERATURE = "operating.temperature"
 BOUC_WEN_PREFIX = "stack.bouc_wen."
-# samples whose operating temperatures round to the same step are verified
+# samples whose operating temperatures fall on the same step are verified
 # together (one simulation call per step): 2 K moves the derated stack
 # stroke and the bulk modulus by ~0.1 %
 TEMPERATURE_STEP_K = 2.0

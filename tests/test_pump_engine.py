@@ -32,7 +32,8 @@ def test_the_seed_sizes_and_simulates_at_least_20_pump_designs(seed_pumps):
     assert len(sims) >= 20
     assert out["counts"]["simulated"] == len(sims)
     # every screened row is either simulated or counted by reason
-    assert sum(out["ruled_out"].values()) + len(sims) == out["counts"]["combinations"]
+    assert (sum(out["ruled_out"].values()) + len(sims) + out["counts"]["outside_envelope"]
+            == out["counts"]["combinations"])
     for c in sims:
         assert DESIGN_KEYS <= c["design"].keys(), c["id"]
         assert STATIC_KEYS <= c["static"].keys(), c["id"]
@@ -59,6 +60,16 @@ def test_cycle_averaged_model_agrees_with_the_simulation_within_the_stated_toler
     for c in out["candidates"]:
         for case in c["simulated"]["cases"]:
             assert low <= case["agreement"] <= high, (c["id"], case["agreement"])
+
+
+def test_an_envelope_rules_pump_designs_out_with_one_line_per_body():
+    req, _ = load_requirements(STUDIES / "seed-requirements.toml")
+    req = req.model_copy(update={"envelope": req.envelope.model_copy(update={"max_mass": 100.0})})
+    loads = [c["load_N"] for c in load_cases(req.load)]
+    out = pump_engine.pump_candidates(req, load_catalog(), loads)
+    assert out["records"] and all(r["reason"] == "envelope" for r in out["records"])
+    assert sum(r["designs"] for r in out["records"]) == out["counts"]["outside_envelope"] > 0
+    assert all(c["metrics"]["mass_kg"] <= 100.0 for c in out["candidates"])
 
 
 def test_the_speed_margin_is_the_simulated_one(seed_pumps):

@@ -62,6 +62,9 @@ def pump_candidates(req, catalog, loads: list[float], progress=None) -> dict:
     M = screen.margins(req, gs, R, st, loads)
     met = screen.metrics(req, gs, R, st)
     valid = np.isfinite(st["cylinder_diameter_m"])
+    outside = screen.envelope(req, R, st, met) if valid.any() else np.full(len(valid), "", dtype=object)
+    records = _envelope_records(gs, R, outside)
+    valid &= outside == ""
     G = np.vstack([np.where(np.isfinite(v), v, -np.inf) for v in M.values()])
     worst = np.min(G, axis=0)
     violation = np.sum(np.maximum(-G, 0.0), axis=0)       # pymoo's CV over the margins
@@ -75,8 +78,9 @@ def pump_candidates(req, catalog, loads: list[float], progress=None) -> dict:
     _progress(progress, "simulating pumps", len(chosen), len(chosen))
     candidates = [_candidate(req, gs, R, st, M, met, i, sims, k, loads) for k, i in enumerate(chosen)]
     out = Counter()
-    if (~valid).any():
-        out["no bore gives the blocked force"] = int((~valid).sum())
+    no_bore = ~np.isfinite(st["cylinder_diameter_m"])
+    if no_bore.any():
+        out["no bore gives the blocked force"] = int(no_bore.sum())
     names = list(M)
     rest = np.setdiff1d(np.flatnonzero(valid), chosen)
     for i in rest:
@@ -84,9 +88,25 @@ def pump_candidates(req, catalog, loads: list[float], progress=None) -> dict:
             out[NOT_SIMULATED] += 1
         else:
             out[min(names, key=lambda k: M[k][i] if np.isfinite(M[k][i]) else -np.inf)] += 1
-    return {"candidates": candidates, "ruled_out": out,
+    return {"candidates": candidates, "ruled_out": out, "records": records,
             "counts": {"combinations": int(len(R["group"])), "groups": len(gs), "simulated": len(chosen),
-                       "screen_feasible": int((worst >= 0).sum()), "parts_not_rated": ruled}}
+                       "screen_feasible": int((worst >= 0).sum()), "parts_not_rated": ruled,
+                       "outside_envelope": int((outside != "").sum())}}
+
+
+def _envelope_records(gs, R, outside) -> list[dict]:
+    """One line per part combination and pump piston outside the envelope
+    (results.json ``ruled_out``): its pumping frequencies share the body."""
+    records: dict[tuple, dict] = {}
+    for i in np.flatnonzero(outside != ""):
+        g, Dp = gs[R["group"][i]], float(R["pump_diameter"][i])
+        key = (int(R["group"][i]), Dp)
+        if key not in records:
+            records[key] = {"id": f"pp-{g.n}x{g.stack.id}-{g.valve.id}-{g.accumulator.id}-p{Dp * 1e3:.0f}",
+                            "technology": "piezo_pump", "variant": "pump", "reason": "envelope",
+                            "detail": str(outside[i]), "designs": 0}
+        records[key]["designs"] += 1
+    return list(records.values())
 
 
 def _choose(req, R, met, worst, violation, valid) -> list[int]:

@@ -19,6 +19,7 @@ import numpy as np
 from ..physics import amplifier as amp_phys, fluid as fluid_props, geometry, pump, stack as stack_phys
 from ..physics.bouc_wen import free_displacement
 from ..physics.load import tip_equivalent_mass
+from .convex import DEFAULT_MAX_MASS
 from .piezo import reference_bouc_wen, stack_bouc_wen
 from .search import temperature_margin
 
@@ -284,3 +285,27 @@ def metrics(req, gs, R, st) -> dict[str, np.ndarray]:
     stack_volume = math.pi / 4 * R["stack_diameter"] ** 2 * L
     volume = 1.5 * R["n_stacks"] * stack_volume + geometry.hydraulic_volume(A_p, A_c, p, st["chamber_gap_m"], r.stroke)
     return {"mass_kg": mass, "cost_usd": cost, "volume_m3": volume, "power_W": st["amplifier_power_VA"]}
+
+
+def envelope(req, R, st, met) -> np.ndarray:
+    """Why each row lies outside the requirements' envelope (or the 10 t
+    plausibility ceiling), "" when inside: such a design is ruled out with
+    reason ``envelope``, never ranked. Pump and cylinder in line: length
+    stack + 30 mm of plates and chamber + the stroke and the rod's land;
+    diameter the larger of the stack group (packed, with the body wall) and
+    the cylinder with its wall."""
+    r, env = req.requirements, req.envelope
+    length = R["stack_length"] + 0.03 + r.stroke * (1 + req.options.design_margin) + geometry.ROD_EXTRA_LENGTH
+    p = st["peak_pressure_Pa"]
+    body = 1.2 * R["stack_diameter"] * np.sqrt(R["n_stacks"]) + 2 * geometry.MIN_WALL
+    cylinder = st["cylinder_diameter_m"] + 2 * geometry.wall_thickness(st["cylinder_area_m2"], p)
+    diameter = np.maximum(body, cylinder)
+    out = np.full(len(length), "", dtype=object)
+    checks = (("mass", met["mass_kg"], env.max_mass or DEFAULT_MAX_MASS, "kg"), ("diameter", diameter, env.diameter, "m"),
+              ("length", length, env.max_length, "m"))
+    for name, value, limit, unit in checks:
+        if limit is None:
+            continue
+        over = (value > limit * (1 + 1e-9)) & (out == "")
+        out[over] = [f"{name} {v:.4g} {unit} over the envelope's {limit:.4g} {unit}" for v in value[over]]
+    return out

@@ -184,7 +184,7 @@ def _dc_motor(req, catalog, loads, progress, detail) -> tuple[Outcome, dict]:
 def _piezo_pump(req, catalog, loads, progress) -> Outcome:
     """The frequency-rectified piezo pump (``pump.py``)."""
     out = pump_candidates(req, catalog, loads, progress)
-    return Outcome("piezo_pump", out["candidates"], out["ruled_out"], (), out["counts"])
+    return Outcome("piezo_pump", out["candidates"], out["ruled_out"], tuple(out["records"]), out["counts"])
 
 
 # --- verification ---------------------------------------------------------

@@ -4,7 +4,7 @@ engineer would say of the design, the ``id`` staying the machines' key.
     piezohydraulic   "17xP056.90 87257 PTFE-OR Al orif"   stacks, fluid, seal, structure, compensation
     DC from parts    "DC MF0127008 R12-05K4 belt-2"    motor, screw, gear
     DC catalog       "DC exlar-gsx20-0301"
-    piezo pump       "PP 1xP056.90 r6mm 50Hz 0.5MPa"   stacks, valve, pumping frequency, bias
+    piezo pump       "PP 1xP056.90 r6 p80 50Hz 0.5mpa" stacks, valve, piston, frequency (bias where it differs)
 """
 from __future__ import annotations
 
@@ -74,15 +74,17 @@ def _tokens(part_id: str | None, n: int) -> str:
 
 
 def _pump(c: dict) -> str:
-    """PP, stacks, valve (first letter and size), pumping frequency and bias:
-    "PP 1xP056.90 r6mm 50Hz 0.5MPa"."""
+    """PP, stacks, valve (first letter and port mm), pump piston (mm) and
+    pumping frequency: "PP 1xP056.90 r6 p80 50Hz"; designs that differ only
+    in their accumulator add its bias (``fill``)."""
     comp, d = c["components"], c.get("design", {})
     stack = _short(comp.get("stack"))
     stack = stack.upper().replace("-", "", 1) if re.match(r"^[a-z]-\d", stack) else stack
     tokens = str(comp.get("valve") or "-").split("-")
     f = float(d.get("pump_frequency", 0))
     freq = f"{f / 1e3:.3g}kHz" if f >= 1e3 else f"{f:.0f}Hz"
-    return f"PP {comp.get('n_stacks')}x{stack} {tokens[0][:1]}{tokens[-1]} {freq} {d.get('bias_pressure', 0) / 1e6:.2g}MPa"
+    return (f"PP {comp.get('n_stacks')}x{stack} {tokens[0][:1]}{tokens[-1].removesuffix('mm')} "
+            f"p{d.get('pump_diameter', 0) * 1e3:.0f} {freq}")
 
 
 def name(c: dict) -> str:

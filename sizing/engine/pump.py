@@ -30,7 +30,7 @@ from .rank import floor_margin, nondominated_levels
 OBJECTIVE_KEYS = {"mass": "mass_kg", "cost": "cost_usd", "volume": "volume_m3", "power": "power_W"}
 MAX_FEASIBLE_SIMULATED = 24    # designs that pass the screen, verified by simulation
 MIN_CLOSEST_SIMULATED = 8      # and at least this many of the closest of those that do not,
-SIMULATED = 24                 # up to this many in all
+SIMULATED = 32                 # up to this many in all
 # the simulated mean speed over the cycle-averaged one, less 1, lies in this
 # band on the simulated designs (tests/test_pump_engine.py; docs/models.md):
 # the averaged model is conservative, for it omits the load ringing on the
@@ -121,7 +121,7 @@ def _choose(req, R, met, worst, violation, valid) -> list[int]:
         level[ok] = nondominated_levels(F[ok])
     feasible_order = np.lexsort((F[:, 0], level))
     near_order = np.lexsort((F[:, 0], np.where(valid & ~ok, violation, np.inf)))
-    chosen, seen = [], set()
+    chosen, taken_keys = [], set()
     limits = (MAX_FEASIBLE_SIMULATED, None)
     for order, limit, pool in zip((feasible_order, near_order), limits, (ok, valid & ~ok)):
         limit = limit if limit is not None else max(MIN_CLOSEST_SIMULATED, SIMULATED - len(chosen))
@@ -132,9 +132,9 @@ def _choose(req, R, met, worst, violation, valid) -> list[int]:
             if not pool[i]:
                 continue
             key = (int(R["group"][i]), float(R["pump_diameter"][i]))
-            if key in seen:
+            if key in taken_keys:
                 continue
-            seen.add(key)
+            taken_keys.add(key)
             chosen.append(int(i))
             taken += 1
     return chosen

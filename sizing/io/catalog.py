@@ -292,7 +292,7 @@ class Compensator(Entry):
 
 class Valve(Entry):
     """A reed check valve of the piezo pump (catalogs/valves.toml): a reed
-    over a round port, preloaded to its cracking pressure."""
+    over a circular port, preloaded to its cracking pressure."""
 
     reed_stiffness: Qty("stiffness", positive=True)
     reed_mass: Qty("mass", positive=True)

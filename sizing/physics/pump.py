@@ -19,7 +19,7 @@ chamber wall, dV / (V dp) = D / (E t):
 
     1 / beta_e = (1 - a) / beta + a / (kappa p) + D / (E t)          (P2)
 
-Reed check valve (a cantilever reed over a round port of area A_v, preload
+Reed check valve (a cantilever reed over a circular port of area A_v, preload
 set by the cracking pressure p_cr, stiffness k_v, reed mass m_v): the reed
 lifts x = (dp - p_cr) A_v / k_v up to its stop, the flow area is the curtain
 pi d_v x capped at the port, Q = C_d A sqrt(2 dp / rho) (orifice), and the

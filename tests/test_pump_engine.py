@@ -107,3 +107,12 @@ def test_the_solve_ranks_three_technologies_and_states_the_pump_power(seed_solve
     assert any(c["technology"] == "piezo_pump" for c in r["candidates"])
     assert all(len(c["name"]) <= 32 for c in r["candidates"])
     assert "piezo_pump" in r["summary"]["ruled_out_by_technology"]
+
+
+def test_a_catalog_without_valves_sizes_no_pump(tmp_path):
+    from sizing.io.catalog import load_catalog as load
+    cat = load()
+    cat.valves.clear()
+    req, _ = load_requirements(STUDIES / "seed-requirements.toml")
+    out = pump_engine.pump_candidates(req, cat, [500.0])
+    assert out["candidates"] == [] and out["records"] == [] and out["counts"]["combinations"] == 0

@@ -50,12 +50,13 @@ def _progress(callback, stage, done, total):
 
 def pump_candidates(req, catalog, loads: list[float], progress=None) -> dict:
     """Screen, simulate and describe the pump designs. Returns
-    {"candidates": [...], "ruled_out": Counter(reason -> n), "counts": {...}}."""
+    {"candidates": [...], "ruled_out": Counter(reason -> n), "records": [one-line
+    records of designs outside the envelope], "counts": {...}}."""
     if not (catalog.valves and catalog.accumulators and catalog.stacks):
-        return {"candidates": [], "ruled_out": Counter(), "counts": {"combinations": 0}}
+        return _nothing({})
     gs, ruled = screen.groups(req, catalog)
     if not gs:
-        return {"candidates": [], "ruled_out": Counter(), "counts": {"combinations": 0, "parts_not_rated": ruled}}
+        return _nothing(ruled)
     R = screen.rows(req, catalog, gs)
     st = screen.figures(req, R, loads)
     st.update(screen.drive(req, gs, R, st))
@@ -92,6 +93,13 @@ def pump_candidates(req, catalog, loads: list[float], progress=None) -> dict:
             "counts": {"combinations": int(len(R["group"])), "groups": len(gs), "simulated": len(chosen),
                        "screen_feasible": int((worst >= 0).sum()), "parts_not_rated": ruled,
                        "outside_envelope": int((outside != "").sum())}}
+
+
+def _nothing(ruled: dict) -> dict:
+    """No pump to size: the catalog has no valves or accumulators, or no
+    part combination is rated for the requirements."""
+    return {"candidates": [], "ruled_out": Counter(), "records": [],
+            "counts": {"combinations": 0, "simulated": 0, "parts_not_rated": ruled}}
 
 
 def _envelope_records(gs, R, outside) -> list[dict]:

@@ -111,10 +111,9 @@ def _ratio_line(a, b, keys, label) -> str:
         x, y = ma.get(k), mb.get(k)
         if x and y and math.isfinite(x) and math.isfinite(y) and y > 0:
             ratios.append(f"{k.split('_')[0]} x{x / y:.3g}")
-    tag = {(True, True): "both feasible", (True, False): f"only {label} feasible",
-           (False, True): "only DC motor feasible", (False, False): "neither feasible"}[(a["feasible"], b["feasible"])]
-    stand_in = " (an infeasible side counted by its one-miss design)" if "one_miss" in a or "one_miss" in b else ""
-    return f"{label} best over DC best ({tag}{stand_in}): " + (", ".join(ratios) or "not comparable")
+    sides = [f"{name} " + ("best" if t["feasible"] else "one-miss design" if "one_miss" in t else "closest design")
+             for name, t in ((label, a), ("DC motor", b))]
+    return " / ".join(sides) + ": " + (", ".join(ratios) or "not comparable")
 
 
 def _recommendation(out: dict, keys: list[str]) -> str:

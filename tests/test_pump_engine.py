@@ -116,3 +116,16 @@ def test_a_catalog_without_valves_sizes_no_pump(tmp_path):
     req, _ = load_requirements(STUDIES / "seed-requirements.toml")
     out = pump_engine.pump_candidates(req, cat, [500.0])
     assert out["candidates"] == [] and out["records"] == [] and out["counts"]["combinations"] == 0
+
+
+def test_a_diverged_cycle_simulation_is_a_failure_not_a_figure():
+    from sizing.engine.pump import DIVERGED_FACTOR, diverged
+    case = {"load_N": 1210.0, "stroke_m": 0.04, "mean_speed_m_s": 0.1, "delivered_volume_m3": 1e-5,
+            "peak_cylinder_pressure_Pa": 5e6}
+    swept = 0.12                                   # m/s the pump sweeps (swept volume x f / bore)
+    assert diverged([case], swept) == ""
+    # some through-flow from the accumulator is physics; several times the pump is not
+    assert diverged([dict(case, mean_speed_m_s=1.5 * swept)], swept) == ""
+    assert "diverged under 1210 N" in diverged([dict(case, mean_speed_m_s=-2e6)], swept)
+    assert "diverged" in diverged([dict(case, mean_speed_m_s=(DIVERGED_FACTOR + 0.1) * swept)], swept)
+    assert "non-finite" in diverged([case, dict(case, peak_cylinder_pressure_Pa=float("nan"))], swept)

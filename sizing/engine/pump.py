@@ -195,6 +195,25 @@ def _sim_cases(sims, k, loads, static_speeds, i) -> list[dict]:
     return cases
 
 
+# a simulated mean speed this many times what the pump sweeps (swept volume x
+# frequency / bore) is a numerical divergence, not physics: the load's
+# momentum can draw some oil through both valves, never several times the pump
+DIVERGED_FACTOR = 5.0
+
+
+def diverged(cases: list[dict], swept_speed: float) -> str:
+    """Why the cycle simulation of a design cannot be trusted ("" if it can):
+    a non-finite figure, or a speed far beyond what the pump sweeps."""
+    for c in cases:
+        figures = (c["stroke_m"], c["mean_speed_m_s"], c["delivered_volume_m3"], c["peak_cylinder_pressure_Pa"])
+        if not all(math.isfinite(x) for x in figures):
+            return f"the cycle simulation diverged under {c['load_N']:.0f} N (a non-finite figure)"
+        if abs(c["mean_speed_m_s"]) > DIVERGED_FACTOR * swept_speed:
+            return (f"the cycle simulation diverged under {c['load_N']:.0f} N: {c['mean_speed_m_s']:.3g} m/s against "
+                    f"{swept_speed:.3g} m/s swept")
+    return ""
+
+
 def _candidate(req, gs, R, st, M, met, i, sims, k, loads) -> dict:
     """Row ``i`` (the ``k``-th simulated) as a results.json candidate."""
     g = gs[R["group"][i]]
@@ -205,7 +224,11 @@ def _candidate(req, gs, R, st, M, met, i, sims, k, loads) -> dict:
     static_margins = dict(margins)
     cases = _sim_cases(sims, k, loads, st["speeds"], i) if sims else []
     simulated = {}
-    if cases:
+    why = diverged(cases, float(st["swept_volume_m3"][i]) * f / float(st["cylinder_area_m2"][i]))
+    if why:
+        simulated = {"failed": True, "message": why}
+        margins["simulation"] = -math.inf
+    elif cases:
         worst = max(cases, key=lambda c: c["load_N"])
         simulated = {"stroke_m": worst["stroke_m"], "time_to_stroke_s": worst["time_to_stroke_s"],
                      "speed_m_s": min(c["speed_m_s"] for c in cases), "mean_speed_m_s": worst["mean_speed_m_s"],

@@ -26,6 +26,14 @@ def load_cases(load: LoadTable) -> list[dict]:
             for p in load.dynamic_pressure]
 
 
+def surface_mass(load: LoadTable) -> float:
+    """Tip-equivalent mass of the driven surface, kg (I / c^2); 0 when the
+    load is given as forces (no surface)."""
+    if load.force is not None:
+        return 0.0
+    return float(load_phys.tip_equivalent_mass(load.span, load.chord, load.thickness, load.density))
+
+
 def _lookup(catalog: Catalog, group: dict, entry_id: str | None, file: str, field: str):
     if entry_id is None:
         return None
@@ -64,9 +72,7 @@ def evaluate_piezo(design: PiezoDesignFile, catalog: Catalog, file: str) -> dict
         design.n_stacks * stack.stiffness, design.n_stacks * stack.stiffness * x_free, wide_area, stack.length,
         design.wide_gap, rating, material, design.structure_stiffness_ratio,
         design.end_cap_thickness, design.frame_area)
-    surface = float(load_phys.tip_equivalent_mass(design.load.span, design.load.chord, design.load.thickness,
-                                                 design.load.density)) \
-        if design.load.force is None else 0.0
+    surface = surface_mass(design.load)
     struct = structure_row(material, t_cap, frame_area, spacer=force_path.spacer_material(catalog.materials),
                            spacer_length=design.spacer_length, compensator=compensator, surface_mass=surface,
                            delta_T=design.temperature - FILL_TEMPERATURE_DEGC)

@@ -132,9 +132,9 @@ def _difference(c: dict, group: list[dict]) -> str:
     abbreviated (servo-96v-12a -> 96v)."""
     comp = c.get("components", {})
     for key in comp:
-        values = {str(g.get("components", {}).get(key)) for g in group}
-        if len(values) > 1:
-            return _short(str(comp.get(key)), 64).split("-")[1 if "-" in _short(str(comp.get(key)), 64) else 0][:8]
+        if len({str(g.get("components", {}).get(key)) for g in group}) > 1:
+            tokens = _short(str(comp[key]), 64).split("-")
+            return tokens[min(1, len(tokens) - 1)][:8]        # servo-96v-12a -> 96v
     return ""
 
 

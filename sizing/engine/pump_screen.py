@@ -18,8 +18,8 @@ import numpy as np
 
 from ..physics import amplifier as amp_phys, fluid as fluid_props, geometry, pump, stack as stack_phys
 from ..physics.bouc_wen import free_displacement
-from ..physics.load import tip_equivalent_mass
 from .convex import DEFAULT_MAX_MASS
+from .evaluate import surface_mass
 from .piezo import reference_bouc_wen, stack_bouc_wen
 from .search import temperature_margin
 
@@ -95,11 +95,6 @@ def bouc_wen_stroke(stack, reference, voltage: float, frequency: float, temperat
     v = 0.5 * voltage * (1.0 - np.cos(2.0 * np.pi * frequency * t))
     x = free_displacement(t, v, bw)[-BW_POINTS - 1:]
     return float(stack_phys.derated_stroke(x.max() - x.min(), stack.stroke_temperature_coefficient, temperature))
-
-
-def surface_mass(req) -> float:
-    L = req.load
-    return 0.0 if L.force is not None else float(tip_equivalent_mass(L.span, L.chord, L.thickness, L.density))
 
 
 def rows(req, catalog, gs: list[Group]) -> dict[str, np.ndarray]:
@@ -183,7 +178,7 @@ def figures(req, R: dict, loads: list[float]) -> dict[str, np.ndarray]:
     heat = stack_phys.heat_per_stack(R["loss_factor"], R["capacitance"], R["voltage"], R["frequency"]) * run
     area = stack_phys.side_area(R["stack_length"], R["stack_diameter"], R["square"] > 0)
     p_h = R["bias_pressure"] + max(loads or [0.0]) / A_c
-    m_out = surface_mass(req) + geometry.narrow_piston_mass(A_c, r.stroke)
+    m_out = surface_mass(req.load) + geometry.narrow_piston_mass(A_c, r.stroke)
     beta_h = pump.effective_bulk_modulus(R["bulk_modulus"], AIR_FRACTION, p_h + pump.P_ATM)
     f_n = np.sqrt(beta_h * A_c / ((DEAD_LENGTH + r.stroke) * m_out)) / (2 * math.pi)
     return {

@@ -152,11 +152,8 @@ class PiezoBrief:
 
     @classmethod
     def of(cls, req) -> "PiezoBrief":
-        from ..physics import load as load_phys
-        from .evaluate import load_cases
+        from .evaluate import load_cases, surface_mass
         r, o, L, env = req.requirements, req.options, req.load, req.envelope
-        surface = 0.0 if L.force is not None else float(load_phys.tip_equivalent_mass(L.span, L.chord, L.thickness,
-                                                                                      L.density))
         return cls(stroke=r.stroke, blocked_force=r.blocked_force, speed=r.speed, temperature=r.max_temperature,
                    delta_T=r.max_temperature - o.drift_reference_temperature, stroke_time=req.stroke_time,
                    natural_frequency=req.natural_frequency, strokes_per_second=req.duty.strokes_per_second,
@@ -164,7 +161,7 @@ class PiezoBrief:
                    max_amplifier_units=o.max_amplifier_units, wide_gap_floor=o.wide_gap or 0.0,
                    design_margin=o.design_margin, stiffness_ratio=o.structure_stiffness_ratio,
                    max_length=env.max_length, max_diameter=env.diameter, max_mass=env.max_mass,
-                   surface_mass=surface, max_load=max(c["load_N"] for c in load_cases(L)),
+                   surface_mass=surface_mass(L), max_load=max(c["load_N"] for c in load_cases(L)),
                    objectives=tuple(req.objectives.minimize), thermal_compensation=bool(o.thermal_compensation))
 
 

@@ -104,8 +104,7 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
     assumed.fill(catalog, candidates)
     names.fill(candidates)
     stages = Stages.of(verified)
-    results = _results(req, requirements_sha256, catalog, cases, candidates, outcomes)
-    results["disagreements"] = _disagreements(verified)
+    results = _results(req, requirements_sha256, catalog, cases, candidates, outcomes, _disagreements(verified))
     traces = _traces(req, candidates, stages, dc_models, loads)
     if detail != "full":
         _keep_verified(results)
@@ -113,7 +112,7 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
     return SolveOutput(results=_clean(results), traces=traces, stages=stages)
 
 
-def _results(req, requirements_sha256, catalog, cases, candidates, outcomes) -> dict:
+def _results(req, requirements_sha256, catalog, cases, candidates, outcomes, disagreements) -> dict:
     """results.json from the ranked candidates and each technology's outcome."""
     piezo = outcomes[0]
     ruled_out = sum((o.ruled_out_all for o in outcomes), Counter())
@@ -131,7 +130,7 @@ def _results(req, requirements_sha256, catalog, cases, candidates, outcomes) -> 
         "assumptions": _assumptions(req),
         "summary": dict(_summary(req, candidates, catalog, piezo.ruled_out), ruled_out=dict(ruled_out.most_common()),
                         ruled_out_by_technology={o.technology: dict(o.ruled_out_all.most_common()) for o in outcomes}),
-        "disagreements": [],
+        "disagreements": disagreements,
         "hysteresis_time_scales": piezo_designs.hysteresis_time_scales(catalog),
         "counts": counts,
     }

@@ -37,8 +37,14 @@ def test_nominal_path_is_bit_identical_at_default_fields():
           153667.41744379277],
          [221370.822773698, 404273.8099825097, 385398.4574636173, 251999.5785527022, 13135.525672264004,
           101297.90845022861]]
-    assert out["position_m"][:, idx].tolist() == y
-    assert out["pressure_Pa"][:, idx].tolist() == p
+    # the first candidate (no damping) bit for bit; the second carries viscous
+    # damping, since integrated implicitly (unconditionally stable): within
+    # 3e-4 of its stroke of the explicit step's values (both steps are
+    # within 2e-4 of the span of a 100 x finer one)
+    assert out["position_m"][0, idx].tolist() == y[0]
+    assert out["pressure_Pa"][0, idx].tolist() == p[0]
+    np.testing.assert_allclose(out["position_m"][1, idx], y[1], rtol=0, atol=3e-4 * max(y[1]))
+    np.testing.assert_allclose(out["pressure_Pa"][1, idx], p[1], rtol=0, atol=3e-4 * max(p[1]))
 
 
 def test_stribeck_friction_by_hand():

@@ -33,6 +33,25 @@ def k_out(model):
     return K * k_f / (K + k_f) / (A_W / A_N) ** 2
 
 
+def test_heavy_viscous_damping_is_a_first_order_lag_of_c_over_k():
+    """A frictionless output with damping c far above sqrt(k m) follows a
+    voltage step as y_f (1 - exp(-t / tau)), tau = c / k_out (k_out: the
+    stacks in series with the oil, seen through R^2). With tau = 20 ms,
+    m / c = 0.17 ms: the inertia is negligible, and the implicit damping
+    step must keep the lag at the oil mode's step (an explicit one needs
+    dt < 2 m / c)."""
+    model = prototype()
+    tau = 0.02
+    damped = prototype(viscous_damping=tau * k_out(model))
+    t = np.arange(0.0, 0.15, 1e-4)
+    v = np.where(t >= 0.01, 150.0, 0.0)
+    y = simulate(damped, t, v, t)["position_m"][0]
+    y_f = 100 * 6.7e-7 * 150
+    after = t >= 0.0101
+    lag = y_f * (1.0 - np.exp(-(t[after] - 0.01) / tau))
+    np.testing.assert_allclose(y[after], lag, rtol=0, atol=0.01 * y_f)
+
+
 def test_linear_frictionless_stroke_is_R_d33_V():
     t, v = slow_ramp()
     y = simulate(prototype(), t, v)["position_m"][0]

@@ -105,7 +105,8 @@ class PiezoHydraulicModel(ParameterSet):
 
 
 STEP_FACTOR = 0.2   # dt * omega_max: ~30 steps per period of the fastest mode
-LUGRE_STEP = 0.1    # dt * omega of the oil + bristle mode of a LuGre output seal
+LUGRE_STEP = 0.2    # dt * omega of the oil + bristle mode of a LuGre output seal
+LUGRE_SUBSTEP = 0.1   # dt * omega of the bristle mode alone, for the output piston's sub-steps
 
 
 def stable_step(P: np.ndarray, step_factor: float = STEP_FACTOR) -> np.ndarray:
@@ -126,8 +127,11 @@ def stable_step(P: np.ndarray, step_factor: float = STEP_FACTOR) -> np.ndarray:
         s0 = P[:, IDX["narrow_friction"]] * P[:, IDX["narrow_breakaway"]] / np.where(lugre, pre, 1.0)
         omega_b = np.sqrt((k + s0) / m)
         dt = np.where(lugre, np.minimum(dt, LUGRE_STEP * step_factor / STEP_FACTOR / omega_b), dt)
+    # viscous damping is implicit in the Karnopp piston's step; the LuGre
+    # output piston takes it explicitly, stable below dt = 2 m / c
     damping = P[:, IDX["viscous_damping"]]
-    dt = np.where(damping > 0, np.minimum(dt, 0.5 * m / np.maximum(damping, 1e-300)), dt)
+    explicit = lugre & (damping > 0)
+    dt = np.where(explicit, np.minimum(dt, 0.5 * m / np.maximum(damping, 1e-300)), dt)
     return dt
 
 
@@ -379,9 +383,9 @@ def _simulate_one(p, dt_max, t_in, inv_dt, v_row, t_out, rec):
             if zpre > 0.0:                    # LuGre output seal (no stick logic: bristles)
                 # the bristle mode sqrt(sigma0 / m) is often faster than the
                 # hydraulics: the output piston takes sub-steps of at most
-                # 0.05 / omega_bristle with the oil pressure following y
+                # LUGRE_SUBSTEP / omega_bristle with the oil pressure following y
                 F_s = Fn * brk_n
-                n_br = int(dt * np.sqrt(F_s / zpre * inv_m) * 20.0) + 1
+                n_br = int(dt * np.sqrt(F_s / zpre * inv_m) / LUGRE_SUBSTEP) + 1
                 h_dt = dt / n_br
                 for _ in range(n_br):
                     p_s = a_oil * (A_w * x - A_n * y - v_eff)
@@ -390,11 +394,14 @@ def _simulate_one(p, dt_max, t_in, inv_dt, v_row, t_out, rec):
                     u, z_br = _lugre_step(F, u, z_br, Fn, F_s, inv_vs, zpre, m, h_dt)
                     y += u * h_dt
                 continue
+            # viscous damping implicit in the new speed (stable at any step,
+            # the overdamped limit F / c when dt c / m is large)
+            F += cv * u
             if vs > 0.0:
                 a = _narrow_accel_stribeck(F, u, Fn, Fn * brk_n, inv_m, inv_vs)
             else:
                 a = _narrow_accel(F, u, Fn, Fn * brk_n, inv_m)
-            u_new = u + a * dt
+            u_new = (u + a * dt) / (1.0 + dt * cv * inv_m)
             if u != 0.0 and u_new * u < 0.0:
                 u_new = 0.0
             u = u_new

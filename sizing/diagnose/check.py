@@ -18,7 +18,7 @@ from ..io.runs import Run
 from .bench import Bench
 from .diagnosis import diagnose_runs
 from .effects import library
-from .inputs import noise_sigma
+from .inputs import drive_noise_sigma, noise_sigma
 from .synth import Noise, synthesize
 
 NONE = "none"
@@ -86,7 +86,7 @@ def campaign_noise(bench: Bench, seed: int) -> Noise:
     floor = []
     for i, r in enumerate(bench.runs):
         floor.append(noise_sigma(r.y - bench.nominal()[i]) / r.span)
-    volts = [noise_sigma(r.u_raw) for r in bench.runs] if bench.kind == "piezohydraulic" else [0.0]
+    volts = [drive_noise_sigma(r.u_raw) for r in bench.runs] if bench.kind == "piezohydraulic" else [0.0]
     return Noise(position=float(np.median(floor)), voltage_V=float(np.median(volts)), seed=seed)
 
 

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .inputs import noise_sigma, second_difference_sigma
+from .inputs import drive_noise_sigma, noise_sigma, second_difference_sigma
 from .settings import DEFAULT
 
 
@@ -35,7 +35,7 @@ def noise_floor(bench, replicas: int = 3, seed: int = 0) -> np.ndarray:
         sy = rest_noise(r.y - bench.nominal()[i], bench.nominal()[i], r.span)[0]
         su = 0.0
         if bench.kind == "piezohydraulic":
-            sigma_v = noise_sigma(r.u_raw)
+            sigma_v = drive_noise_sigma(r.u_raw)
             if sigma_v > 0:
                 V = np.vstack([treat_voltage(r.u_raw + rng.normal(0.0, sigma_v, len(r.t))) for _ in range(replicas)])
                 Y = ph_sim.simulate(bench.model.replace(h0=np.zeros(replicas)), r.t, V, r.t)["position_m"]

@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from sizing.engine import dc_parts, dc_sizing
+from sizing.engine.dc_candidate import parts_candidate
 from sizing.engine.evaluate import load_cases
 from sizing.io.catalog import load_catalog
 from sizing.io.requirements import load_requirements
@@ -132,7 +133,7 @@ def test_evaluate_reproduces_a_solved_design(seed, tmp_path):
     input giving the same figures (same screen, controller and simulation)."""
     from sizing import api
     req, cat, loads = seed
-    found = dc_sizing.dc_parts_candidates(req, cat, loads)["candidates"]
+    found = [parts_candidate(req, cat, d) for d in dc_sizing.dc_parts_designs(req, cat, loads).designs]
     best = min((c for c in found if c["stage"] == "simulated" and c["components"]["gear"]),
                key=lambda c: c["metrics"]["mass_kg"])
     d = best["design"]

@@ -11,6 +11,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from sizing.engine.dc_candidate import parts_candidate
 from sizing.engine import dc_parts, dc_search, dc_sizing
 from sizing.engine.evaluate import load_cases
 from sizing.io.catalog import load_catalog
@@ -37,7 +38,7 @@ def _subset(cat):
 def _feasible_ids(p, margins) -> set:
     M = np.nan_to_num(np.vstack(list(margins.values())), nan=-np.inf)
     ok = M.min(axis=0) >= 0
-    return {dc_sizing.design_id(p, i) for i in np.flatnonzero(ok)}
+    return {dc_sizing.row_parts(p, i).id for i in np.flatnonzero(ok)}
 
 
 def _variant(req, which):
@@ -80,11 +81,11 @@ def test_solve_records_only_simulated_designs(seed):
     """results.json does not grow with the combinations ruled out: only the
     simulated designs get a record; the rest are counts."""
     req, cat, loads = seed
-    out = dc_sizing.dc_parts_candidates(req, _subset(cat), loads)
-    assert all(c["stage"] == "simulated" for c in out["candidates"])
-    assert len(out["candidates"]) <= dc_sizing.MAX_SIMULATED
-    assert sum(out["ruled_out"].values()) + len(out["candidates"]) == out["combinations"]
-    for c in out["candidates"]:
+    out = dc_sizing.dc_parts_designs(req, _subset(cat), loads)
+    assert all(d.stage == "simulated" for d in out.designs)
+    assert len(out.designs) <= dc_sizing.MAX_SIMULATED
+    assert sum(out.ruled_out.values()) + len(out.designs) == out.combinations
+    for c in (parts_candidate(req, cat, d) for d in out.designs):
         assert isinstance(c["rests_on_assumed"], list)
         assert all(set(x) == {"part", "field", "decides"} for x in c["rests_on_assumed"])
 

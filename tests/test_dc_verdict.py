@@ -9,6 +9,7 @@ from pathlib import Path
 import pytest
 
 from sizing.engine import dc_sizing, dc_verdict
+from sizing.engine.dc_candidate import actuator_candidate, parts_candidate
 from sizing.engine.evaluate import load_cases
 from sizing.engine.rank import verdict
 from sizing.io.catalog import load_catalog
@@ -22,7 +23,7 @@ def solved():
     req, _ = load_requirements(ROOT / "studies" / "seed-requirements.toml")
     cat = load_catalog()
     loads = [c["load_N"] for c in load_cases(req.load)]
-    cands = dc_sizing.dc_parts_candidates(req, cat, loads)["candidates"]
+    cands = [parts_candidate(req, cat, d) for d in dc_sizing.dc_parts_designs(req, cat, loads).designs]
     for c in cands:
         c["feasible"], c["driver"] = verdict(c["margins"])
     return req, cat, loads, cands, dc_verdict.dc_sourced(cat, cands)
@@ -113,9 +114,9 @@ def test_the_lowest_ambient_rating_decides(solved):
 def test_every_dc_candidate_says_what_it_rests_on(solved):
     """Catalog actuators too: a list, never null; each entry names a field of
     the part with an assumed status."""
-    from sizing.engine.dc_candidates import dc_candidates
+    from sizing.engine.dc_candidates import actuator_designs
     req, cat, loads, cands, _ = solved
-    for c in dc_candidates(req, cat, loads)["candidates"] + cands:
+    for c in [actuator_candidate(req, cat, d) for d in actuator_designs(req, cat, loads)] + cands:
         assert isinstance(c["rests_on_assumed"], list), c["id"]
         for x in c["rests_on_assumed"]:
             assert cat.get(x["part"])[1].status[x["field"]].startswith("assumed"), (c["id"], x)

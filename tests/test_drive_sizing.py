@@ -9,6 +9,7 @@ import math
 import pytest
 
 from sizing.engine.piezo_designs import compensator_creep, effective_gap
+from sizing.engine.records import PiezoBrief
 from sizing.io.requirements import load_requirements
 from sizing.physics import amplifier, stack
 
@@ -74,9 +75,9 @@ def test_gap_floor_is_the_stack_stroke_plus_clearance_and_tolerance():
     (the reviewer's 0.68 mm covers the stroke with 0.5 mm): far below the
     3 mm the sizing used to fix; a floor in the requirements still holds."""
     req, _ = load_requirements(STUDIES / "seed-requirements.toml")
-    assert effective_gap(req, 180e-6) == pytest.approx(0.78e-3)
+    assert effective_gap(PiezoBrief.of(req), 180e-6) == pytest.approx(0.78e-3)
     floored = req.model_copy(update={"options": req.options.model_copy(update={"wide_gap": 3e-3})})
-    assert effective_gap(floored, 180e-6) == pytest.approx(3e-3)
+    assert effective_gap(PiezoBrief.of(floored), 180e-6) == pytest.approx(3e-3)
 
 
 def _fast(tmp_path, extra: str) -> tuple:

@@ -11,7 +11,7 @@ import pytest
 
 from sizing.engine import piezo_designs
 from sizing.engine.candidate import design_candidate
-from sizing.engine.records import PiezoDesign, Simulation, VerifiedDesign
+from sizing.engine.records import PiezoBrief, PiezoDesign, Simulation, VerifiedDesign
 from sizing.engine.search import enumerate_combos
 from sizing.engine.sized import sized_designs, study_designs
 from sizing.engine.solve import solve
@@ -27,8 +27,9 @@ def built():
     req = parse_requirements(tomllib.loads(REQ), "req.toml")
     catalog = subset_catalog(**ONE_DESIGN, dc_actuators=0)
     combos = [c for c in enumerate_combos(req, catalog) if not c.pruned]
-    sized = piezo_designs.size(req, catalog, combos)
-    return req, catalog, sized, piezo_designs.designs(req, catalog, sized)
+    brief = PiezoBrief.of(req)
+    sized = piezo_designs.size(brief, catalog, combos)
+    return req, catalog, sized, piezo_designs.designs(brief, catalog, sized)
 
 
 def test_a_built_design_is_frozen(built):

@@ -10,6 +10,7 @@ import pytest
 from scipy.stats import norm
 
 from sizing.engine import piezo_designs
+from sizing.engine.records import PiezoBrief
 from sizing.engine.evaluate import load_cases
 from sizing.engine.search import enumerate_combos
 from sizing.engine.solve import verify_sized
@@ -44,7 +45,7 @@ def _nominal(req, catalog, key=KEY):
     """The design of ``key`` sized as ``solve`` sizes it, and its candidates."""
     combo = next(c for c in enumerate_combos(req, catalog) if c.key == key)
     # as built and with each compensator, in the default structure material
-    triples = [t for t in piezo_designs.size(req, catalog, [combo]) if t[1].material.id == DEFAULT_MATERIAL]
+    triples = [t for t in piezo_designs.size(PiezoBrief.of(req), catalog, [combo]) if t[1].material.id == DEFAULT_MATERIAL]
     loads = [c["load_N"] for c in load_cases(req.load)]
     verified = verify_sized(req, catalog, triples, loads)
     return triples[0], [c for cands in verified for c in cands], loads
@@ -288,9 +289,10 @@ def _with_dc_parts(catalog):
 
 def _dc_candidate(req, catalog, gear=None) -> dict:
     """The DC design of these parts as ``sizing solve`` sizes and verifies it."""
-    from sizing.engine.dc_sizing import dc_parts_candidates
+    from sizing.engine.dc_candidate import parts_candidate
+    from sizing.engine.dc_sizing import dc_parts_designs
     loads = [c["load_N"] for c in load_cases(req.load)]
-    cands = dc_parts_candidates(req, catalog, loads)["candidates"]
+    cands = [parts_candidate(req, catalog, d) for d in dc_parts_designs(req, catalog, loads).designs]
     return next(c for c in cands if c["components"]["gear"] == gear and c["stage"] == "simulated")
 
 

@@ -70,8 +70,14 @@ def rests_on(parts: dict[str, object], driver: str | None) -> list[dict]:
 def rests_on_components(catalog, components: dict, driver: str | None) -> list[dict]:
     """The same from a candidate's ``components`` (kind -> id): for results
     whose parts are named, not held. Ids the catalog does not hold are skipped."""
+    return rests_on(parts_of(catalog, components), driver)
+
+
+def parts_of(catalog, components: dict) -> dict:
+    """{kind: catalog entry} of a candidate's ``components`` (kind -> id);
+    ids the catalog does not hold, and non-id entries, are skipped."""
     parts = {}
-    for kind, ident in components.items():
+    for ident in components.values():
         if not isinstance(ident, str):
             continue
         try:
@@ -79,7 +85,7 @@ def rests_on_components(catalog, components: dict, driver: str | None) -> list[d
         except KeyError:
             continue
         parts[found_kind] = entry
-    return rests_on(parts, driver)
+    return parts
 
 
 def fill(catalog, candidates: list[dict]) -> None:

@@ -9,6 +9,7 @@ catalog actuators of ``dc_candidates``).
 """
 from __future__ import annotations
 
+from .assumed import parts_of
 from .rank import verdict
 
 _LOAD_PATH = {"screw": {"lead", "efficiency"}, "gear": {"ratio", "efficiency"}}
@@ -76,19 +77,9 @@ def rests_on(parts: dict, driver: str | None, status: str = "assumed") -> list[d
     return out
 
 
-def fill(catalog, candidate: dict) -> None:
-    """Set the candidate's ``rests_on_assumed`` and ``rests_on_rules`` (in
-    place; [] when none), judged against the margin that binds it."""
-    parts = {}
-    for kind, ident in candidate.get("components", {}).items():
-        if isinstance(ident, str):
-            try:
-                found_kind, entry = catalog.get(ident)
-            except KeyError:
-                continue
-            parts[found_kind] = entry
-    driver = candidate.get("driver")
-    if driver is None:
-        _, driver = verdict(candidate.get("margins", {}))
-    candidate["rests_on_assumed"] = rests_on(parts, driver, "assumed")
-    candidate["rests_on_rules"] = rests_on(parts, driver, "rule")
+def resting(catalog, components: dict, margins: dict) -> dict:
+    """A DC candidate's ``rests_on_assumed`` and ``rests_on_rules`` ([] when
+    none), judged against the margin that binds it."""
+    parts = parts_of(catalog, components)
+    _, driver = verdict(margins)
+    return {"rests_on_assumed": rests_on(parts, driver, "assumed"), "rests_on_rules": rests_on(parts, driver, "rule")}

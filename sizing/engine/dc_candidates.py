@@ -10,8 +10,8 @@ from __future__ import annotations
 from ..io.catalog import Catalog
 from ..io.requirements import RequirementsFile
 from . import dc as dc_engine
-from . import dc_assumed
 from .rank import ceiling_margin, floor_margin
+from .records import DCActuatorDesign, Simulation, frozen
 from .search import temperature_margin
 
 
@@ -20,42 +20,30 @@ def dc_duration(req: RequirementsFile) -> float:
     return max(1.0, 4.0 * req.stroke_time)
 
 
-def dc_candidates(req: RequirementsFile, catalog: Catalog, loads: list[float]) -> dict:
+def actuator_designs(req: RequirementsFile, catalog: Catalog, loads: list[float]) -> tuple[DCActuatorDesign, ...]:
+    """Every catalog DC actuator, simulated under every load case."""
+    return tuple(_actuator_design(req, act, loads) for act in catalog.dc_actuators.values())
+
+
+def _actuator_design(req: RequirementsFile, act, loads: list[float]) -> DCActuatorDesign:
     r = req.requirements
-    out = []
-    for act in catalog.dc_actuators.values():
-        cases = dc_engine.step_cases(act, r.stroke, loads, dc_duration(req))
-        worst = max(cases, key=lambda c: c["load_N"])
-        reached = all(c["stroke_m"] >= dc_engine.SETTLED * r.stroke for c in cases)
-        static = dc_engine.static_figures(act, max(loads) if loads else 0.0)
-        static["free_stroke_m"] = act.stroke
-        margins = {
-            # a servo settles on its reference: the stroke is the actuator's travel, once the
-            # simulation shows the step reached (to 98 %) under every load
-            "stroke": (floor_margin(act.stroke, r.stroke) if reached
-                       else floor_margin(min(c["stroke_m"] for c in cases), r.stroke)),
-            "blocked_force": floor_margin(static["blocked_force_N"], r.blocked_force),
-            "holding_force": floor_margin(act.continuous_force, max(loads) if loads else 0.0) if loads and max(loads) > 0 else 1.0,
-            "speed": floor_margin(min(c["speed_m_s"] for c in cases), r.speed),
-            "overshoot": ceiling_margin(max(c["overshoot"] for c in cases), req.options.max_overshoot),
-            "temperature": temperature_margin(act.max_temperature, r.max_temperature),
-        }
-        out.append({
-            "id": f"dc-{act.id}", "technology": "dc_motor", "variant": "catalog", "stage": "simulated",
-            "components": {"actuator": act.id},
-            "stack_params": {},          # no stacks: the key is kept so every candidate has the same keys
-            "static": static,
-            "simulated": {"stroke_m": worst["stroke_m"], "time_to_stroke_s": worst["time_to_stroke_s"],
-                          "speed_m_s": min(c["speed_m_s"] for c in cases), "overshoot": worst["overshoot"],
-                          "load_N": worst["load_N"], "cases": cases,
-                          "peak_speed_m_s": max(c["peak_speed_m_s"] for c in cases)},
-            "margins": margins,
-            "metrics": dc_engine.metrics(act),
-            "temperatures": {f"dc_actuator {act.id}": {"rated_degC": act.max_temperature,
-                                                        "required_degC": r.max_temperature}},
-            "design": {"technology": "dc_motor", "actuator": act.id, "step": r.stroke,
-                       "duration": dc_duration(req), "temperature": r.max_temperature},
-            "reason": "",
-        })
-        dc_assumed.fill(catalog, out[-1])
-    return {"candidates": out, "actuators": dict(catalog.dc_actuators)}
+    cases = dc_engine.step_cases(act, r.stroke, loads, dc_duration(req))
+    static = dict(dc_engine.static_figures(act, max(loads) if loads else 0.0), free_stroke_m=act.stroke)
+    return DCActuatorDesign(act, frozen(static), Simulation(True, "", tuple(cases)),
+                            frozen(_margins(req, act, static, cases, loads)), frozen(dc_engine.metrics(act)))
+
+
+def _margins(req: RequirementsFile, act, static: dict, cases: list[dict], loads: list[float]) -> dict:
+    r = req.requirements
+    reached = all(c["stroke_m"] >= dc_engine.SETTLED * r.stroke for c in cases)
+    return {
+        # a servo settles on its reference: the stroke is the actuator's travel, once the
+        # simulation shows the step reached (to 98 %) under every load
+        "stroke": (floor_margin(act.stroke, r.stroke) if reached
+                   else floor_margin(min(c["stroke_m"] for c in cases), r.stroke)),
+        "blocked_force": floor_margin(static["blocked_force_N"], r.blocked_force),
+        "holding_force": floor_margin(act.continuous_force, max(loads) if loads else 0.0) if loads and max(loads) > 0 else 1.0,
+        "speed": floor_margin(min(c["speed_m_s"] for c in cases), r.speed),
+        "overshoot": ceiling_margin(max(c["overshoot"] for c in cases), req.options.max_overshoot),
+        "temperature": temperature_margin(act.max_temperature, r.max_temperature),
+    }

@@ -2,8 +2,8 @@
 gear x drive (``dc_parts``), give each design its controller
 (``dc_controller``), simulate the best under every load case with the
 back-EMF, current and voltage limits and the load term (``sim/dc_motor``,
-batched over designs and cases), and turn the results into candidates
-(docs/formats.md).
+batched over designs and cases), and return each as a ``records.DCDesign``
+(``dc_candidate.py`` writes its results.json candidate, docs/formats.md).
 
 Simulation-based margins replace the static ones where the simulation says
 more: stroke and speed (98 % of the step, as for the catalog actuators),
@@ -15,6 +15,7 @@ drive does not enforce).
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 
@@ -24,10 +25,12 @@ from ..sim.dc_motor import DCMotorModel, simulate
 from ..sim.metrics import step_metrics
 from . import dc_controller as ctl
 from .dc import OUTPUT_RATE_HZ, SETTLED
-from . import dc_assumed, dc_search, dc_verdict
+from . import dc_search, dc_verdict
 from .dc_parts import enumerate_parts, metrics, mountable, static_screen, temperature_margin
+from .dc_candidate import parts_candidate
 from .dc_candidates import dc_duration
 from .rank import nondominated_levels, verdict
+from .records import DCDesign, DCParts, DCPartsOutcome, Simulation, frozen
 
 MAX_SIMULATED = 300     # designs simulated per solve (each under every load case)
 REAL_SHARE = 1 / 3      # of the simulation budget, first for designs whose parts all exist (dc_verdict)
@@ -35,10 +38,6 @@ NOT_SIMULATED = "not simulated (feasible, later Pareto level)"   # statically fe
 MIN_SIMULATED = 24      # filled with the closest-to-feasible when fewer pass the screen
 SIM_CHUNK = 64          # rows (design x load case) per batched simulation
 OBJECTIVE_KEYS = {"mass": "mass_kg", "cost": "cost_usd", "volume": "volume_m3", "power": "power_W"}
-
-
-def design_id(p, i) -> str:
-    return f"dc-{p.motor[i]}-{p.screw[i]}-{p.gear[i] or 'direct'}-{p.drive[i]}"
 
 
 def duty_rms(t, current, period) -> np.ndarray:
@@ -90,14 +89,13 @@ def _choose(margins, met, req, real=None) -> np.ndarray:
     return order[:n]
 
 
-def dc_parts_candidates(req, catalog, loads, progress=None, duration=None, exhaustive=False) -> dict:
-    """Candidates of the parts combinations; ``models`` keeps the
-    simulation model of each simulated design for the report's traces.
-    The catalog-scale search (``dc_search``) screens what no bound rules
-    out and simulates the best; only simulated designs get a record, the
-    rest are counted by reason in ``ruled_out``. ``exhaustive`` (a catalog
-    of one design, ``sizing evaluate``), or a catalog of at most
-    MIN_SIMULATED combinations: every combination, each a record."""
+def dc_parts_designs(req, catalog, loads, progress=None, duration=None, exhaustive=False) -> DCPartsOutcome:
+    """The DC designs from parts. The catalog-scale search (``dc_search``)
+    screens what no bound rules out and simulates the best; only simulated
+    designs are recorded, the rest are counted by reason in ``ruled_out``.
+    ``exhaustive`` (a catalog of one design, ``sizing evaluate``), or a
+    catalog of at most MIN_SIMULATED combinations: every combination, each
+    recorded."""
     duration = dc_duration(req) if duration is None else duration
     ruled_out, combinations = {}, None
     small = sum(1 + len(g) for g in mountable(catalog)) * len(catalog.screws) * len(catalog.drives)
@@ -108,58 +106,62 @@ def dc_parts_candidates(req, catalog, loads, progress=None, duration=None, exhau
         found = dc_search.search(catalog, req, loads)
         p, ruled_out, combinations = found.parts, dict(found.ruled_out), found.combinations
     if len(p) == 0:
-        return {"candidates": [], "models": {}, "ruled_out": ruled_out, "combinations": combinations or 0}
-    r = req.requirements
-    T = r.max_temperature
+        return DCPartsOutcome((), frozen(ruled_out), combinations or 0)
     pl, static, margins = static_screen(p, req, loads)
-    met = metrics(p, req, static["current_limit_A"])
-    w0 = ctl.pole_target(req.stroke_time, p.values["drive_rate"])
-    gains = ctl.ipd_gains(pl["c1"], pl["c2"], pl["lead"], w0)
+    screen = _Screen(p, pl, static, margins, metrics(p, req, static["current_limit_A"]),
+                     ctl.pole_target(req.stroke_time, p.values["drive_rate"]))
+    gains = ctl.ipd_gains(pl["c1"], pl["c2"], pl["lead"], screen.pole)
     real_ids = {e.id for _, e in catalog.entries() if dc_verdict.is_real(e)}
     real = np.array([all(x is None or x in real_ids for x in row) for row in zip(p.motor, p.screw, p.gear, p.drive)])
-    chosen = _choose(margins, met, req, real)
-    sims = _simulate(req, pl, static, gains, p, chosen, loads, duration, progress)
-    out, kept = [], {}
+    sims = _simulate(req, pl, static, gains, p, _choose(margins, screen.metrics, req, real), loads, duration, progress)
     if not exhaustive:
         _count_unsimulated(ruled_out, margins, np.setdiff1d(np.arange(len(p)), np.fromiter(sims, int, len(sims))))
-    for i in range(len(p)):
-        if not exhaustive and i not in sims:
-            continue
-        cid = design_id(p, i)
-        st = {k: float(v[i]) for k, v in static.items()}
-        st["no_load_max_speed_m_s"] = float(st["drive_voltage_V"] / p.values["motor_back_emf_constant"][i]
-                                            * pl["lead"][i] / (2 * math.pi))
-        sim = sims.get(i)
-        simulated, m = _row_margins(req, p, i, st, margins, sim)
-        if sim is not None:
-            kept[cid] = sim["model"]
-        failed = [k for k, v in m.items() if not v >= 0]
-        stage = "simulated" if sim is not None else ("sized" if not failed else "pruned")
-        controller = {"kp": float(gains["kp"][i]), "ki": float(gains["ki"][i]), "kd": float(gains["kd"][i]),
-                      "rate_Hz": float(p.values["drive_rate"][i]), "rule": "I-PD, triple closed-loop pole",
-                      "pole_rad_per_second": float(w0[i]), "bandwidth_Hz": float(ctl.bandwidth(w0[i]) / (2 * math.pi)),
-                      "current_limit_A": st["current_limit_A"], "bus_voltage_V": float(p.values["drive_bus_voltage"][i]),
-                      "voltage_limit_V": st["drive_voltage_V"]}
-        out.append({
-            "id": cid, "technology": "dc_motor", "variant": "parts", "stage": stage,
-            "components": {"motor": p.motor[i], "screw": p.screw[i], "gear": p.gear[i], "drive": p.drive[i]},
-            "controller": controller, "stack_params": {}, "static": st, "simulated": simulated, "margins": m,
-            "metrics": {k: float(v[i]) for k, v in met.items()},
-            "temperatures": {"ambient": {"rated_degC": float(min(p.values["motor_max_temperature"][i],
-                                                                 p.values["screw_max_temperature"][i],
-                                                                 p.values["gear_max_temperature"][i])),
-                                         "required_degC": T}},
-            "design": {"technology": "dc_motor", "motor": p.motor[i], "screw": p.screw[i], "gear": p.gear[i],
-                       "drive": p.drive[i], "step": r.stroke, "duration": duration, "temperature": T,
-                       "speed": r.speed, "strokes_per_second": req.duty.strokes_per_second,
-                       "amplifier_location": req.options.amplifier_location,
-                       "electronics_bay_temperature": req.options.electronics_bay_temperature},
-            "reason": "" if not failed or stage == "simulated" else "ruled out before simulation: " + ", ".join(failed),
-            "rests_on_assumed": [], "rests_on_rules": [],
-        })
-        dc_assumed.fill(catalog, out[-1])
-    return {"candidates": out, "models": kept, "ruled_out": ruled_out,
-            "combinations": combinations if combinations is not None else len(p)}
+    rows = range(len(p)) if exhaustive else (i for i in range(len(p)) if i in sims)
+    designs = tuple(_design(req, screen, gains, i, sims.get(i), duration) for i in rows)
+    return DCPartsOutcome(designs, frozen(ruled_out), combinations if combinations is not None else len(p))
+
+
+def row_parts(p, i: int) -> DCParts:
+    """The catalog ids of row ``i`` of ``p`` (PartArrays)."""
+    return DCParts(p.motor[i], p.screw[i], p.gear[i], p.drive[i])
+
+
+def dc_parts_candidates(req, catalog, loads) -> dict:
+    """The results.json view of ``dc_parts_designs``: {"candidates",
+    "ruled_out", "combinations"} (what benchmarks/ time and print)."""
+    out = dc_parts_designs(req, catalog, loads)
+    return {"candidates": [parts_candidate(req, catalog, d) for d in out.designs],
+            "ruled_out": dict(out.ruled_out), "combinations": out.combinations}
+
+
+class _Screen(NamedTuple):
+    """The static screen of the combinations, arrays over rows."""
+    parts: object           # PartArrays
+    plant: dict
+    static: dict
+    margins: dict
+    metrics: dict
+    pole: np.ndarray        # rad/s, the controller's triple pole
+
+
+def _design(req, screen: _Screen, gains: dict, i: int, sim: dict | None, duration: float) -> DCDesign:
+    """Row ``i`` of the screen, with its simulation when it ran."""
+    p, pl, v = screen.parts, screen.plant, screen.parts.values
+    st = {k: float(x[i]) for k, x in screen.static.items()}
+    st["no_load_max_speed_m_s"] = float(st["drive_voltage_V"] / v["motor_back_emf_constant"][i]
+                                        * pl["lead"][i] / (2 * math.pi))
+    simulated, m = _row_margins(req, p, i, st, screen.margins, sim)
+    w0 = screen.pole[i]
+    controller = {"kp": float(gains["kp"][i]), "ki": float(gains["ki"][i]), "kd": float(gains["kd"][i]),
+                  "rate_Hz": float(v["drive_rate"][i]), "rule": "I-PD, triple closed-loop pole",
+                  "pole_rad_per_second": float(w0), "bandwidth_Hz": float(ctl.bandwidth(w0) / (2 * math.pi)),
+                  "current_limit_A": st["current_limit_A"], "bus_voltage_V": float(v["drive_bus_voltage"][i]),
+                  "voltage_limit_V": st["drive_voltage_V"]}
+    rated = float(min(v["motor_max_temperature"][i], v["screw_max_temperature"][i], v["gear_max_temperature"][i]))
+    return DCDesign(row_parts(p, i), frozen(controller), frozen(st),
+                    frozen({k: float(x[i]) for k, x in screen.metrics.items()}), rated, duration, frozen(m),
+                    None if sim is None else Simulation(True, "", tuple(sim["cases"])),
+                    frozen(simulated), frozen(sim["model"] if sim is not None else None))
 
 
 def _count_unsimulated(counts: dict, margins: dict, rows) -> None:
@@ -218,7 +220,7 @@ def _row_margins(req, p, i, st, margins, sim) -> tuple[dict, dict]:
 def verify_parts(req, p, loads, settings: dict, ambient=None, duration=None) -> list[dict]:
     """Re-verify DC designs whose parts and settings are fixed (``sizing
     robust``: one design, its parts perturbed per row) through the steps of
-    ``dc_parts_candidates``: static screen, simulation of every row under
+    ``dc_parts_designs``: static screen, simulation of every row under
     every load case, margins, verdict. ``settings``: (n,) arrays of the
     design's controller gains (kp, ki, kd: tuned on the nominal parts and
     kept) and drive limits (current_limit_A, voltage_limit_V);
@@ -329,14 +331,14 @@ def evaluate_parts(design, catalog, parts: dict, cases: list[dict]) -> dict:
                   drives={parts["drive"].id: parts["drive"]})
     loads = [c["load_N"] for c in cases]
     req = design_requirements(design, loads)
-    found = dc_parts_candidates(req, one, loads, duration=design.duration, exhaustive=True)["candidates"]
-    c = next(x for x in found if x["components"]["gear"] == (parts["gear"].id if parts["gear"] is not None else None))
-    sim = c["simulated"] or {"cases": []}
+    found = dc_parts_designs(req, one, loads, duration=design.duration, exhaustive=True).designs
+    d = next(x for x in found if x.parts.gear == (parts["gear"].id if parts["gear"] is not None else None))
+    sim = dict(d.simulated) or {"cases": []}
     simulated = [dict(case, **s) for case, s in zip(cases, sim["cases"])]
     worst = max(simulated, key=lambda x: x["load_N"]) if simulated else {}
-    margins = {k: v for k, v in c["margins"].items() if k != "blocked_force"}
+    margins = {k: v for k, v in d.margins.items() if k != "blocked_force"}
     warnings = [f"{k}: margin {v:+.1%}" for k, v in margins.items() if not v >= 0]
-    return {"technology": "dc_motor", "design": dict(c["components"], step_m=design.step),
-            "controller": c["controller"], "static": c["static"],
+    return {"technology": "dc_motor", "design": dict(d.parts.components(), step_m=design.step),
+            "controller": dict(d.controller), "static": dict(d.static),
             "simulated": {"cases": simulated, "worst": worst, **{k: v for k, v in sim.items() if k != "cases"}},
-            "margins": margins, "metrics": c["metrics"], "warnings": warnings}
+            "margins": margins, "metrics": dict(d.metrics), "warnings": warnings}

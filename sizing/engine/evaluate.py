@@ -7,31 +7,15 @@ import numpy as np
 
 from ..errors import InputError
 from ..io.catalog import Catalog
-from ..io.design import DCDesignFile, LoadTable, PiezoDesignFile
-from ..physics import hydraulics, load as load_phys, thermal
+from ..io.design import DCDesignFile, PiezoDesignFile
+from ..physics import hydraulics, thermal
 from . import dc as dc_engine, force_path
+from .loads import load_cases, surface_mass
 from .piezo import (DEFAULT_PRESSURE_RATING_PA, Candidates, part_row, reference_bouc_wen, stack_bouc_wen,
                     structure_row)
 from .verify import FILL_TEMPERATURE_DEGC, metrics, seal_friction_at, simulate_cases, static_figures
 
 RATIO_TOLERANCE = 0.01
-
-
-def load_cases(load: LoadTable) -> list[dict]:
-    """Forces of the load cases: explicit forces, or tip forces of the
-    hinged surface at each dynamic pressure (seed Figure 7)."""
-    if load.force is not None:
-        return [{"load_N": f} for f in load.force]
-    return [{"dynamic_pressure_Pa": p, "load_N": float(load_phys.tip_force(p, load.span, load.chord))}
-            for p in load.dynamic_pressure]
-
-
-def surface_mass(load: LoadTable) -> float:
-    """Tip-equivalent mass of the driven surface, kg (I / c^2); 0 when the
-    load is given as forces (no surface)."""
-    if load.force is not None:
-        return 0.0
-    return float(load_phys.tip_equivalent_mass(load.span, load.chord, load.thickness, load.density))
 
 
 def _lookup(catalog: Catalog, group: dict, entry_id: str | None, file: str, field: str):

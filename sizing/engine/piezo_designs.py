@@ -12,7 +12,6 @@ from functools import lru_cache
 import numpy as np
 
 from ..io.catalog import Catalog
-from ..io.requirements import RequirementsFile
 from ..physics import bouc_wen, fluid as fluid_props
 from ..physics import amplifier, geometry, stack as stack_phys, structure, thermal
 from ..physics.bouc_wen import BoucWen
@@ -20,7 +19,7 @@ from . import force_path
 from .convex import GPSizer, SizingInput
 from .piezo import Candidates, part_row, reference_bouc_wen, stack_bouc_wen, structure_row
 from .rank import ceiling_margin, floor_margin
-from .records import PiezoBrief, PiezoDesign, Variant, brief_of, frozen
+from .records import PiezoBrief, PiezoDesign, Variant, frozen
 from .search import Combo, temperature_margin
 from .convex import DEFAULT_MAX_MASS, NO_LIMIT
 from .verify import (GAP_CLEARANCE_M, GAP_TOLERANCE_M, STACK_SPACING_M, drive_figures, metrics, ramp_time,
@@ -34,15 +33,14 @@ def _progress(callback, stage, done, total):
         callback(stage, done, total)
 
 
-def effective_gap(brief: PiezoBrief | RequirementsFile, stack_free_stroke: float) -> float:
+def effective_gap(b: PiezoBrief, stack_free_stroke: float) -> float:
     """The smallest wide gap: the stack stroke plus a clearance and a
     manufacturing tolerance (a gap below the stroke bottoms the wide piston
     out), or the requirements' floor when that is larger."""
-    return max(brief_of(brief).wide_gap_floor, stack_free_stroke + GAP_CLEARANCE_M + GAP_TOLERANCE_M)
+    return max(b.wide_gap_floor, stack_free_stroke + GAP_CLEARANCE_M + GAP_TOLERANCE_M)
 
 
-def sizing_input(brief: PiezoBrief | RequirementsFile, c: Combo, material=None, compensator=None) -> SizingInput:
-    b = brief_of(brief)
+def sizing_input(b: PiezoBrief, c: Combo, material=None, compensator=None) -> SizingInput:
     T = b.temperature
     f, s, st = c.fluid, c.seal, c.stack
     material = material if material is not None else force_path.default_material({})
@@ -83,24 +81,22 @@ def _unit_current(b: PiezoBrief, amp) -> float:
                                                b.stroke_time / 2))
 
 
-def variants(brief: PiezoBrief | RequirementsFile, catalog: Catalog) -> list[Variant]:
+def variants(b: PiezoBrief, catalog: Catalog) -> list[Variant]:
     """Every structure material rated to the requirement, each as built and
     with each catalog compensator rated to it (when compensation is on)."""
-    b = brief_of(brief)
     T = b.temperature
     mats = [m for m in catalog.materials.values() if m.max_temperature >= T] or [force_path.default_material({})]
     comps = [c for c in catalog.compensators.values() if c.max_temperature >= T] if b.thermal_compensation else []
     return [Variant(m, comp) for m in mats for comp in [None, *comps]]
 
 
-def size(brief: PiezoBrief | RequirementsFile, catalog, combos, progress=None):
+def size(b: PiezoBrief, catalog, combos, progress=None):
     """One geometric program per combination, as built and with each open
     accumulator, in the default structure material; the other materials
     get the same member stiffnesses re-sized in closed form (a cheap,
     vectorisable screen: the force path is unchanged, mass and cost and
     the thermal budget follow the material). An orifice reservoir adds no
     stiffness, so it reuses the as-built sizing."""
-    b = brief_of(brief)
     sizer = GPSizer(list(b.objectives))
     out = []
     vs = variants(b, catalog)
@@ -132,12 +128,11 @@ def _resized(c: Combo, res, old, new):
     return replace(res, cap_thickness=t, frame_area=area)
 
 
-def designs(brief: PiezoBrief | RequirementsFile, catalog, sized) -> list[PiezoDesign]:
+def designs(b: PiezoBrief, catalog, sized) -> list[PiezoDesign]:
     """Build the sized designs with the same code as ``sizing evaluate``;
     then, for as-built designs that drift, the passive variant. ``sized``:
     (Combo, Variant, SizingResult) triples; each design's ``origin`` is its
     triple's index (a passive design's, its parent's)."""
-    b = brief_of(brief)
     reference = reference_bouc_wen(catalog.stacks)
     spacer = force_path.spacer_material(catalog.materials)
     pending = [PiezoDesign(origin=i, id=combo.key + var.suffix(), combo=combo, variant=var, gp=res,
@@ -300,7 +295,7 @@ def compensator_creep(leak_conductance, pressure, hold_time, narrow_diameter):
     return leak_conductance * pressure * hold_time / (math.pi / 4 * narrow_diameter**2)
 
 
-def nominal_figures(brief: PiezoBrief | RequirementsFile, catalog, combos: list[Combo], candidates: list[dict]) -> None:
+def nominal_figures(b: PiezoBrief, catalog, combos: list[Combo], candidates: list[dict]) -> None:
     """Combinations ruled out before sizing still carry a force path, a
     thermal budget, seal friction and the static figures of a nominal
     design (in place): R that just gives the stroke at the voltage the
@@ -309,7 +304,6 @@ def nominal_figures(brief: PiezoBrief | RequirementsFile, catalog, combos: list[
     no compensator. Marked ``nominal_geometry``: not a sized design."""
     if not combos:
         return
-    b = brief_of(brief)
     T = b.temperature
     material = force_path.default_material(catalog.materials)
     spacer = force_path.spacer_material(catalog.materials)

@@ -9,23 +9,26 @@ ranked beside the single-stroke actuator and the DC motor.
    piston), then the closest of those that do not, are verified by the
    cycle-resolved simulation (sim/pump.py) under every load case: thousands
    of pumping cycles a stroke at the higher frequencies.
-3. Candidates in the results.json shape of the other technologies
-   (CONTRACTS.md, "The piezo pump"); the rows not simulated are counted by
-   the check they miss most (or as not simulated).
+3. Each simulated design as a ``records.PumpDesign`` (``pump_candidate.py``
+   writes its results.json candidate, CONTRACTS.md, "The piezo pump"); the
+   rows not simulated are counted by the check they miss most (or as not
+   simulated).
 """
 from __future__ import annotations
 
 import math
 from collections import Counter
+from typing import NamedTuple
 
 import numpy as np
 
-from ..physics import pump as pump_phys
 from ..physics.stack import derated_stroke
 from ..sim.pump import PumpModel, simulate
 from . import pump_screen as screen
 from .piezo import reference_bouc_wen, stack_bouc_wen
+from .pump_candidate import pump_candidate
 from .rank import floor_margin, nondominated_levels
+from .records import PumpDesign, PumpOutcome, Simulation, frozen
 
 OBJECTIVE_KEYS = {"mass": "mass_kg", "cost": "cost_usd", "volume": "volume_m3", "power": "power_W"}
 MAX_FEASIBLE_SIMULATED = 24    # designs that pass the screen, verified by simulation
@@ -48,10 +51,18 @@ def _progress(callback, stage, done, total):
         callback(stage, done, total)
 
 
-def pump_candidates(req, catalog, loads: list[float], progress=None) -> dict:
-    """Screen, simulate and describe the pump designs. Returns
-    {"candidates": [...], "ruled_out": Counter(reason -> n), "records": [one-line
-    records of designs outside the envelope], "counts": {...}}."""
+def pump_candidates(req, catalog, loads: list[float]) -> dict:
+    """The results.json view of ``pump_designs``: {"candidates", "ruled_out",
+    "records", "counts"} (what benchmarks/ time)."""
+    out = pump_designs(req, catalog, loads)
+    return {"candidates": [pump_candidate(req, d) for d in out.designs], "ruled_out": Counter(out.ruled_out),
+            "records": list(out.records), "counts": dict(out.counts)}
+
+
+def pump_designs(req, catalog, loads: list[float], progress=None) -> PumpOutcome:
+    """Screen and simulate the pump designs: those simulated as records, the
+    other rows counted by reason, the bodies outside the envelope as
+    one-line records."""
     if not (catalog.valves and catalog.accumulators and catalog.stacks):
         return _nothing({})
     gs, ruled = screen.groups(req, catalog)
@@ -77,7 +88,9 @@ def pump_candidates(req, catalog, loads: list[float], progress=None) -> dict:
     _progress(progress, "simulating pumps", 0, len(chosen))
     sims = _simulate(req, gs, R, st, chosen, loads)
     _progress(progress, "simulating pumps", len(chosen), len(chosen))
-    candidates = [_candidate(req, gs, R, st, M, met, i, sims, k, loads) for k, i in enumerate(chosen)]
+    screened = _Screen(gs, R, st, M, met)
+    designs = tuple(_design(req, screened, i, _sim_cases(sims, k, loads, st["speeds"], i))
+                    for k, i in enumerate(chosen))
     out = Counter()
     no_bore = ~np.isfinite(st["cylinder_diameter_m"])
     if no_bore.any():
@@ -89,17 +102,16 @@ def pump_candidates(req, catalog, loads: list[float], progress=None) -> dict:
             out[NOT_SIMULATED] += 1
         else:
             out[min(names, key=lambda k: M[k][i] if np.isfinite(M[k][i]) else -np.inf)] += 1
-    return {"candidates": candidates, "ruled_out": out, "records": records,
-            "counts": {"combinations": int(len(R["group"])), "groups": len(gs), "simulated": len(chosen),
-                       "screen_feasible": int((worst >= 0).sum()), "parts_not_rated": ruled,
-                       "outside_envelope": int((outside != "").sum())}}
+    return PumpOutcome(designs, frozen(out), tuple(records), frozen(
+        {"combinations": int(len(R["group"])), "groups": len(gs), "simulated": len(chosen),
+         "screen_feasible": int((worst >= 0).sum()), "parts_not_rated": ruled,
+         "outside_envelope": int((outside != "").sum())}))
 
 
-def _nothing(ruled: dict) -> dict:
+def _nothing(ruled: dict) -> PumpOutcome:
     """No pump to size: the catalog has no valves or accumulators, or no
     part combination is rated for the requirements."""
-    return {"candidates": [], "ruled_out": Counter(), "records": [],
-            "counts": {"combinations": 0, "simulated": 0, "parts_not_rated": ruled}}
+    return PumpOutcome(counts=frozen({"combinations": 0, "simulated": 0, "parts_not_rated": ruled}))
 
 
 def _envelope_records(gs, R, outside) -> list[dict]:
@@ -180,6 +192,7 @@ def _derating(stack, temperature) -> float:
 
 
 def _sim_cases(sims, k, loads, static_speeds, i) -> list[dict]:
+    """The ``k``-th simulated design's (row ``i``) figures per load case."""
     cases = []
     for j, (s, F) in enumerate(zip(sims, loads)):
         v = float(s["mean_speed_m_s"][k])
@@ -214,48 +227,40 @@ def diverged(cases: list[dict], swept_speed: float) -> str:
     return ""
 
 
-def _candidate(req, gs, R, st, M, met, i, sims, k, loads) -> dict:
-    """Row ``i`` (the ``k``-th simulated) as a results.json candidate."""
-    g = gs[R["group"][i]]
-    r = req.requirements
-    f, Dp, Dc = float(R["frequency"][i]), float(R["pump_diameter"][i]), float(st["cylinder_diameter_m"][i])
-    ident = (f"pp-{g.n}x{g.stack.id}-{g.valve.id}-{g.accumulator.id}-p{Dp * 1e3:.0f}-c{Dc * 1e3:.0f}-{f:.0f}hz")
-    margins = {k: float(v[i]) for k, v in M.items()}
-    static_margins = dict(margins)
-    cases = _sim_cases(sims, k, loads, st["speeds"], i) if sims else []
-    simulated = {}
-    why = diverged(cases, float(st["swept_volume_m3"][i]) * f / float(st["cylinder_area_m2"][i]))
-    if why:
-        simulated = {"failed": True, "message": why}
-        margins["simulation"] = -math.inf
-    elif cases:
-        worst = max(cases, key=lambda c: c["load_N"])
-        simulated = {"stroke_m": worst["stroke_m"], "time_to_stroke_s": worst["time_to_stroke_s"],
-                     "speed_m_s": min(c["speed_m_s"] for c in cases), "mean_speed_m_s": worst["mean_speed_m_s"],
-                     "overshoot": 0.0, "load_N": worst["load_N"], "cases": cases}
-        margins["speed"] = floor_margin(simulated["speed_m_s"], r.speed)
+class _Screen(NamedTuple):
+    """The pump screen: the part groups and the arrays over rows."""
+    groups: list
+    rows: dict
+    static: dict
+    margins: dict
+    metrics: dict
+
+
+def _design(req, screened: _Screen, i: int, cases: list[dict]) -> PumpDesign:
+    """Row ``i`` of the screen with its cycle simulation (``cases``, [] when
+    there is no load case to simulate)."""
+    R, st, r = screened.rows, screened.static, req.requirements
+    f = float(R["frequency"][i])
+    static_margins = {k: float(v[i]) for k, v in screened.margins.items()}
     static = {k: float(v[i]) for k, v in st.items() if k != "speeds"}
     static["speed_m_s"] = static["mean_speed_m_s"]
     static["free_stroke_m"] = r.stroke * (1.0 + req.options.design_margin)
     static["stack_stroke_m"] = float(R["stroke"][i])
     static["max_flow_m3_s"] = static["swept_volume_m3"] * f
-    comps = {"stack": g.stack.id, "n_stacks": g.n, "fluid": g.fluid.id, "seal": g.seal.id, "amplifier": g.amplifier.id,
-             "valve": g.valve.id, "accumulator": g.accumulator.id}
-    return {
-        "id": ident, "technology": "piezo_pump", "variant": "pump", "stage": "simulated" if cases else "sized",
-        "components": comps,
-        "stack_params": {"stiffness_N_m": g.stack.stiffness, "d33_m_V": g.stack.stroke_per_volt,
-                         "max_voltage_V": g.stack.max_voltage},
-        "design": {"technology": "piezo_pump", "stack": g.stack.id, "n_stacks": g.n, "voltage": float(R["voltage"][i]),
-                   "pump_frequency": f, "pump_diameter": Dp, "cylinder_diameter": Dc,
-                   "bias_pressure": float(R["bias_pressure"][i]), "valve": g.valve.id, "accumulator": g.accumulator.id,
-                   "fluid": g.fluid.id, "seal": g.seal.id, "amplifier": g.amplifier.id, "temperature": r.max_temperature},
-        "static": static, "static_margins": static_margins, "simulated": simulated, "margins": margins,
-        "metrics": {k: float(v[i]) for k, v in met.items()},
-        "temperatures": {f"{kind} {p.id}": {"rated_degC": p.max_temperature, "required_degC": r.max_temperature}
-                         for kind, p in (("stack", g.stack), ("fluid", g.fluid), ("seal", g.seal), ("valve", g.valve),
-                                         ("accumulator", g.accumulator))},
-        "valve_resonance_Hz": float(pump_phys.valve_resonance(g.valve.reed_stiffness, g.valve.reed_mass)),
-        "reason": "",
-    }
+    sim = _simulation(cases, static["swept_volume_m3"] * f / static["cylinder_area_m2"])
+    margins = dict(static_margins)
+    if sim is not None and not sim.success:
+        margins["simulation"] = -math.inf
+    elif sim is not None:
+        margins["speed"] = floor_margin(min(c["speed_m_s"] for c in cases), r.speed)
+    return PumpDesign(screened.groups[R["group"][i]], float(R["voltage"][i]), f, float(R["pump_diameter"][i]),
+                      static["cylinder_diameter_m"], float(R["bias_pressure"][i]), frozen(static),
+                      frozen(static_margins), frozen({k: float(v[i]) for k, v in screened.metrics.items()}),
+                      frozen(margins), sim)
 
+
+def _simulation(cases: list[dict], swept_speed: float) -> Simulation | None:
+    """The cycle simulation's outcome: failed where it diverged."""
+    if not cases:
+        return None
+    return Simulation(not (why := diverged(cases, swept_speed)), why, tuple(cases))

@@ -19,7 +19,7 @@ import numpy as np
 from ..physics import amplifier as amp_phys, fluid as fluid_props, geometry, pump, stack as stack_phys
 from ..physics.bouc_wen import free_displacement
 from .convex import DEFAULT_MAX_MASS
-from .evaluate import surface_mass
+from .loads import surface_mass
 from .piezo import reference_bouc_wen, stack_bouc_wen
 from .search import temperature_margin
 

@@ -13,6 +13,7 @@ objectives minimised.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -93,3 +94,38 @@ def rank_order(feasible: np.ndarray, F: np.ndarray, worst_margin: np.ndarray) ->
     rank = np.empty(n, dtype=int)
     rank[order] = np.arange(1, n + 1)
     return rank
+
+
+@dataclass(frozen=True)
+class Standing:
+    """A candidate's place in the ranking of one solve (results.json:
+    ``feasible``, ``driver``, ``rank``, ``pareto``, ``pareto_level``)."""
+
+    feasible: bool
+    driver: str | None
+    rank: int
+    pareto: bool
+    pareto_level: int | None        # None: infeasible
+
+    def fields(self) -> dict:
+        return {"feasible": self.feasible, "driver": self.driver, "rank": self.rank, "pareto": self.pareto,
+                "pareto_level": self.pareto_level}
+
+
+def standings(margins: list, metrics: list, keys: list[str]) -> tuple[Standing, ...]:
+    """Each candidate's standing, in order, from its margins and its metrics
+    (``keys``: the metrics minimised; a missing or non-finite one is inf)."""
+    verdicts = [verdict(m) for m in margins]
+    feasible = np.array([f for f, _ in verdicts], dtype=bool)
+    F = np.array([[_objective(m.get(k)) for k in keys] for m in metrics], dtype=float).reshape(len(metrics), len(keys))
+    worst = np.array([m[d] if d else -math.inf for m, (_, d) in zip(margins, verdicts)], dtype=float)
+    rank = rank_order(feasible, F, worst)
+    level = np.zeros(len(metrics), dtype=int)
+    if feasible.any():
+        level[feasible] = nondominated_levels(F[feasible])
+    return tuple(Standing(bool(ok), driver, int(rank[i]), bool(ok and level[i] == 1),
+                          int(level[i]) if ok else None) for i, (ok, driver) in enumerate(verdicts))
+
+
+def _objective(value) -> float:
+    return math.inf if value is None or not math.isfinite(value) else float(value)

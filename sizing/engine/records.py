@@ -7,7 +7,11 @@ them by simulation (``Simulation``, ``VerifiedDesign``), then rank. Each
 stage takes records and returns new ones; none is changed after it is made,
 so a design's figures are what the stage that built it computed, and a
 design is told apart from another by its ``origin``, not by object identity.
-``candidate.py`` turns a verified design into its results.json record.
+The DC motor (``DCActuatorDesign``, ``DCDesign``) and the piezo pump
+(``PumpDesign``) stages return records of the same kind. One serialiser per
+technology turns them into results.json records (``candidate.py``,
+``dc_candidate.py``, ``pump_candidate.py``); the ranking returns a
+``rank.Standing`` per candidate beside them.
 """
 from __future__ import annotations
 
@@ -15,6 +19,8 @@ import math
 from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Mapping
+
+from .loads import load_cases, surface_mass
 
 EMPTY: Mapping = MappingProxyType({})
 
@@ -108,6 +114,121 @@ class VerifiedDesign:
     simulation: Simulation | None = None
 
 
+# --- DC motor -----------------------------------------------------------------
+@dataclass(frozen=True)
+class DCActuatorDesign:
+    """A catalog DC actuator simulated under every load case (``dc_candidates``)."""
+
+    actuator: object                # io.catalog.DCActuator
+    static: Mapping                 # dc.static_figures at the largest load, and free_stroke_m
+    simulation: Simulation          # the step of the required stroke under every load case
+    margins: Mapping
+    metrics: Mapping                # mass_kg, cost_usd, volume_m3, power_W
+
+    @property
+    def id(self) -> str:
+        return f"dc-{self.actuator.id}"
+
+
+@dataclass(frozen=True)
+class DCParts:
+    """The catalog ids of a DC design from parts (gear None: direct drive)."""
+
+    motor: str
+    screw: str
+    gear: str | None
+    drive: str
+
+    @property
+    def id(self) -> str:
+        return f"dc-{self.motor}-{self.screw}-{self.gear or 'direct'}-{self.drive}"
+
+    def components(self) -> dict:
+        return {"motor": self.motor, "screw": self.screw, "gear": self.gear, "drive": self.drive}
+
+
+@dataclass(frozen=True)
+class DCDesign:
+    """A DC design from parts (``dc_sizing``): the parts, what the sizing
+    set (the controller and the drive's limits), the static figures and,
+    when it was simulated, the simulation with its figures. ``margins``:
+    the static screen's, replaced by the simulation's where it ran, those
+    with no limit to check (inf) left out."""
+
+    parts: DCParts
+    controller: Mapping             # gains, rate, pole, bandwidth, current and voltage limits
+    static: Mapping                 # the screen's figures, SI
+    metrics: Mapping
+    rated_ambient: float            # degC, the lowest of the motor's, screw's and gear's ratings
+    duration: float                 # s, the simulated step
+    margins: Mapping
+    simulation: Simulation | None = None
+    simulated: Mapping = field(default_factory=lambda: EMPTY)   # the simulation's figures
+    model: Mapping = field(default_factory=lambda: EMPTY)       # its model's parameters (the report's traces)
+
+    @property
+    def id(self) -> str:
+        return self.parts.id
+
+    @property
+    def missed(self) -> list[str]:
+        return [k for k, v in self.margins.items() if not v >= 0]
+
+    @property
+    def stage(self) -> str:
+        if self.simulation is not None:
+            return "simulated"
+        return "pruned" if self.missed else "sized"
+
+
+@dataclass(frozen=True)
+class DCPartsOutcome:
+    """The DC designs from parts of one solve: those recorded, the others
+    counted by reason, and how many combinations the catalog makes."""
+
+    designs: tuple = ()             # DCDesign
+    ruled_out: Mapping = field(default_factory=lambda: EMPTY)
+    combinations: int = 0
+
+
+# --- piezo pump ---------------------------------------------------------------
+@dataclass(frozen=True)
+class PumpDesign:
+    """A piezo pump design (``pump.py``): its parts, the variables the screen
+    set, its static figures, margins and metrics and, when it was simulated,
+    the cycle simulation (failed: it diverged). ``margins``: the static ones
+    with the simulated speed in place of the cycle-averaged one."""
+
+    group: object                   # pump_screen.Group, the parts
+    voltage: float                  # V, the drive's peak
+    frequency: float                # Hz, pumping
+    pump_diameter: float            # m
+    cylinder_diameter: float        # m
+    bias_pressure: float            # Pa, the accumulator's
+    static: Mapping                 # SI, the cycle-averaged model's and the derived ones
+    static_margins: Mapping
+    metrics: Mapping
+    margins: Mapping
+    simulation: Simulation | None = None
+
+    @property
+    def id(self) -> str:
+        g, f = self.group, self.frequency
+        return (f"pp-{g.n}x{g.stack.id}-{g.valve.id}-{g.accumulator.id}-p{self.pump_diameter * 1e3:.0f}"
+                f"-c{self.cylinder_diameter * 1e3:.0f}-{f:.0f}hz")
+
+
+@dataclass(frozen=True)
+class PumpOutcome:
+    """The piezo pumps of one solve: the designs recorded, the rows counted
+    by reason, the one-line records of bodies outside the envelope, counts."""
+
+    designs: tuple = ()             # PumpDesign
+    ruled_out: Mapping = field(default_factory=lambda: EMPTY)
+    records: tuple = ()
+    counts: Mapping = field(default_factory=lambda: EMPTY)
+
+
 @dataclass(frozen=True)
 class Stages:
     """What each stage of one solve produced, for the report's traces and
@@ -115,11 +236,14 @@ class Stages:
 
     verified: tuple = ()            # VerifiedDesign, piezohydraulic
     by_id: Mapping = field(default_factory=dict)
+    dc: Mapping = field(default_factory=lambda: EMPTY)      # id -> DCActuatorDesign or DCDesign
+    pumps: tuple = ()               # PumpDesign
 
     @classmethod
-    def of(cls, verified) -> "Stages":
+    def of(cls, verified, dc=(), pumps=()) -> "Stages":
         verified = tuple(verified)
-        return cls(verified, MappingProxyType({v.design.id: v.design for v in verified}))
+        return cls(verified, MappingProxyType({v.design.id: v.design for v in verified}),
+                   MappingProxyType({d.id: d for d in dc}), tuple(pumps))
 
 
 @dataclass(frozen=True)
@@ -152,7 +276,6 @@ class PiezoBrief:
 
     @classmethod
     def of(cls, req) -> "PiezoBrief":
-        from .evaluate import load_cases, surface_mass
         r, o, L, env = req.requirements, req.options, req.load, req.envelope
         return cls(stroke=r.stroke, blocked_force=r.blocked_force, speed=r.speed, temperature=r.max_temperature,
                    delta_T=r.max_temperature - o.drift_reference_temperature, stroke_time=req.stroke_time,
@@ -164,7 +287,3 @@ class PiezoBrief:
                    surface_mass=surface_mass(L), max_load=max(c["load_N"] for c in load_cases(L)),
                    objectives=tuple(req.objectives.minimize), thermal_compensation=bool(o.thermal_compensation))
 
-
-def brief_of(req_or_brief) -> PiezoBrief:
-    """The brief itself, or the brief of a requirements file."""
-    return req_or_brief if isinstance(req_or_brief, PiezoBrief) else PiezoBrief.of(req_or_brief)

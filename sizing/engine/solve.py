@@ -35,13 +35,15 @@ from ..io.catalog import Catalog
 from ..io.requirements import RequirementsFile
 from . import assumed, names, piezo_designs
 from .candidate import design_candidate, pruned_candidate, ruled_out_record
-from .dc_candidates import dc_candidates
-from .dc_sizing import dc_parts_candidates
-from .evaluate import load_cases
+from .dc_candidate import actuator_candidate, parts_candidate
+from .dc_candidates import actuator_designs
+from .dc_sizing import dc_parts_designs
+from .loads import load_cases
 from .piezo import Candidates
-from .pump import pump_candidates
-from .rank import nondominated_levels, rank_order, verdict
-from .records import PiezoBrief, PiezoDesign, Simulation, Stages, VerifiedDesign
+from .pump import pump_designs
+from .pump_candidate import pump_candidate
+from .rank import nondominated_levels, standings, verdict
+from .records import DCDesign, DCPartsOutcome, PiezoBrief, PiezoDesign, Simulation, Stages, VerifiedDesign
 from .search import Combo, enumerate_combos
 from .solve_summary import _assumptions, _clean, _requirements_si, _summary, _traces
 from .verify import simulate_cases
@@ -96,18 +98,20 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
     cases = load_cases(req.load)
     loads = [c["load_N"] for c in cases]
     piezo, verified = _piezohydraulic(req, catalog, loads, progress, detail)
-    dc, dc_models = _dc_motor(req, catalog, loads, progress, detail)
-    outcomes = (piezo, dc, _piezo_pump(req, catalog, loads, progress))
-    candidates = [c for o in outcomes for c in o.candidates]
-    _rank(req, candidates)
-    candidates.sort(key=lambda c: c["rank"])
+    dc, dc_records = _dc_motor(req, catalog, loads, progress, detail)
+    pump, pumps = _piezo_pump(req, catalog, loads, progress)
+    outcomes = (piezo, dc, pump)
+    unranked = [c for o in outcomes for c in o.candidates]
+    ranking = standings([c["margins"] for c in unranked], [c["metrics"] for c in unranked],
+                        [OBJECTIVE_KEYS[k] for k in req.objectives.minimize])
+    candidates = sorted((dict(c, **s.fields()) for c, s in zip(unranked, ranking)), key=lambda c: c["rank"])
     assumed.fill(catalog, candidates)
     names.fill(candidates)
-    stages = Stages.of(verified)
+    stages = Stages.of(verified, dc_records, pumps)
     results = _results(req, requirements_sha256, catalog, cases, candidates, outcomes, _disagreements(verified))
-    traces = _traces(req, candidates, stages, dc_models, loads)
+    traces = _traces(req, candidates, stages, loads)
     if detail != "full":
-        _keep_verified(results)
+        results = _keep_verified(results)
     results["runtime_s"] = time.perf_counter() - start
     return SolveOutput(results=_clean(results), traces=traces, stages=stages)
 
@@ -163,27 +167,27 @@ def _piezohydraulic(req, catalog, loads, progress, detail) -> tuple[Outcome, lis
                    counts), verified
 
 
-def _dc_motor(req, catalog, loads, progress, detail) -> tuple[Outcome, dict]:
-    """The catalog's DC actuators and those sized from parts; also what the
-    report's traces re-simulate (the actuators and the models by id)."""
+def _dc_motor(req, catalog, loads, progress, detail) -> tuple[Outcome, tuple]:
+    """The catalog's DC actuators and those sized from parts; also their
+    records (the report's traces re-simulate them)."""
     if not req.options.dc_motors:
-        return Outcome("dc_motor", [], counts=_dc_counts({})), {}
-    dc = dc_candidates(req, catalog, loads)
-    parts = dc_parts_candidates(req, catalog, loads, progress)
-    ruled = Counter(parts.get("ruled_out", {}))
-    candidates = list(dc["candidates"])
-    for c in parts.get("candidates", []):
-        if c.get("stage") == "pruned" and detail != "full":
-            ruled[_dc_pruned_reason(c)] += 1
-        else:
-            candidates.append(c)
-    return Outcome("dc_motor", candidates, ruled, (), _dc_counts(parts)), dict(dc, models=parts.get("models", {}))
+        return Outcome("dc_motor", [], counts=_dc_counts(DCPartsOutcome())), ()
+    actuators = actuator_designs(req, catalog, loads)
+    parts = dc_parts_designs(req, catalog, loads, progress)
+    dropped = detail != "full"          # a design ruled out before simulation is counted, not recorded
+    kept = [d for d in parts.designs if not (dropped and d.stage == "pruned")]
+    ruled = Counter(parts.ruled_out) + Counter(_dc_pruned_reason(d) for d in parts.designs
+                                               if dropped and d.stage == "pruned")
+    candidates = ([actuator_candidate(req, catalog, d) for d in actuators]
+                  + [parts_candidate(req, catalog, d) for d in kept])
+    return Outcome("dc_motor", candidates, ruled, (), _dc_counts(parts)), actuators + parts.designs
 
 
-def _piezo_pump(req, catalog, loads, progress) -> Outcome:
-    """The frequency-rectified piezo pump (``pump.py``)."""
-    out = pump_candidates(req, catalog, loads, progress)
-    return Outcome("piezo_pump", out["candidates"], out["ruled_out"], tuple(out["records"]), out["counts"])
+def _piezo_pump(req, catalog, loads, progress) -> tuple[Outcome, tuple]:
+    """The frequency-rectified piezo pump (``pump.py``) and its records."""
+    out = pump_designs(req, catalog, loads, progress)
+    return Outcome("piezo_pump", [pump_candidate(req, d) for d in out.designs], Counter(out.ruled_out),
+                   out.records, dict(out.counts)), out.designs
 
 
 # --- verification ---------------------------------------------------------
@@ -274,12 +278,12 @@ def _dropped_reason(c: dict, named: set) -> str | None:
     return None
 
 
-def _keep_verified(results: dict) -> None:
+def _keep_verified(results: dict) -> dict:
     """Keep the records of the designs that comply or come near (no check
     missed by more than 50 %) and of those the summary names (each group's
     best and closest, each technology's best and one-miss design, the design
     that flips its verdict); count the others by reason instead (``--detail
-    full`` keeps them). Ranks stay contiguous."""
+    full`` keeps them). Ranks stay contiguous. Returns new results."""
     summary = results["summary"]
     named = {g.get(k) for g in summary["groups"] for k in ("best", "closest")}
     for t in summary["comparison"]["technologies"].values():
@@ -291,13 +295,14 @@ def _keep_verified(results: dict) -> None:
             kept.append(c)
         else:
             dropped[(c["technology"], why)] += 1
-    for rank, c in enumerate(kept, start=1):
-        c["rank"] = rank
-    results["candidates"] = kept
+    ruled = dict(summary["ruled_out"])
+    by_tech = {t: dict(counts) for t, counts in summary["ruled_out_by_technology"].items()}
     for (tech, why), n in dropped.items():
-        summary["ruled_out"][why] = summary["ruled_out"].get(why, 0) + n
-        by_tech = summary["ruled_out_by_technology"].setdefault(tech, {})
-        by_tech[why] = by_tech.get(why, 0) + n
+        ruled[why] = ruled.get(why, 0) + n
+        counts = by_tech.setdefault(tech, {})
+        counts[why] = counts.get(why, 0) + n
+    return dict(results, candidates=[dict(c, rank=rank) for rank, c in enumerate(kept, start=1)],
+                summary=dict(summary, ruled_out=ruled, ruled_out_by_technology=by_tech))
 
 
 def _pruned_reason(combo: Combo) -> str:
@@ -305,41 +310,19 @@ def _pruned_reason(combo: Combo) -> str:
     return min(combo.margins, key=lambda k: combo.margins[k])
 
 
-def _dc_pruned_reason(c: dict) -> str:
-    missed = [k for k, v in c.get("margins", {}).items() if v is not None and v < 0]
-    return min(missed, key=lambda k: c["margins"][k]) if missed else "pruned"
+def _dc_pruned_reason(d: DCDesign) -> str:
+    """The check a DC design ruled out before simulation misses most (a NaN
+    margin rules it out but names no check)."""
+    missed = [k for k, v in d.margins.items() if v < 0]
+    return min(missed, key=lambda k: d.margins[k]) if missed else "pruned"
 
 
-def _rank(req, candidates) -> None:
-    keys = [OBJECTIVE_KEYS[k] for k in req.objectives.minimize]
-    for c in candidates:
-        c["feasible"], c["driver"] = verdict(c["margins"])
-    feasible = np.array([c["feasible"] for c in candidates], dtype=bool)
-    F = np.array([[_objective(c["metrics"].get(k)) for k in keys] for c in candidates], dtype=float)
-    F = F.reshape(len(candidates), len(keys))
-    worst = np.array([c["margins"][c["driver"]] if c["driver"] else -math.inf for c in candidates], dtype=float)
-    rank = rank_order(feasible, F, worst)
-    level = np.zeros(len(candidates), dtype=int)
-    if feasible.any():
-        level[feasible] = nondominated_levels(F[feasible])
-    for i, c in enumerate(candidates):
-        c["rank"] = int(rank[i])
-        c["pareto"] = bool(feasible[i] and level[i] == 1)
-        c["pareto_level"] = int(level[i]) if feasible[i] else None
-
-
-def _dc_counts(parts: dict) -> dict:
+def _dc_counts(parts: DCPartsOutcome) -> dict:
     """DC combinations from parts: all of them, those ruled out (by reason,
     before or after the static screen) and those simulated."""
-    records = parts.get("candidates", [])
-    stages = [c["stage"] for c in records]
-    ruled = sum(parts.get("ruled_out", {}).values()) + stages.count("pruned")
-    return {"combinations": int(parts.get("combinations", len(records))), "pruned": ruled,
+    stages = [d.stage for d in parts.designs]
+    return {"combinations": int(parts.combinations), "pruned": sum(parts.ruled_out.values()) + stages.count("pruned"),
             "simulated": stages.count("simulated")}
-
-
-def _objective(value) -> float:
-    return math.inf if value is None or not math.isfinite(value) else float(value)
 
 
 def _disagreements(verified: list[VerifiedDesign]) -> list[dict]:
@@ -390,16 +373,16 @@ def verify_sized(req, catalog: Catalog, sized: list, loads: list[float], chunk: 
         part = flat[start:start + chunk]
         done = _simulate_chunk([per_triple[i][j] for i, j in part], loads, req.requirements.stroke)
         sims.update(zip(part, done))
-    out = []
-    for i, (ds, t) in enumerate(zip(per_triple, temps)):
-        cands = []
-        for j, d in enumerate(ds):
-            c = design_candidate(reqs[t], VerifiedDesign(d, sims.get((i, j))))
-            record = ruled_out_record(d)
-            if record is not None:          # a sample outside the members' validity or the envelope
-                c["margins"][record["reason"]] = -math.inf
-                c["ruled_out"] = record
-            c["feasible"], c["driver"] = verdict(c["margins"])
-            cands.append(c)
-        out.append(cands)
-    return out
+    return [[_judged(reqs[t], VerifiedDesign(d, sims.get((i, j)))) for j, d in enumerate(ds)]
+            for i, (ds, t) in enumerate(zip(per_triple, temps))]
+
+
+def _judged(req, v: VerifiedDesign) -> dict:
+    """A re-verified design's candidate with its verdict; a sample outside
+    the members' validity or the envelope misses that check."""
+    c = design_candidate(req, v)
+    record = ruled_out_record(v.design)
+    if record is not None:
+        c = dict(c, margins={**c["margins"], record["reason"]: -math.inf}, ruled_out=record)
+    feasible, driver = verdict(c["margins"])
+    return dict(c, feasible=feasible, driver=driver)

@@ -15,6 +15,7 @@ from .dc_candidates import dc_duration
 from .dc_verdict import dc_sourced
 from ..sim.dc_motor import DCMotorModel
 from .comparison import technology_comparison
+from .records import DCActuatorDesign
 from .verify import simulate_cases
 
 TRACE_POINTS = 600
@@ -205,7 +206,7 @@ def _downsample(t, y):
     return t[::step].tolist(), y[::step].tolist()
 
 
-def _traces(req, candidates, stages, dc, loads, top=3) -> list[dict]:
+def _traces(req, candidates, stages, loads, top=3) -> list[dict]:
     """Time traces of the top designs: the best feasible ones, the best of
     each technology group, re-simulated with their traces kept. ``stages``:
     the solve's records (``records.Stages``)."""
@@ -223,11 +224,11 @@ def _traces(req, candidates, stages, dc, loads, top=3) -> list[dict]:
             continue
         known.add(base)
         if c["technology"] == "dc_motor":
-            if "actuator" in c["components"]:
-                act = dc["actuators"][c["components"]["actuator"]]
-                sims = dc_engine.step_cases(act, S, loads, dc_duration(req), keep_traces=True)
-            elif c["id"] in dc.get("models", {}):
-                params = dc["models"][c["id"]]
+            d = stages.dc.get(base)
+            if isinstance(d, DCActuatorDesign):
+                sims = dc_engine.step_cases(d.actuator, S, loads, dc_duration(req), keep_traces=True)
+            elif d is not None and d.model:
+                params = dict(d.model)
                 sims = dc_engine.step_cases_for(lambda force: DCMotorModel(**params, load_force=force), S, loads,
                                                 dc_duration(req), keep_traces=True)
             else:

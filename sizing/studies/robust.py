@@ -27,7 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..engine.evaluate import load_cases
+from ..engine.loads import load_cases
 from ..engine.piezo import reference_bouc_wen, stack_bouc_wen
 from ..engine.rank import nondominated_levels
 from ..engine.dc_candidates import dc_duration

@@ -1,0 +1,62 @@
+"""A DC design's results.json record (docs/formats.md, results).
+
+The one place that turns the DC records (``records.DCActuatorDesign``, a
+catalog actuator; ``records.DCDesign``, a design from parts) into the
+candidate dicts of results.json."""
+from __future__ import annotations
+
+from .dc_candidates import dc_duration
+from .dc_assumed import resting
+from .records import DCActuatorDesign, DCDesign, Simulation
+
+
+def _cases(sim: Simulation) -> list[dict]:
+    return [dict(c) for c in sim.cases]
+
+
+def actuator_candidate(req, catalog, d: DCActuatorDesign) -> dict:
+    """The record of a catalog DC actuator."""
+    r, act = req.requirements, d.actuator
+    cases = _cases(d.simulation)
+    worst = max(cases, key=lambda c: c["load_N"])
+    components = {"actuator": act.id}
+    return {
+        "id": d.id, "technology": "dc_motor", "variant": "catalog", "stage": "simulated",
+        "components": components,
+        "stack_params": {},          # no stacks: the key is kept so every candidate has the same keys
+        "static": dict(d.static),
+        "simulated": {"stroke_m": worst["stroke_m"], "time_to_stroke_s": worst["time_to_stroke_s"],
+                      "speed_m_s": min(c["speed_m_s"] for c in cases), "overshoot": worst["overshoot"],
+                      "load_N": worst["load_N"], "cases": cases,
+                      "peak_speed_m_s": max(c["peak_speed_m_s"] for c in cases)},
+        "margins": dict(d.margins),
+        "metrics": dict(d.metrics),
+        "temperatures": {f"dc_actuator {act.id}": {"rated_degC": act.max_temperature,
+                                                    "required_degC": r.max_temperature}},
+        "design": {"technology": "dc_motor", "actuator": act.id, "step": r.stroke,
+                   "duration": dc_duration(req), "temperature": r.max_temperature},
+        "reason": "",
+        **resting(catalog, components, d.margins),
+    }
+
+
+def parts_candidate(req, catalog, d: DCDesign) -> dict:
+    """The record of a DC design from parts."""
+    r, o = req.requirements, req.options
+    T, components, stage = r.max_temperature, d.parts.components(), d.stage
+    simulated = dict(d.simulated)
+    if "cases" in simulated:
+        simulated["cases"] = _cases(d.simulation)
+    return {
+        "id": d.id, "technology": "dc_motor", "variant": "parts", "stage": stage,
+        "components": components, "controller": dict(d.controller), "stack_params": {}, "static": dict(d.static),
+        "simulated": simulated, "margins": dict(d.margins), "metrics": dict(d.metrics),
+        "temperatures": {"ambient": {"rated_degC": d.rated_ambient, "required_degC": T}},
+        "design": {"technology": "dc_motor", **components, "step": r.stroke, "duration": d.duration,
+                   "temperature": T, "speed": r.speed, "strokes_per_second": req.duty.strokes_per_second,
+                   "amplifier_location": o.amplifier_location,
+                   "electronics_bay_temperature": o.electronics_bay_temperature},
+        "reason": "" if not d.missed or stage == "simulated"
+                  else "ruled out before simulation: " + ", ".join(d.missed),
+        **resting(catalog, components, d.margins),
+    }

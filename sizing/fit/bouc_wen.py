@@ -29,7 +29,10 @@ How the fit works
   correlation of the residuals (AR(1) effective sample size: model error on
   a real record is smooth, not white); 95 % intervals +/- 1.96 sigma. A parameter that is
   at a bound, strongly correlated (|r| > 0.95) with another, or has an
-  interval wider than itself gets an IdentifiabilityWarning.
+  interval wider than itself gets an IdentifiabilityWarning, and so do
+  residuals holding a structure the model lacks (a spectral line common to
+  the runs, a trend: common.residual_structure), which the intervals
+  assume absent.
 - Prior (optional, ``prior=``): a second, regularised fit (fit.prior) pulls
   the groups toward catalog values where the data leave them free; it is
   stored beside the plain least-squares result, never instead of it.
@@ -46,7 +49,8 @@ from ..physics.bouc_wen import (BoucWen, free_displacement, groups_jacobian, gro
                                 params_to_groups)  # noqa: F401  (params_to_groups: for callers of the estimator)
 from ..sim.signals import nrmse
 from .common import (Z95, ConvergenceWarning, HysteresisRecord, IdentifiabilityWarning, check_hysteresis_records, correlation,
-                     covariance, filter_inputs, identifiability, lag1_correlation, run_weights)
+                     covariance, ess_inflation, filter_inputs, identifiability, lag1_correlation,
+                     residual_structure, run_weights)
 from .prior import regularise
 
 PARAM_NAMES = ("d33", "alpha", "beta", "gamma", "delta", "n")
@@ -211,9 +215,9 @@ class BoucWenEstimator:
         r = self._residual(z, records)
         # residuals of a real record are coloured (model error is smooth): an
         # AR(1) effective sample size widens the intervals by (1 + rho) / (1 - rho)
-        self.residual_correlation_ = lag1_correlation(r, [len(rec.time) for rec in records])
-        rho = min(max(self.residual_correlation_, 0.0), 0.999)
-        self.interval_inflation_ = (1 + rho) / (1 - rho)
+        lengths = [len(rec.time) for rec in records]
+        self.residual_correlation_ = lag1_correlation(r, lengths)
+        self.interval_inflation_ = ess_inflation(r, lengths)
         cov_z = covariance(J, r) * self.interval_inflation_
         T = groups_jacobian(g, H, V)
         self.cov_ = T @ cov_z[:6, :6] @ T.T
@@ -234,7 +238,9 @@ class BoucWenEstimator:
             self.warnings_.append(message)
         self.noise_ = float(np.sqrt(r @ r / max(len(r) - len(z), 1)))     # normalised residual sigma
         self.residual_rms_ = float(np.sqrt(np.mean(r ** 2)) * H)
-        self.nrmse_ = {rec.name: nrmse(rec.position, self.predict(rec)) for rec in records}
+        predicted = [self.predict(rec) for rec in records]
+        self.warnings_ += residual_structure([(rec.time, y - rec.position, y) for rec, y in zip(records, predicted)])
+        self.nrmse_ = {rec.name: nrmse(rec.position, y) for rec, y in zip(records, predicted)}
 
     # ---- use --------------------------------------------------------------
     def predict(self, record: HysteresisRecord, h0: float | None = None, offset: float | None = None) -> np.ndarray:

@@ -225,14 +225,17 @@ def residual_structure(runs) -> list[str]:
     the periodogram's local median, not a line of the simulated output),
     and a trend (a straight line in time holding TREND_SHARE of the
     residual's variance in every run). Confidence intervals assume the
-    residual has neither."""
+    residual has neither. Each message is also issued as an
+    IdentifiabilityWarning."""
     from ..diagnose import spectrum
 
     out = []
     for freq, ratio in spectrum.lines([(t, r) for t, r, _ in runs], [y for _, _, y in runs]):
+        order, fundamental = _harmonic(freq, runs[0][0], runs[0][2])
+        cause = (f"the {order}th harmonic of the {fundamental:.2f} Hz motion: a loop or waveform shape"
+                 if order else "a sensor-mount vibration or another resonance")
         out.append(f"the residuals hold a spectral line at {freq:.1f} Hz ({ratio:.0f} x the local level) that "
-                   "the model lacks (a sensor-mount vibration or another resonance); the 95% intervals assume "
-                   "residuals without it")
+                   f"the model lacks ({cause}); the 95% intervals assume residuals without it")
     shares = []
     for t, r, _ in runs:
         r = np.asarray(r, float) - np.mean(r)
@@ -243,7 +246,25 @@ def residual_structure(runs) -> list[str]:
         out.append(f"the residuals drift: a straight line in time holds {100 * min(shares):.0f}% or more of their "
                    "variance in every run (a thermal drift or an offset the model lacks); the 95% intervals "
                    "assume residuals without it")
+    for message in out:
+        warnings.warn(message, IdentifiabilityWarning, stacklevel=3)
     return out
+
+
+def _harmonic(freq: float, t: np.ndarray, y: np.ndarray) -> tuple[int, float]:
+    """(n, f0) when ``freq`` is the n-th harmonic (n >= 2, within 1.5
+    periodogram bins) of the fundamental f0 of the simulated output y(t):
+    its strongest spectral peak; (0, f0) otherwise. A hysteresis model that
+    misses the loop's shape leaves lines at the drive's harmonics, not a
+    resonance."""
+    from ..diagnose.spectrum import periodogram
+
+    f, P = periodogram(t, np.asarray(y, float) - np.mean(y))
+    f0 = float(f[1 + int(np.argmax(P[1:]))]) if len(f) > 2 else 0.0
+    if f0 <= 0.0:
+        return 0, f0
+    n = int(round(freq / f0))
+    return (n if n >= 2 and abs(freq - n * f0) <= 1.5 * float(f[1] - f[0]) else 0), f0
 
 
 def correlation(cov: np.ndarray) -> np.ndarray:

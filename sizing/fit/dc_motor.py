@@ -34,7 +34,7 @@ from ..diagnose.effects.sensor_vibration import mount_response
 from ..errors import FitError, SimulationError
 from ..sim.dc_motor import DCMotorModel, simulate
 from ..sim.signals import nrmse
-from .common import (Z95, ConvergenceWarning, IdentifiabilityWarning, correlation, covariance, ess_inflation,
+from .common import (Z95, ConvergenceWarning, correlation, covariance, ess_inflation,
                      identifiability, require_runs, residual_structure)
 
 GAIN_NAMES = ("kp", "ki", "kd")
@@ -165,10 +165,8 @@ class DCMotorEstimator:
         self.ci95_ = {n: (float(v - h), float(v + h)) for n, v, h in zip(self.names_, values, half)}
         at_bound = (np.abs(z - lb) < 1e-3) | (np.abs(z - ub) < 1e-3)
         self.warnings_ = identifiability(self.names_, values, half, self.corr_, at_bound)
-        for message in residual_structure([(rec.time, self._simulate(z, rec)[0] - rec.position,
-                                            self._simulate(z, rec)[0]) for rec in records]):
-            warnings.warn(message, IdentifiabilityWarning, stacklevel=2)
-            self.warnings_.append(message)
+        simulated = [self._simulate(z, rec)[0] for rec in records]
+        self.warnings_ += residual_structure([(rec.time, y - rec.position, y) for rec, y in zip(records, simulated)])
         self.model_ = self.model.replace(**{n: v for n, v in self.params_.items() if n not in MOUNT_NAMES})
         self.nrmse_ = {rec.name: nrmse(rec.position, self.predict(rec)) for rec in records}
         if self.progress is not None:

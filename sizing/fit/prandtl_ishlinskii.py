@@ -27,7 +27,8 @@ import numpy as np
 from ..errors import FitError
 from ..physics import prandtl_ishlinskii as pi
 from ..sim.signals import nrmse
-from .common import ConvergenceWarning, HysteresisRecord, check_hysteresis_records, filter_inputs, run_weights
+from .common import (ConvergenceWarning, HysteresisRecord, check_hysteresis_records, filter_inputs, residual_structure,
+                     run_weights)
 
 
 class PrandtlIshlinskiiEstimator:
@@ -77,9 +78,11 @@ class PrandtlIshlinskiiEstimator:
             warnings.warn(f"Prandtl-Ishlinskii QP ended {problem.status}", ConvergenceWarning, stacklevel=2)
         self.weights_ = np.clip(sol[:self.n_operators], 0.0, None) * H / V
         self.offset_ = {r.name: float(c * H) for r, c in zip(records, sol[self.n_operators:])}
-        self.nrmse_ = {r.name: nrmse(r.position, self.predict(r)) for r in records}
+        predicted = [self.predict(r) for r in records]
+        self.nrmse_ = {r.name: nrmse(r.position, y) for r, y in zip(records, predicted)}
         self.residual_rms_ = float(np.sqrt(np.mean(np.concatenate(
-            [(r.position - self.predict(r)) ** 2 for r in records]))))
+            [(r.position - y) ** 2 for r, y in zip(records, predicted)]))))
+        self.warnings_ = residual_structure([(r.time, y - r.position, y) for r, y in zip(records, predicted)])
         return self
 
     def _solve(self, records, weights):

@@ -18,15 +18,24 @@ import sys
 import time
 from pathlib import Path
 
-from sizing.engine.dc_sizing import dc_parts_candidates
+from sizing.engine.dc_candidate import parts_candidate
+from sizing.engine.dc_sizing import dc_parts_designs
 from sizing.engine.evaluate import load_cases
-from sizing.engine.pump import pump_candidates
+from sizing.engine.pump import pump_designs
+from sizing.engine.pump_candidate import pump_candidate
 from sizing.engine.solve import solve
 from sizing.io.catalog import load_catalog
 from sizing.io.requirements import load_requirements
 
 LIMIT_S = 15.0
 ROOT = Path(__file__).resolve().parents[1]
+
+
+def _timed(step) -> float:
+    """Seconds ``step()`` takes (a stage and its results.json records, as the solve runs it)."""
+    t0 = time.perf_counter()
+    step()
+    return time.perf_counter() - t0
 
 
 def main() -> int:
@@ -42,12 +51,9 @@ def main() -> int:
         t0 = time.perf_counter()
         out = solve(req, sha, catalog)
         times.append(time.perf_counter() - t0)
-        t0 = time.perf_counter()
-        dc_parts_candidates(req, catalog, loads)
-        dc_times.append(time.perf_counter() - t0)
-        t0 = time.perf_counter()
-        pump_candidates(req, catalog, loads)
-        pump_times.append(time.perf_counter() - t0)
+        dc_times.append(_timed(lambda: [parts_candidate(req, catalog, d)
+                                        for d in dc_parts_designs(req, catalog, loads).designs]))
+        pump_times.append(_timed(lambda: [pump_candidate(req, d) for d in pump_designs(req, catalog, loads).designs]))
     counts = out.results["counts"]
     warm, dc_warm = min(times[1:]), min(dc_times[1:])
     print(f"seed solve: cold {times[0]:.2f} s, warm best {warm:.2f} s of {args.repeat} "

@@ -9,6 +9,7 @@ import pytest
 
 from sizing.engine import pump as pump_engine
 from sizing.engine.evaluate import load_cases
+from sizing.engine.pump_candidate import pump_candidate
 from sizing.io.catalog import load_catalog
 from sizing.io.requirements import load_requirements
 
@@ -19,21 +20,27 @@ DESIGN_KEYS = {"pump_frequency", "pump_diameter", "cylinder_diameter", "bias_pre
 STATIC_KEYS = {"swept_volume_m3", "output_power_W", "amplifier_power_VA", "mean_speed_m_s"}
 
 
+def _pumps(req, catalog, loads) -> tuple:
+    """The pump stage's outcome and its designs' results.json records."""
+    out = pump_engine.pump_designs(req, catalog, loads)
+    return out, [pump_candidate(req, d) for d in out.designs]
+
+
 @pytest.fixture(scope="module")
 def seed_pumps():
     req, _ = load_requirements(STUDIES / "seed-requirements.toml")
     loads = [c["load_N"] for c in load_cases(req.load)]
-    return req, pump_engine.pump_candidates(req, load_catalog(), loads)
+    return req, _pumps(req, load_catalog(), loads)
 
 
 def test_the_seed_sizes_and_simulates_at_least_20_pump_designs(seed_pumps):
-    _, out = seed_pumps
-    sims = [c for c in out["candidates"] if c["stage"] == "simulated"]
+    _, (out, candidates) = seed_pumps
+    sims = [c for c in candidates if c["stage"] == "simulated"]
     assert len(sims) >= 20
-    assert out["counts"]["simulated"] == len(sims)
+    assert out.counts["simulated"] == len(sims)
     # every screened row is either simulated or counted by reason
-    assert (sum(out["ruled_out"].values()) + len(sims) + out["counts"]["outside_envelope"]
-            == out["counts"]["combinations"])
+    assert (sum(out.ruled_out.values()) + len(sims) + out.counts["outside_envelope"]
+            == out.counts["combinations"])
     for c in sims:
         assert DESIGN_KEYS <= c["design"].keys(), c["id"]
         assert STATIC_KEYS <= c["static"].keys(), c["id"]
@@ -42,8 +49,8 @@ def test_the_seed_sizes_and_simulates_at_least_20_pump_designs(seed_pumps):
 
 
 def test_no_pump_design_delivers_more_oil_than_it_pumps(seed_pumps):
-    _, out = seed_pumps
-    for c in out["candidates"]:
+    _, (_, candidates) = seed_pumps
+    for c in candidates:
         s, d = c["static"], c["design"]
         bound = s["swept_volume_m3"] * d["pump_frequency"] / s["cylinder_area_m2"]
         for case in c["simulated"]["cases"]:
@@ -55,9 +62,9 @@ def test_cycle_averaged_model_agrees_with_the_simulation_within_the_stated_toler
     """docs/models.md: on the verified designs the simulated mean speed lies
     within AGREEMENT_TOLERANCE of the cycle-averaged one, on the fast side
     (the averaged model omits the load ringing on the high-side oil)."""
-    _, out = seed_pumps
+    _, (_, candidates) = seed_pumps
     low, high = pump_engine.AGREEMENT_TOLERANCE
-    for c in out["candidates"]:
+    for c in candidates:
         for case in c["simulated"]["cases"]:
             assert low <= case["agreement"] <= high, (c["id"], case["agreement"])
 
@@ -66,22 +73,22 @@ def test_an_envelope_rules_pump_designs_out_with_one_line_per_body():
     req, _ = load_requirements(STUDIES / "seed-requirements.toml")
     req = req.model_copy(update={"envelope": req.envelope.model_copy(update={"max_mass": 100.0})})
     loads = [c["load_N"] for c in load_cases(req.load)]
-    out = pump_engine.pump_candidates(req, load_catalog(), loads)
-    assert out["records"] and all(r["reason"] == "envelope" for r in out["records"])
-    assert sum(r["designs"] for r in out["records"]) == out["counts"]["outside_envelope"] > 0
-    assert all(c["metrics"]["mass_kg"] <= 100.0 for c in out["candidates"])
+    out, candidates = _pumps(req, load_catalog(), loads)
+    assert out.records and all(r["reason"] == "envelope" for r in out.records)
+    assert sum(r["designs"] for r in out.records) == out.counts["outside_envelope"] > 0
+    assert all(c["metrics"]["mass_kg"] <= 100.0 for c in candidates)
 
 
 def test_the_speed_margin_is_the_simulated_one(seed_pumps):
-    req, out = seed_pumps
-    for c in out["candidates"]:
+    req, (_, candidates) = seed_pumps
+    for c in candidates:
         assert c["margins"]["speed"] == pytest.approx(c["simulated"]["speed_m_s"] / req.requirements.speed - 1)
 
 
 def test_design_frequency_stays_below_the_valve_rating_and_resonance(seed_pumps):
-    _, out = seed_pumps
+    _, (_, candidates) = seed_pumps
     cat = load_catalog()
-    for c in out["candidates"]:
+    for c in candidates:
         valve = cat.valves[c["design"]["valve"]]
         assert c["design"]["pump_frequency"] <= valve.max_frequency < c["valve_resonance_Hz"]
 
@@ -114,8 +121,8 @@ def test_a_catalog_without_valves_sizes_no_pump(tmp_path):
     cat = load()
     cat.valves.clear()
     req, _ = load_requirements(STUDIES / "seed-requirements.toml")
-    out = pump_engine.pump_candidates(req, cat, [500.0])
-    assert out["candidates"] == [] and out["records"] == [] and out["counts"]["combinations"] == 0
+    out = pump_engine.pump_designs(req, cat, [500.0])
+    assert out.designs == () and out.records == () and out.counts["combinations"] == 0
 
 
 def test_a_diverged_cycle_simulation_is_a_failure_not_a_figure():

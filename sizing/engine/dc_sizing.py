@@ -27,7 +27,6 @@ from . import dc_controller as ctl
 from .dc import OUTPUT_RATE_HZ, SETTLED
 from . import dc_search, dc_verdict
 from .dc_parts import enumerate_parts, metrics, mountable, static_screen, temperature_margin
-from .dc_candidate import parts_candidate
 from .dc_candidates import dc_duration
 from .rank import nondominated_levels, verdict
 from .records import DCDesign, DCParts, DCPartsOutcome, Simulation, frozen
@@ -124,14 +123,6 @@ def dc_parts_designs(req, catalog, loads, progress=None, duration=None, exhausti
 def row_parts(p, i: int) -> DCParts:
     """The catalog ids of row ``i`` of ``p`` (PartArrays)."""
     return DCParts(p.motor[i], p.screw[i], p.gear[i], p.drive[i])
-
-
-def dc_parts_candidates(req, catalog, loads) -> dict:
-    """The results.json view of ``dc_parts_designs``: {"candidates",
-    "ruled_out", "combinations"} (what benchmarks/ time and print)."""
-    out = dc_parts_designs(req, catalog, loads)
-    return {"candidates": [parts_candidate(req, catalog, d) for d in out.designs],
-            "ruled_out": dict(out.ruled_out), "combinations": out.combinations}
 
 
 class _Screen(NamedTuple):

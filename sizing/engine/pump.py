@@ -26,7 +26,6 @@ from ..physics.stack import derated_stroke
 from ..sim.pump import PumpModel, simulate
 from . import pump_screen as screen
 from .piezo import reference_bouc_wen, stack_bouc_wen
-from .pump_candidate import pump_candidate
 from .rank import floor_margin, nondominated_levels
 from .records import PumpDesign, PumpOutcome, Simulation, frozen
 
@@ -49,14 +48,6 @@ BEST_DEMONSTRATED_SOURCE = ("46 W at 1 kHz, 1 kV, 500 psi bias (Kinetic Ceramics
 def _progress(callback, stage, done, total):
     if callback is not None:
         callback(stage, done, total)
-
-
-def pump_candidates(req, catalog, loads: list[float]) -> dict:
-    """The results.json view of ``pump_designs``: {"candidates", "ruled_out",
-    "records", "counts"} (what benchmarks/ time)."""
-    out = pump_designs(req, catalog, loads)
-    return {"candidates": [pump_candidate(req, d) for d in out.designs], "ruled_out": Counter(out.ruled_out),
-            "records": list(out.records), "counts": dict(out.counts)}
 
 
 def pump_designs(req, catalog, loads: list[float], progress=None) -> PumpOutcome:

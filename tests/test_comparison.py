@@ -73,15 +73,10 @@ def test_names_are_unique_short_and_stable():
                                           "gear": "belt-2", "drive": "servo-48v-10a"})
     b = dict(base, id="dc-b", components=dict(a["components"], drive="servo-96v-12a"))
     c = dict(base, id="dc-c", components=dict(a["components"], screw="thk-bif1605-5"))
-    alone = [dict(a)]
-    names.fill(alone)
-    assert alone[0]["name"] == "DC MF0127008 R12-05K4 belt-2"
-    group = [a, b, c]
-    names.fill(group)
-    got = [x["name"] for x in group]
+    assert names.unique([a]) == ["DC MF0127008 R12-05K4 belt-2"]
+    got = names.unique([a, b, c])
     assert len(set(got)) == 3 and all(len(n) <= 32 for n in got)
     assert got[0].endswith("48v") and got[1].endswith("96v")
     # the same design gets the same name in a list ordered otherwise
-    again = [dict(b), dict(a), dict(c)]
-    names.fill(again)
-    assert [x["name"] for x in again] == [got[1], got[0], got[2]]
+    assert names.unique([b, a, c]) == [got[1], got[0], got[2]]
+    assert "name" not in a                  # the candidates are read, not written

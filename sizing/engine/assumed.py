@@ -88,11 +88,10 @@ def parts_of(catalog, components: dict) -> dict:
     return parts
 
 
-def fill(catalog, candidates: list[dict]) -> None:
-    """Every candidate's ``rests_on_assumed`` (in place), never null: kept
-    where its engine already gave the contract's list, else from its parts."""
-    for c in candidates:
-        given = c.get("rests_on_assumed")
-        if isinstance(given, list) and all(isinstance(x, dict) for x in given) and given:
-            continue
-        c["rests_on_assumed"] = rests_on_components(catalog, c.get("components", {}), c.get("driver"))
+def of_candidate(catalog, c: dict) -> list[dict]:
+    """A ranked candidate's ``rests_on_assumed``, never null: the list its
+    engine gave when it is the contract's, else read from its parts."""
+    given = c.get("rests_on_assumed")
+    if isinstance(given, list) and all(isinstance(x, dict) for x in given) and given:
+        return given
+    return rests_on_components(catalog, c.get("components", {}), c.get("driver"))

@@ -58,8 +58,20 @@ def ruled_out_record(d: PiezoDesign) -> dict | None:
     return {"id": d.id, "technology": "piezohydraulic", "variant": d.variant.name, **why}
 
 
-def pruned_candidate(combo: Combo) -> dict:
-    """A combination ruled out before sizing (``--detail full``)."""
+def pruned_candidate(combo: Combo, nominal: dict | None = None) -> dict:
+    """A combination ruled out before sizing (``--detail full``), with the
+    figures of its nominal design when given (``piezo_designs.nominal_figures``),
+    marked ``nominal_geometry``: not a sized design."""
+    base = _pruned(combo)
+    if nominal is None:
+        return base
+    return dict(base, static={**base["static"], **nominal["static"]},
+                components=dict(base["components"], ratio=nominal["ratio"], material=nominal["material"]),
+                nominal_geometry=True, force_path=nominal["force_path"], thermal_budget=nominal["thermal_budget"],
+                seal_friction_N=nominal["seal_friction_N"], compensator=None)
+
+
+def _pruned(combo: Combo) -> dict:
     s, a = combo.stack, combo.amplifier
     reasons = [k for k, v in combo.margins.items() if v < 0]
     return {

@@ -9,6 +9,7 @@ engineer would say of the design, the ``id`` staying the machines' key.
 from __future__ import annotations
 
 import re
+from collections import Counter
 
 MAX_NAME = 32
 _MAKERS = ("pi-", "thorlabs-", "maxon-", "faulhaber-", "allied-", "gen-", "thk-", "hiwin-")
@@ -76,7 +77,7 @@ def _tokens(part_id: str | None, n: int) -> str:
 def _pump(c: dict) -> str:
     """PP, stacks, valve (first letter and port mm), pump piston (mm) and
     pumping frequency: "PP 1xP056.90 r6 p80 50Hz"; designs that differ only
-    in their accumulator add its bias (``fill``)."""
+    in their accumulator add its bias (``unique``)."""
     comp, d = c["components"], c.get("design", {})
     stack = _short(comp.get("stack"))
     stack = stack.upper().replace("-", "", 1) if re.match(r"^[a-z]-\d", stack) else stack
@@ -94,29 +95,29 @@ def name(c: dict) -> str:
     return text[:MAX_NAME]
 
 
-def fill(candidates: list[dict]) -> None:
-    """Every candidate's ``name`` (in place), unique within the list: designs
+def unique(candidates: list[dict]) -> list[str]:
+    """Each candidate's name, in order, unique within the list: designs
     whose names would coincide add the part they differ in (the drive, the
     amplifier, ...), and a few letters of their id's hash when even that
     coincides, so a name depends only on the design, not on its rank."""
-    groups: dict[str, list[dict]] = {}
-    for c in candidates:
-        groups.setdefault(name(c), []).append(c)
-    for text, group in groups.items():
-        if len(group) == 1:
-            group[0]["name"] = text
-            continue
-        tags = [_difference(c, group) for c in group]
-        if len(set(tags)) < len(group):
-            tags = [f"{t} {_hash(c['id'])}".strip() for t, c in zip(tags, group)]
-        for c, tag in zip(group, tags):
-            c["name"] = _with_tag(text, tag)
-    known: dict[str, int] = {}
-    for c in candidates:                    # a cut that made two names one again
-        known[c["name"]] = known.get(c["name"], 0) + 1
-    for c in candidates:
-        if known[c["name"]] > 1:
-            c["name"] = _with_tag(c["name"], _hash(c["id"]))
+    out = [name(c) for c in candidates]
+    groups: dict[str, list[int]] = {}
+    for i, text in enumerate(out):
+        groups.setdefault(text, []).append(i)
+    for text, rows in groups.items():
+        if len(rows) > 1:
+            for i, tag in zip(rows, _tags([candidates[i] for i in rows])):
+                out[i] = _with_tag(text, tag)
+    known = Counter(out)                    # a cut that made two names one again
+    return [_with_tag(n, _hash(c["id"])) if known[n] > 1 else n for n, c in zip(out, candidates)]
+
+
+def _tags(group: list[dict]) -> list[str]:
+    """What tells apart the designs of ``group``, whose names coincide."""
+    tags = [_difference(c, group) for c in group]
+    if len(set(tags)) < len(group):
+        tags = [f"{t} {_hash(c['id'])}".strip() for t, c in zip(tags, group)]
+    return tags
 
 
 def _with_tag(text: str, tag: str) -> str:

@@ -295,15 +295,17 @@ def compensator_creep(leak_conductance, pressure, hold_time, narrow_diameter):
     return leak_conductance * pressure * hold_time / (math.pi / 4 * narrow_diameter**2)
 
 
-def nominal_figures(b: PiezoBrief, catalog, combos: list[Combo], candidates: list[dict]) -> None:
-    """Combinations ruled out before sizing still carry a force path, a
-    thermal budget, seal friction and the static figures of a nominal
-    design (in place): R that just gives the stroke at the voltage the
-    amplifier allows, the bore at the seal's pressure rating (or the stack
-    packing), the default structure material sized by the closed-form rule,
-    no compensator. Marked ``nominal_geometry``: not a sized design."""
+def nominal_figures(b: PiezoBrief, catalog, combos: list[Combo]) -> list[dict]:
+    """Per combination ruled out before sizing, in order, the figures of a
+    nominal design, so its record still carries a force path, a thermal
+    budget, seal friction and static figures (``candidate.pruned_candidate``):
+    R that just gives the stroke at the voltage the amplifier allows, the
+    bore at the seal's pressure rating (or the stack packing), the default
+    structure material sized by the closed-form rule, no compensator.
+    Each: {"static", "ratio", "material", "force_path", "thermal_budget",
+    "seal_friction_N"}."""
     if not combos:
-        return
+        return []
     T = b.temperature
     material = force_path.default_material(catalog.materials)
     spacer = force_path.spacer_material(catalog.materials)
@@ -337,22 +339,12 @@ def nominal_figures(b: PiezoBrief, catalog, combos: list[Combo], candidates: lis
     keys = ("free_stroke_m", "blocked_force_N", "blocked_force_ideal_N", "blocked_force_net_N",
             "natural_frequency_Hz", "wide_diameter_m", "narrow_diameter_m", "ratio", "thermal_net_m",
             "wide_gap_m", "stacks_that_fit", "continuous_current_A")
-    per_row = [{"static": {k: float(static[k][i]) for k in keys},
+    per_row = [{"static": {k: float(static[k][i]) for k in keys}, "ratio": ratios[i], "material": material.id,
                 "force_path": force_path.as_list(members, i, material.id, None),
                 "thermal_budget": {k: float(static["thermal_" + k][i]) for k in (*thermal.TERMS, "net_m")},
                 "seal_friction_N": {"wide": float(seal_f["wide"][i]), "narrow": float(seal_f["narrow"][i]),
                                     "at_pressure_Pa": float(p_load[i])}} for i in range(len(rows))]
-    pruned = [c for c in candidates if c.get("stage") == "pruned"]
-    for cd, i in zip(pruned, where):
-        row = per_row[i]
-        cd["static"].update(row["static"])
-        cd["components"]["ratio"] = ratios[i]
-        cd["components"]["material"] = material.id
-        cd["nominal_geometry"] = True
-        cd["force_path"] = row["force_path"]
-        cd["thermal_budget"] = row["thermal_budget"]
-        cd["seal_friction_N"] = row["seal_friction_N"]
-        cd["compensator"] = None
+    return [per_row[i] for i in where]
 
 
 @lru_cache(maxsize=4096)

@@ -104,9 +104,9 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
     unranked = [c for o in outcomes for c in o.candidates]
     ranking = standings([c["margins"] for c in unranked], [c["metrics"] for c in unranked],
                         [OBJECTIVE_KEYS[k] for k in req.objectives.minimize])
-    candidates = sorted((dict(c, **s.fields()) for c, s in zip(unranked, ranking)), key=lambda c: c["rank"])
-    assumed.fill(catalog, candidates)
-    names.fill(candidates)
+    ranked = sorted((dict(c, **s.fields()) for c, s in zip(unranked, ranking)), key=lambda c: c["rank"])
+    candidates = [dict(c, rests_on_assumed=assumed.of_candidate(catalog, c), name=n)
+                  for c, n in zip(ranked, names.unique(ranked))]
     stages = Stages.of(verified, dc_records, pumps)
     results = _results(req, requirements_sha256, catalog, cases, candidates, outcomes, _disagreements(verified))
     traces = _traces(req, candidates, stages, loads)
@@ -151,8 +151,8 @@ def _piezohydraulic(req, catalog, loads, progress, detail) -> tuple[Outcome, lis
     verified = [VerifiedDesign(d, sim) for d, sim in zip(designs, _simulate(req, designs, loads, progress))]
     candidates = []
     if detail == "full":
-        candidates = [pruned_candidate(c) for c in pruned]
-        piezo_designs.nominal_figures(brief, catalog, pruned, candidates)
+        candidates = [pruned_candidate(c, nominal)
+                      for c, nominal in zip(pruned, piezo_designs.nominal_figures(brief, catalog, pruned))]
     records = []
     for v in verified:
         record = ruled_out_record(v.design)

@@ -296,6 +296,31 @@ def _dc_candidate(req, catalog, gear=None) -> dict:
     return next(c for c in cands if c["components"]["gear"] == gear and c["stage"] == "simulated")
 
 
+def test_dc_designs_from_the_solve_records_match_the_results_json_reading(tmp_path, monkeypatch):
+    """robust takes a DC design from parts from the solve's records; read
+    back from its results.json candidate it has the same parts, part values,
+    controller settings and step duration."""
+    from sizing.engine import sized
+    from sizing.engine.dc_candidate import parts_candidate
+    from sizing.engine.dc_sizing import dc_parts_designs
+    from sizing.engine.records import Stages
+    req, _ = load_requirements(_requirements(tmp_path))
+    catalog = _dc_catalog("planetary32-3.5")
+    designs = dc_parts_designs(req, catalog, [c["load_N"] for c in load_cases(req.load)]).designs
+    cands = [parts_candidate(req, catalog, d) for d in designs]
+    read_back = [sized.read_back(req, catalog, c) for c in cands]
+    monkeypatch.setattr(sized, "read_back", None)           # the records alone
+    from_records = sized.study_designs(req, catalog, cands, Stages.of((), designs))
+    assert len(from_records) == len(cands) == 2
+    for a, b in zip(from_records, read_back):
+        assert a.settings == b.settings and a.duration == b.duration and a.has_gear == b.has_gear
+        for f in ("motor", "screw", "gear", "drive"):
+            assert list(getattr(a.parts, f)) == list(getattr(b.parts, f))
+        assert a.parts.values.keys() == b.parts.values.keys()
+        for k in a.parts.values:
+            np.testing.assert_array_equal(a.parts.values[k], b.parts.values[k])
+
+
 def test_dc_screw_efficiency_tolerance_gives_the_closed_form_probability(tmp_path):
     # Closed form for the DC path: the blocked force of a DC design from parts is
     # F = min(2 pi eta_s eta_g N k_t i_max / l, 2 pi eta_s T_gear / l) (engine/dc_parts.py), so

@@ -1,9 +1,11 @@
-"""Rebuild a solved design (a results.json candidate) for ``sizing robust``
-to re-run the solve's checks on perturbed parts: a piezohydraulic design as
-the (Combo, Variant, SizingResult) triple that ``solve.verify_sized``
-re-verifies (the parts from the catalog, the geometry (R, wide bore, drive
-voltage) as sized); a DC design from parts as its parts and its settings
-(``DCPartsDesign``, re-verified by ``dc_sizing.verify_parts``)."""
+"""A solved design as ``sizing robust`` perturbs it, to re-run the solve's
+checks on perturbed parts: a piezohydraulic design as the (Combo, Variant,
+SizingResult) triple that ``solve.verify_sized`` re-verifies (the parts
+from the catalog, the geometry (R, wide bore, drive voltage) as sized); a
+DC design from parts as its parts and its settings (``DCPartsDesign``,
+re-verified by ``dc_sizing.verify_parts``). Taken from the solve's records
+(``records.Stages``) when robust ran the solve; ``read_back`` rebuilds
+either from a results.json candidate."""
 from __future__ import annotations
 
 import math
@@ -13,7 +15,7 @@ from ..errors import InputError
 from ..io.catalog import Catalog
 from ..io.requirements import RequirementsFile
 from .convex import SizingResult
-from .records import Variant
+from .records import DCDesign, DCParts, Variant
 from .search import enumerate_combos
 
 
@@ -68,10 +70,13 @@ class DCPartsDesign:
         return self.parts.gear[0] is not None
 
 
-def dc_parts_design(catalog: Catalog, cand: dict) -> DCPartsDesign:
+def dc_parts_design(catalog: Catalog, d: DCDesign) -> DCPartsDesign:
+    """The solve's record of a DC design from parts, as robust perturbs it."""
+    return _dc_design(catalog, d.parts, {k: float(d.controller[k]) for k in SETTINGS}, d.duration)
+
+
+def _dc_read_back(catalog: Catalog, cand: dict) -> DCPartsDesign:
     """The DC design of a results.json candidate sized from parts."""
-    from dataclasses import replace
-    from .dc_parts import enumerate_parts
     comp, ctl = cand.get("components", {}), cand.get("controller", {})
     gear = comp.get("gear")
     ok = (cand.get("technology") == "dc_motor" and cand.get("variant") == "parts"
@@ -80,27 +85,47 @@ def dc_parts_design(catalog: Catalog, cand: dict) -> DCPartsDesign:
           and all(k in ctl for k in SETTINGS))
     if not ok:
         raise InputError(None, cand.get("id"), "expected a DC design sized from parts of this catalog")
-    one = replace(catalog, motors={comp["motor"]: catalog.motors[comp["motor"]]},
-                  screws={comp["screw"]: catalog.screws[comp["screw"]]},
-                  gears={} if gear is None else {gear: catalog.gears[gear]},
-                  drives={comp["drive"]: catalog.drives[comp["drive"]]})
+    return _dc_design(catalog, DCParts(comp["motor"], comp["screw"], gear, comp["drive"]),
+                      {k: float(ctl[k]) for k in SETTINGS},
+                      float(cand.get("design", {}).get("duration", 0.0)) or None)
+
+
+def _dc_design(catalog: Catalog, parts: DCParts, settings: dict, duration: float | None) -> DCPartsDesign:
+    """``parts`` as one row of ``dc_parts.PartArrays`` (enumerated from a
+    catalog of these parts alone, so the row's values are the solve's)."""
+    from dataclasses import replace
+    from .dc_parts import enumerate_parts
+    one = replace(catalog, motors={parts.motor: catalog.motors[parts.motor]},
+                  screws={parts.screw: catalog.screws[parts.screw]},
+                  gears={} if parts.gear is None else {parts.gear: catalog.gears[parts.gear]},
+                  drives={parts.drive: catalog.drives[parts.drive]})
     p = enumerate_parts(one)
-    row = [i for i in range(len(p)) if p.gear[i] == gear]
-    return DCPartsDesign(p.take(row), {k: float(ctl[k]) for k in SETTINGS},
-                         float(cand.get("design", {}).get("duration", 0.0)) or None)
+    row = [i for i in range(len(p)) if p.gear[i] == parts.gear]
+    return DCPartsDesign(p.take(row), settings, duration)
 
 
 SETTINGS = ("kp", "ki", "kd", "current_limit_A", "voltage_limit_V")
 
 
+def read_back(req: RequirementsFile, catalog: Catalog, cand: dict):
+    """What robust perturbs, read back from a results.json candidate (a
+    solve whose records are gone): a piezohydraulic (Combo, Variant,
+    SizingResult) triple or a ``DCPartsDesign``."""
+    if cand.get("technology") == "dc_motor":
+        return _dc_read_back(catalog, cand)
+    return sized_designs(req, catalog, [cand])[0]
+
+
 def study_designs(req: RequirementsFile, catalog: Catalog, candidates: list[dict], stages=None) -> list:
     """What ``sizing robust`` perturbs, per candidate: a piezohydraulic
-    (Combo, Variant, SizingResult) triple or a ``DCPartsDesign``. A
-    piezohydraulic design the solve's own records hold (``stages``,
-    ``records.Stages``) is taken from them as sized; any other is read back
-    from its results.json record (``sized_designs``)."""
+    (Combo, Variant, SizingResult) triple or a ``DCPartsDesign``. A design
+    the solve's own records hold (``stages``, ``records.Stages``: the
+    piezohydraulic designs and the DC designs from parts) is taken from
+    them as sized; any other is read back from its results.json record
+    (``read_back``)."""
     by_id = stages.by_id if stages is not None else {}
-    return [dc_parts_design(catalog, c) if c.get("technology") == "dc_motor"
-            else by_id[c["id"]].sized if c["id"] in by_id
-            else sized_designs(req, catalog, [c])[0]
+    dc = stages.dc if stages is not None else {}
+    return [by_id[c["id"]].sized if c["id"] in by_id
+            else dc_parts_design(catalog, dc[c["id"]]) if isinstance(dc.get(c["id"]), DCDesign)
+            else read_back(req, catalog, c)
             for c in candidates]

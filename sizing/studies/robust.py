@@ -130,8 +130,8 @@ def robust(req, catalog, candidates: list[dict], samples: int, seed: int, execut
     """robust.json for ``candidates`` (results.json entries). ``extra_spreads``:
     tolerances added to (and overriding) the requirements' ones, e.g. the
     Bouc-Wen spreads of a fit (``io.fit_spreads``). ``stages``: the solve's
-    records (``SolveOutput.stages``), whose designs are taken as sized
-    instead of being read back from their records."""
+    records (``SolveOutput.stages``), whose piezohydraulic and DC designs
+    are taken as sized instead of being read back from results.json."""
     tols = tolerances_of({**req.tolerance_spreads, **(extra_spreads or {})})
     loads = [c["load_N"] for c in load_cases(req.load)]
     designs = study_designs(req, catalog, candidates, stages)

@@ -46,10 +46,14 @@ import tempfile
 import time
 from pathlib import Path
 
-import numpy as np
-
 if __package__ in (None, ""):      # run as a script: the repository root holds the benchmarks package
     sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+from sizing.threads import single_threaded_blas  # noqa: E402
+
+single_threaded_blas()             # as the command line does, before numpy loads
+
+import numpy as np  # noqa: E402
 
 from benchmarks.crossform.common import write_campaign  # noqa: E402
 from sizing.diagnose import synth  # noqa: E402

@@ -6,18 +6,22 @@ option is checked here (``number_option``): finite, in range, an integer
 where it counts something."""
 from __future__ import annotations
 
-import json
-import math
-import signal
-import sys
-from pathlib import Path
-from typing import List, Optional
+from .threads import single_threaded_blas
 
-import typer
+single_threaded_blas()   # before numpy loads (sizing/threads.py)
 
-from . import __version__, api
-from .errors import RECEIVED_SIGNALS, FitError, InputError, Interrupted, raise_if_interrupted
-from .limits import use_limits
+import json  # noqa: E402
+import math  # noqa: E402
+import signal  # noqa: E402
+import sys  # noqa: E402
+from pathlib import Path  # noqa: E402
+from typing import List, Optional  # noqa: E402
+
+import typer  # noqa: E402
+
+from . import __version__, api  # noqa: E402
+from .errors import RECEIVED_SIGNALS, FitError, InputError, Interrupted, raise_if_interrupted  # noqa: E402
+from .limits import use_limits  # noqa: E402
 
 app = typer.Typer(help="Size smart-material actuators for glide-body control surfaces, "
                        "fit their models to test data and diagnose the sim-to-real gap.",

@@ -42,8 +42,10 @@ class Settings:
 DEFAULT = Settings()
 
 # thresholds of the verdict varied by the benchmark's sensitivity table
+# (form_floor_prior: the combined measure's floor; each channel's floors
+# in the verdict's inputs stay as measured)
 VERDICT_THRESHOLDS = ("gap_factor", "explained", "partial", "residual_factor", "alpha", "noise_match",
-                      "pair_gain", "line_gain", "form_margin")
+                      "pair_gain", "line_gain", "form_margin", "form_floor_prior")
 
 
 def names() -> list[str]:

@@ -3,7 +3,7 @@ floats or arrays (n_cand,), flattened into the float matrix a compiled
 kernel reads column by column."""
 from __future__ import annotations
 
-from dataclasses import fields
+from dataclasses import dataclass, fields
 
 import numpy as np
 
@@ -27,3 +27,18 @@ class ParameterSet:
         data = {f.name: getattr(self, f.name) for f in fields(self)}
         data.update(changes)
         return type(self)(**data)
+
+
+@dataclass
+class StackParameters(ParameterSet):
+    """The fields a stack-driven simulator's parameters begin with: the
+    stacks' stiffness (N/m), d33 (m/V) and Bouc-Wen hysteresis (seed eq.
+    2: alpha in m/V, delta in m/V, beta, gamma and n_bw dimensionless)."""
+
+    k_stacks: object
+    d33: object
+    alpha: object
+    beta: object
+    gamma: object
+    delta: object
+    n_bw: object

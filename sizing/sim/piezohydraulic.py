@@ -32,7 +32,7 @@ import numba
 import numpy as np
 
 from ..errors import SimulationError
-from .params import ParameterSet
+from .params import StackParameters
 from ..physics.bouc_wen import hysteresis_step
 
 # Parameter columns of the matrix handed to the compiled kernel.
@@ -52,22 +52,17 @@ CHANNELS = ("position_m", "pressure_Pa", "wide_position_m", "voltage_V")
 
 
 @dataclass
-class PiezoHydraulicModel(ParameterSet):
-    PARAMS = PARAMS  # the kernel's column order
-    """Parameters of the dynamic model, each a float or an array (n_cand,).
+class PiezoHydraulicModel(StackParameters):
+    """Parameters of the dynamic model, each a float or an array (n_cand,):
+    the stacks' (StackParameters), then the hydraulics and the load.
 
     SI throughout: N/m, m/V, m^2, m^3, Pa, kg, kg/m^3, N, N s/m, m^3/(s Pa),
     s, V/s. Breakaway fields are ratios static/running friction (>= 1).
     ``slew_rate`` <= 0 means unlimited; ``creep_time`` <= 0 means no creep.
     """
 
-    k_stacks: object
-    d33: object
-    alpha: object
-    beta: object
-    gamma: object
-    delta: object
-    n_bw: object
+    PARAMS = PARAMS  # the kernel's column order
+
     wide_area: object
     narrow_area: object
     oil_volume: object

@@ -27,7 +27,7 @@ import numba
 import numpy as np
 
 from ..physics.bouc_wen import hysteresis_step
-from .params import ParameterSet
+from .params import StackParameters
 
 PARAMS = (
     "k_stacks", "d33", "alpha", "beta", "gamma", "delta", "n_bw", "stroke_scale", "voltage", "frequency",
@@ -46,20 +46,13 @@ BISECTION = 36
 
 
 @dataclass
-class PumpModel(ParameterSet):
+class PumpModel(StackParameters):
     """Parameters of the cycle-resolved model, floats or arrays (n_cand,), SI:
     N/m, m/V, V, Hz, m^2, m^3, Pa (gauge), kg, N, N/m (seal friction per
     circumference), N/(m Pa). ``air_fraction``: free air at atmospheric
     pressure; ``wall_compliance``: D / (E t) of the chamber and cylinder, 1/Pa."""
 
     PARAMS = PARAMS
-    k_stacks: object
-    d33: object
-    alpha: object
-    beta: object
-    gamma: object
-    delta: object
-    n_bw: object
     stroke_scale: object
     voltage: object
     frequency: object

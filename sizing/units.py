@@ -58,7 +58,7 @@ KINDS: dict[str, tuple[str, str]] = {
 
 # Broad plausibility range of each kind, SI (temperatures in degC):
 # (low, high) inclusive, on the value itself. Far wider than any real part
-# (catalog validate's per-field RANGES lie inside them, tests/test_bad_input.py
+# (catalog validate's per-field RANGES lie inside them, tests/cli/test_bad_input.py
 # checks it); they stop "1e30 mm" or 1e300 before a model allocates or
 # overflows on it. A kind missing here gets DEFAULT_RANGE.
 DEFAULT_RANGE = (-1e15, 1e15)

@@ -6,7 +6,7 @@ times the screws and drives, make millions of combinations; the static
 screen (``dc_parts.static_screen``) runs only on those no cheaper argument
 rules out. Each argument is a necessary condition of a margin the screen
 computes, so a combination it removes fails that margin in the screen too
-(``tests/test_dc_search.py`` compares with brute force):
+(``tests/engine/test_dc_search.py`` compares with brute force):
 
 1. one part alone (exact): a motor, gear or screw rated below the ambient
    (``temperature``), a winding limit below it (``winding_temperature``), a

@@ -34,10 +34,10 @@ MAX_FEASIBLE_SIMULATED = 24    # designs that pass the screen, verified by simul
 MIN_CLOSEST_SIMULATED = 8      # and at least this many of the closest of those that do not,
 SIMULATED = 32                 # up to this many in all
 # the simulated mean speed over the cycle-averaged one, less 1, lies in this
-# band on the simulated designs (tests/test_pump_engine.py; docs/models.md):
+# band on the simulated designs (tests/engine/test_pump_engine.py; docs/models.md):
 # the averaged model is conservative, for it omits the load ringing on the
 # high-side oil at each valve opening (with a light load they agree within
-# 5 %, tests/test_pump_physics.py)
+# 5 %, tests/physics/test_pump_physics.py)
 AGREEMENT_TOLERANCE = (-0.05, 0.35)
 NOT_SIMULATED = "not simulated: passes the pump screen, dominated by the simulated designs"
 BEST_DEMONSTRATED_POWER_W = 46.0

@@ -14,7 +14,7 @@ plate, radius a, thickness t, D = E t^3 / (12 (1 - nu^2))):
 
 For the oil what counts is the volume the plate sweeps, so the stiffness is
 the force q pi a^2 over the *mean* deflection (volume / pi a^2). Integrating
-w(r) 2 pi r dr over the plate (derivation in tests/test_structure.py):
+w(r) 2 pi r dr over the plate (derivation in tests/physics/test_structure.py):
 
     clamped:            w_mean = y_c / 3             = q a^4 / (192 D)
     simply supported:   w_mean = (7+nu)/(3 (5+nu)) y_c = (7+nu) q a^4 / (192 D (1+nu))

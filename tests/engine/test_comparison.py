@@ -1,0 +1,82 @@
+"""The technology comparison (engine/comparison.py): an infeasible technology
+is compared through its lightest design that misses only one check."""
+import pytest
+
+from sizing.engine.comparison import technology_comparison
+from sizing.io.requirements import load_requirements
+
+from ..conftest import STUDIES
+
+
+def _cand(id_, tech, feasible, margins, mass, rank, stage="simulated"):
+    driver = min(margins, key=margins.get)
+    return {"id": id_, "technology": tech, "feasible": feasible, "margins": margins, "driver": driver,
+            "metrics": {"mass_kg": mass, "cost_usd": 10 * mass}, "rank": rank, "stage": stage}
+
+
+def test_infeasible_side_is_counted_by_its_lightest_one_miss_design():
+    req, _ = load_requirements(STUDIES / "seed-requirements.toml")
+    cands = [
+        _cand("dc", "dc_motor", True, {"speed": 0.1}, 2.0, 1),
+        # smallest miss, but heavy: the "closest" by margin
+        _cand("ph-heavy", "piezohydraulic", False, {"amp": -0.1, "force": 0.2}, 900.0, 2),
+        # misses two checks: never the stand-in
+        _cand("ph-two", "piezohydraulic", False, {"amp": -0.5, "force": -0.1}, 50.0, 3),
+        _cand("ph-light", "piezohydraulic", False, {"amp": -0.8, "force": 0.05}, 150.0, 4),
+    ]
+    out = technology_comparison(req, cands)
+    ph = out["technologies"]["piezohydraulic"]
+    assert ph["best"] == "ph-heavy" and ph["one_miss"]["id"] == "ph-light"
+    # by hand: 150 kg / 2 kg = 75, 1500 USD / 20 USD = 75
+    assert "mass x75" in out["text"] and "cost x75" in out["text"]
+
+
+def test_what_would_flip_each_verdict():
+    """A feasible technology flips when every feasible design misses: the
+    requirement tightened past the largest margin on it (speed +10 % and
+    +25 %: 0.1 m/s -> 0.125 m/s, 25 %). An infeasible one flips when one
+    design's only miss closes: blocked force -4 % (2500 N -> 2400 N) beats
+    stroke -20 % (40 mm -> 32 mm)."""
+    req, _ = load_requirements(STUDIES / "seed-requirements.toml")
+    cands = [
+        _cand("dc-a", "dc_motor", True, {"speed": 0.1, "stroke": 0.5}, 2.0, 1),
+        _cand("dc-b", "dc_motor", True, {"speed": 0.25, "stroke": 0.6}, 3.0, 2),
+        _cand("ph-a", "piezohydraulic", False, {"blocked_force": -0.04, "stroke": 0.2}, 100.0, 3),
+        _cand("ph-b", "piezohydraulic", False, {"stroke": -0.2, "blocked_force": 0.1}, 90.0, 4),
+        _cand("ph-c", "piezohydraulic", False, {"stroke": -0.01, "speed": -0.01}, 80.0, 5),   # two misses
+    ]
+    out = technology_comparison(req, cands)["technologies"]
+    dc, ph = out["dc_motor"]["flip"], out["piezohydraulic"]["flip"]
+    assert dc["what"] == "requirement speed" and dc["to"] == pytest.approx(0.125) and dc["relative_change"] == pytest.approx(0.25)
+    assert ph["what"] == "requirement blocked_force" and ph["to"] == pytest.approx(2400.0) and ph["design"] == "ph-a"
+
+
+def test_the_recommendation_names_the_lighter_feasible_technology():
+    """Both feasible, DC at 2 kg and piezo at 150 kg: choose DC, 75 x lighter;
+    none feasible: no recommendation, only what blocks each."""
+    req, _ = load_requirements(STUDIES / "seed-requirements.toml")
+    cands = [_cand("dc", "dc_motor", True, {"speed": 0.1}, 2.0, 1),
+             _cand("ph", "piezohydraulic", True, {"stroke": 0.2}, 150.0, 2)]
+    text = technology_comparison(req, cands)["recommendation"]
+    assert text.startswith("Choose the DC motor actuator") and "75 x lighter" in text
+    none = [dict(c, feasible=False, margins={"speed": -0.1}, driver="speed") for c in cands]
+    assert technology_comparison(req, none)["recommendation"].startswith("No technology meets")
+
+
+def test_names_are_unique_short_and_stable():
+    """Designs whose short names coincide add the part they differ in (then
+    a hash of their id): unique, at most 32 characters, and the same for a
+    design whatever the others are."""
+    from sizing.engine import names
+    base = {"technology": "dc_motor", "variant": "parts"}
+    a = dict(base, id="dc-a", components={"motor": "allied-mf0127008-48v", "screw": "hiwin-r12-05k4",
+                                          "gear": "belt-2", "drive": "servo-48v-10a"})
+    b = dict(base, id="dc-b", components=dict(a["components"], drive="servo-96v-12a"))
+    c = dict(base, id="dc-c", components=dict(a["components"], screw="thk-bif1605-5"))
+    assert names.unique([a]) == ["DC MF0127008 R12-05K4 belt-2"]
+    got = names.unique([a, b, c])
+    assert len(set(got)) == 3 and all(len(n) <= 32 for n in got)
+    assert got[0].endswith("48v") and got[1].endswith("96v")
+    # the same design gets the same name in a list ordered otherwise
+    assert names.unique([b, a, c]) == [got[1], got[0], got[2]]
+    assert "name" not in a                  # the candidates are read, not written

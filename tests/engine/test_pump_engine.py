@@ -1,0 +1,138 @@
+"""The piezo pump in the seed solve (engine/pump.py, pump_screen.py): the
+designs it verifies, the contract's fields, the bound no design beats, the
+agreement of the two models and the three-technology verdict."""
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from sizing.engine import pump as pump_engine
+from sizing.engine.evaluate import load_cases
+from sizing.engine.pump_candidate import pump_candidate
+from sizing.io.catalog import load_catalog
+from sizing.io.requirements import load_requirements
+
+from ..conftest import STUDIES, run_cli
+
+DESIGN_KEYS = {"pump_frequency", "pump_diameter", "cylinder_diameter", "bias_pressure", "valve", "stack", "n_stacks",
+               "voltage", "fluid", "seal", "amplifier"}
+STATIC_KEYS = {"swept_volume_m3", "output_power_W", "amplifier_power_VA", "mean_speed_m_s"}
+
+
+def _pumps(req, catalog, loads) -> tuple:
+    """The pump stage's outcome and its designs' results.json records."""
+    out = pump_engine.pump_designs(req, catalog, loads)
+    return out, [pump_candidate(req, d) for d in out.designs]
+
+
+@pytest.fixture(scope="module")
+def seed_pumps():
+    req, _ = load_requirements(STUDIES / "seed-requirements.toml")
+    loads = [c["load_N"] for c in load_cases(req.load)]
+    return req, _pumps(req, load_catalog(), loads)
+
+
+def test_the_seed_sizes_and_simulates_at_least_20_pump_designs(seed_pumps):
+    _, (out, candidates) = seed_pumps
+    sims = [c for c in candidates if c["stage"] == "simulated"]
+    assert len(sims) >= 20
+    assert out.counts["simulated"] == len(sims)
+    # every screened row is either simulated or counted by reason
+    assert (sum(out.ruled_out.values()) + len(sims) + out.counts["outside_envelope"]
+            == out.counts["combinations"])
+    for c in sims:
+        assert DESIGN_KEYS <= c["design"].keys(), c["id"]
+        assert STATIC_KEYS <= c["static"].keys(), c["id"]
+        assert all("mean_speed_m_s" in k for k in c["simulated"]["cases"])
+        assert c["static"]["amplifier_power_VA"] > c["static"]["output_power_W"] > 0
+
+
+def test_no_pump_design_delivers_more_oil_than_it_pumps(seed_pumps):
+    _, (_, candidates) = seed_pumps
+    for c in candidates:
+        s, d = c["static"], c["design"]
+        bound = s["swept_volume_m3"] * d["pump_frequency"] / s["cylinder_area_m2"]
+        for case in c["simulated"]["cases"]:
+            assert case["mean_speed_m_s"] <= bound * (1 + 1e-9), c["id"]
+            assert case["delivered_volume_m3"] <= case["pumped_volume_m3"] * (1 + 1e-9), c["id"]
+
+
+def test_cycle_averaged_model_agrees_with_the_simulation_within_the_stated_tolerance(seed_pumps):
+    """docs/models.md: on the verified designs the simulated mean speed lies
+    within AGREEMENT_TOLERANCE of the cycle-averaged one, on the fast side
+    (the averaged model omits the load ringing on the high-side oil)."""
+    _, (_, candidates) = seed_pumps
+    low, high = pump_engine.AGREEMENT_TOLERANCE
+    for c in candidates:
+        for case in c["simulated"]["cases"]:
+            assert low <= case["agreement"] <= high, (c["id"], case["agreement"])
+
+
+def test_an_envelope_rules_pump_designs_out_with_one_line_per_body():
+    req, _ = load_requirements(STUDIES / "seed-requirements.toml")
+    req = req.model_copy(update={"envelope": req.envelope.model_copy(update={"max_mass": 100.0})})
+    loads = [c["load_N"] for c in load_cases(req.load)]
+    out, candidates = _pumps(req, load_catalog(), loads)
+    assert out.records and all(r["reason"] == "envelope" for r in out.records)
+    assert sum(r["designs"] for r in out.records) == out.counts["outside_envelope"] > 0
+    assert all(c["metrics"]["mass_kg"] <= 100.0 for c in candidates)
+
+
+def test_the_speed_margin_is_the_simulated_one(seed_pumps):
+    req, (_, candidates) = seed_pumps
+    for c in candidates:
+        assert c["margins"]["speed"] == pytest.approx(c["simulated"]["speed_m_s"] / req.requirements.speed - 1)
+
+
+def test_design_frequency_stays_below_the_valve_rating_and_resonance(seed_pumps):
+    _, (_, candidates) = seed_pumps
+    cat = load_catalog()
+    for c in candidates:
+        valve = cat.valves[c["design"]["valve"]]
+        assert c["design"]["pump_frequency"] <= valve.max_frequency < c["valve_resonance_Hz"]
+
+
+@pytest.fixture(scope="module")
+def seed_solve(tmp_path_factory):
+    out = tmp_path_factory.mktemp("pump") / "o"
+    code, _, err = run_cli("solve", STUDIES / "seed-requirements.toml", "--out", out, "--quiet")
+    assert code == 0, err
+    return json.loads((out / "results.json").read_text()), (out / "report.html").read_text()
+
+
+def test_the_solve_ranks_three_technologies_and_states_the_pump_power(seed_solve):
+    r, html = seed_solve
+    techs = r["summary"]["comparison"]["technologies"]
+    assert {"piezohydraulic", "dc_motor", "piezo_pump"} <= techs.keys()
+    pp = techs["piezo_pump"]
+    assert pp["best_demonstrated_power_W"] == pump_engine.BEST_DEMONSTRATED_POWER_W
+    loads = [c["load_N"] for c in r["load_cases"]]
+    assert pp["required_output_power_W"] == pytest.approx(max(loads) * r["requirements"]["speed_m_s"])
+    assert "best demonstrated piezo pump" in r["summary"]["comparison"]["recommendation"]
+    assert "piezo pump" in html
+    assert any(c["technology"] == "piezo_pump" for c in r["candidates"])
+    assert all(len(c["name"]) <= 32 for c in r["candidates"])
+    assert "piezo_pump" in r["summary"]["ruled_out_by_technology"]
+
+
+def test_a_catalog_without_valves_sizes_no_pump(tmp_path):
+    from sizing.io.catalog import load_catalog as load
+    cat = load()
+    cat.valves.clear()
+    req, _ = load_requirements(STUDIES / "seed-requirements.toml")
+    out = pump_engine.pump_designs(req, cat, [500.0])
+    assert out.designs == () and out.records == () and out.counts["combinations"] == 0
+
+
+def test_a_diverged_cycle_simulation_is_a_failure_not_a_figure():
+    from sizing.engine.pump import DIVERGED_FACTOR, diverged
+    case = {"load_N": 1210.0, "stroke_m": 0.04, "mean_speed_m_s": 0.1, "delivered_volume_m3": 1e-5,
+            "peak_cylinder_pressure_Pa": 5e6}
+    swept = 0.12                                   # m/s the pump sweeps (swept volume x f / bore)
+    assert diverged([case], swept) == ""
+    # some through-flow from the accumulator is physics; several times the pump is not
+    assert diverged([dict(case, mean_speed_m_s=1.5 * swept)], swept) == ""
+    assert "diverged under 1210 N" in diverged([dict(case, mean_speed_m_s=-2e6)], swept)
+    assert "diverged" in diverged([dict(case, mean_speed_m_s=(DIVERGED_FACTOR + 0.1) * swept)], swept)
+    assert "non-finite" in diverged([case, dict(case, peak_cylinder_pressure_Pa=float("nan"))], swept)

@@ -21,6 +21,8 @@ from sizing.errors import InputError
 from sizing.io.rig import load_rig
 from sizing.sim.signals import nrmse
 
+from ..documented import missing_fields
+
 ROOT = Path(__file__).resolve().parents[2]
 PIEZO = ROOT / "studies/campaigns/piezo-prototype"
 DC = ROOT / "studies/campaigns/dc-motor"
@@ -146,6 +148,7 @@ def test_cli_writes_the_contract(tmp_path):
                            "--out", str(out), "--no-recalibrate"], capture_output=True, text=True)
     assert proc.returncode == 0, proc.stderr
     data = json.loads((out / "diagnosis.json").read_text())
+    assert not missing_fields("diagnosis.json", data)    # every field docs/formats.md documents
     assert set(data["baseline"]["nrmse"]) == {"ramp", "steps"}
     assert data["baseline"]["nrmse_holdout"] == pytest.approx(data["baseline"]["nrmse"]["steps"])
     shares = [w["share"] for w in data["where"]]

@@ -19,6 +19,7 @@ from sizing.io.requirements import DutyTable, load_requirements
 from sizing.physics import geometry
 
 from ..conftest import CATALOGS, STUDIES, run_cli
+from ..documented import missing_fields
 
 CONTRACT_KEYS = {"id", "technology", "components", "stack_params", "static", "simulated", "margins", "feasible", "driver",
                  "pareto", "rank", "metrics"}
@@ -298,6 +299,7 @@ def test_seed_solve_end_to_end(tmp_path, seed_requirements):
     assert {p.name for p in out.iterdir()} == {"results.json", "candidates.csv", "report.html", "catalog", "plotly.min.js"}
     r = json.loads((out / "results.json").read_text())
     assert {"tool_version", "requirements_sha256", "catalog_sha256", "candidates"} <= set(r)
+    assert not missing_fields("results.json", r)          # every field docs/formats.md documents
     assert r["requirements_sha256"] == seed_requirements[1]
     for c in r["candidates"]:
         assert CONTRACT_KEYS <= set(c), c["id"]

@@ -21,6 +21,7 @@ from sizing.studies.stats import wilson
 from sizing.studies.tolerances import Tolerance, factors, perturbed_combo
 
 from ..conftest import CATALOGS, ONE_DESIGN, STUDIES, run_cli, subset_catalog
+from ..documented import missing_fields
 
 # at the default duty (one stroke per second) the amplifier's continuous current
 # needs the most amplifier units; at 0.1 strokes/s the other
@@ -387,6 +388,7 @@ def test_dc_and_piezo_designs_share_robust_json_each_with_its_own_tolerances(tmp
     cands = [_dc_candidate(req, both), nominal[0]]
     out = robust(req, both, cands, samples=40, seed=2, executor=Executor(0), batch=20)
     json.dumps(out, allow_nan=False)
+    assert not missing_fields("robust.json", out)        # every field docs/formats.md documents
     dc, ph = out["designs"]
     assert (dc["technology"], ph["technology"]) == ("dc_motor", "piezohydraulic")
     for d in (dc, ph):

@@ -10,6 +10,7 @@ from sizing.studies.executor import Executor
 from sizing.studies.sweep import limits, parse_vary, point_summary, sweep
 
 from ..conftest import ONE_DESIGN, STUDIES, run_cli, subset_catalog
+from ..documented import missing_fields
 
 FAST = {"max_stacks": 11, "max_simulated": 6, "thermal_compensation": True}
 
@@ -54,6 +55,7 @@ def test_bad_vary_is_an_input_error(seed_data, text, says):
 
 def test_sweep_over_stroke_reproduces_solve_at_each_point(seed_data, small_catalog):
     out = sweep(seed_data, "req.toml", small_catalog, ["stroke=38mm..44mm:2"], Executor(0))
+    assert not missing_fields("sweep.json", out)         # every field docs/formats.md documents
     assert [g["varied"]["stroke"] for g in out["grid"]] == pytest.approx([0.038, 0.044])
     for g in out["grid"]:
         data = dict(seed_data, requirements=dict(seed_data["requirements"], stroke=f"{g['varied']['stroke'] * 1e3:g} mm"))

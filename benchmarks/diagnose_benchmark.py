@@ -405,24 +405,36 @@ def misses(rows) -> list[str]:
 
 
 def summed_sensitivity(runs) -> list[dict]:
-    """The sensitivity rows of several runs of one generator, added up."""
-    rows = [dict(r) for r in runs[0]["summary"]["sensitivity_rows"]]
-    for run in runs[1:]:
-        for total, r in zip(rows, run["summary"]["sensitivity_rows"]):
-            for k in ("right", "null", "outside", "n_effect"):
+    """The sensitivity rows of several runs of one generator, added up by
+    (threshold, factor). A threshold that only some runs varied (it was
+    added to the table later) is summed over those runs, beside the
+    defaults summed over the same runs (``base``), and says how many
+    (``sets``)."""
+    def key(r):
+        return r["threshold"], r["factor"]
+
+    counts = ("right", "null", "outside", "n_effect")
+    defaults = [run["summary"]["sensitivity_rows"][0] for run in runs]
+    rows = {}
+    for run, base in zip(runs, defaults):
+        for r in run["summary"]["sensitivity_rows"]:
+            total = rows.setdefault(key(r), dict(r, sets=0, base={k: 0 for k in counts}, **{k: 0 for k in counts}))
+            total["sets"] += 1
+            for k in counts:
                 total[k] += r[k]
-    return rows
+                total["base"][k] += base[k]
+    return list(rows.values())
 
 
 def compact_sensitivity(rows) -> str:
     """Sensitivity rows as one line per threshold: right named, null cases
     named and outside effects explained at each factor, "=" where nothing
-    moves from the defaults."""
+    moves from the defaults of the same sets."""
     base = rows[0]
     factors = sorted({r["factor"] for r in rows[1:]})
 
     def cell(r):
-        same = all(r[k] == base[k] for k in ("right", "null", "outside"))
+        same = all(r[k] == r["base"][k] for k in ("right", "null", "outside"))
         return "=" if same else f"{r['right']}/{r['n_effect']}, {r['null']}, {r['outside']}"
 
     lines = ["| threshold | default | " + " | ".join(f"x {f:g}" for f in factors) + " |",
@@ -431,7 +443,11 @@ def compact_sensitivity(rows) -> str:
              f"{base['outside']} outside explained |" + " |" * (len(factors) - 1)]
     for name in dict.fromkeys(r["threshold"] for r in rows[1:]):
         mine = {r["factor"]: r for r in rows if r["threshold"] == name}
-        lines.append(f"| {name} | {mine[factors[0]]['default']:g} | " + " | ".join(cell(mine[f]) for f in factors) + " |")
+        sets = mine[factors[0]]["sets"]
+        label = name if sets == base["sets"] else f"{name} ({sets} of {base['sets']} sets; against their defaults, " \
+            f"{mine[factors[0]]['base']['right']}/{mine[factors[0]]['base']['n_effect']}, " \
+            f"{mine[factors[0]]['base']['null']}, {mine[factors[0]]['base']['outside']})"
+        lines.append(f"| {label} | {mine[factors[0]]['default']:g} | " + " | ".join(cell(mine[f]) for f in factors) + " |")
     return "\n".join(lines)
 
 

@@ -21,7 +21,7 @@ class Settings:
     explained: float = 0.75        # share of the gap energy above the floor an explaining effect removes
     partial: float = 0.3           # ... a partly explaining effect removes
     residual_factor: float = 2.5   # an explaining effect leaves at most this x the floor
-    alpha: float = 0.05            # one-sided level of the block-bootstrap separation tests
+    alpha: float = 0.05            # level of the block-bootstrap tests (two-sided between ranked candidates)
     noise_match: float = 1.2       # within the band, a candidate leaving <= this x the noise is judged on it
     pair_gain: float = 0.25        # a pair removes this share of what its single leaves above the floor...
     line_gain: float = 0.5         # ... or this share of a spectral line its single leaves

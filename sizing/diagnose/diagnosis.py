@@ -152,7 +152,7 @@ def diagnose_runs(kind: str, rig, runs, holdout: list[str], recalibrate: list[st
     floor = noise_floor(bench)
     floor_ho = float(np.mean(floor[bench.holdout]))
     channels = floors_by_channel(bench, nominal, floor_ho, form_floor(bench), settings)
-    form_ho = None      # the combined measure keeps the prior model-form floor (docs/diagnosis.md)
+    form_ho = None      # the combined measure keeps the prior model-form floor (docs/diagnosis-settings.md)
     fits = attribution.attribute(bench, base_ho, floor_ho, seed=seed, pairs=pairs, form_floor=form_ho, settings=settings)
     base_blocks = judge.block_energy(bench, [nominal[i] for i in bench.holdout], bench.holdout, settings=settings)
     shortest = min((float(bench.runs[i].t[-1] - bench.runs[i].t[0]) for i in bench.train), default=None)

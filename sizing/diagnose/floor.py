@@ -7,7 +7,7 @@ measurement (second differences, robust, where the output is at rest:
 when the logged voltage is logged again with its own noise and treated
 the same way (``noise_floor``).
 Model-form floor of the position: the prior, of the span
-(settings.form_floor_prior; rationale in docs/diagnosis.md); of another
+(settings.form_floor_prior; rationale in docs/diagnosis-settings.md); of another
 logged channel (the current): estimated from the campaign
 (``form_floor``). The floor an effect is judged against is
 floor = sqrt(noise^2 + form^2) (``total_floor``).

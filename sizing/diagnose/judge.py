@@ -42,7 +42,7 @@ named from it.
 Parsimony (``pick``, ``beyond_form``): a pair is taken over its single
 only when its partner removes more than the other partners of the same
 single take of the single's own form error.
-The thresholds are declared in settings.py (rationale: docs/diagnosis.md).
+The thresholds are declared in settings.py (rationale: docs/diagnosis-settings.md).
 Significance (separation test): moving-block bootstrap over the holdout
 runs cut into BLOCK_S blocks; the statistic is the difference of the
 weighted squared residual energy of two candidates; B = N_BOOT

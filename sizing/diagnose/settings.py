@@ -2,9 +2,9 @@
 
 Every rule of the verdict (judge.py), of the parsimony test and of the
 floors (floor.py) reads its threshold from one ``Settings`` object; the
-rationale of each value is in docs/diagnosis.md, and the cross-form
+rationale of each value is in docs/diagnosis-settings.md, and the cross-form
 benchmark reports how its verdicts move when each is varied
-(``benchmarks/diagnose_benchmark.py --crossform --sensitivity``), so that
+(``benchmarks/diagnose_benchmark.py --set NAME``, its sensitivity table), so that
 no single threshold decides the benchmark. ``DEFAULT`` is what
 ``sizing diagnose`` uses.
 """

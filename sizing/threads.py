@@ -1,18 +1,28 @@
-"""The BLAS library's threads: one each, set by the entry points (the
-command line, the benchmarks) before numpy is loaded.
+"""The BLAS library's threads: one each, for the command line, the
+benchmarks and every call into ``sizing.api`` from Python.
 
 The package's linear algebra is on small or thin matrices (a few
 parameters by thousands of samples); its parallel work is the numba
 simulators' candidates. OpenBLAS threads on top of those only contend for
 the cores: on a loaded 2-core machine a 12 000-sample correlation took
 0.03 s single-threaded and up to 6.5 s with OpenBLAS's threads spinning.
-A user's own setting of these variables is kept.
+
+Two mechanisms, because environment variables act only before numpy is
+first imported: the command line sets them first thing
+(``single_threaded_blas``), and each ``sizing.api`` call runs under
+threadpoolctl's limit (``one_blas_thread``), which acts on the loaded
+library at any time and is undone when the call returns, so a Python user's
+own numpy work keeps its threads. A user's own setting of these variables
+(made before ``sizing`` is imported) is kept by both.
 """
 from __future__ import annotations
 
+import functools
 import os
 
 BLAS_THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
+# what the user asked for before sizing was imported (None: nothing)
+USER_SETTING = {name: os.environ.get(name) for name in BLAS_THREAD_VARIABLES}
 
 
 def single_threaded_blas() -> None:
@@ -20,3 +30,21 @@ def single_threaded_blas() -> None:
     only before numpy is first imported)."""
     for name in BLAS_THREAD_VARIABLES:
         os.environ.setdefault(name, "1")
+
+
+def user_chose_threads() -> bool:
+    return any(value is not None for value in USER_SETTING.values())
+
+
+def one_blas_thread(func):
+    """Run ``func`` with the BLAS libraries limited to one thread (restored
+    afterwards), unless the user set a thread count in the environment."""
+    @functools.wraps(func)
+    def limited(*args, **kwargs):
+        if user_chose_threads():
+            return func(*args, **kwargs)
+        from threadpoolctl import threadpool_limits
+
+        with threadpool_limits(limits=1, user_api="blas"):
+            return func(*args, **kwargs)
+    return limited

@@ -21,6 +21,14 @@ from .output import PLOTLY_FILE, plotly_js, write
 from .solution import SOLVE_OUTPUTS, SolveResult, results_json, run_solve, solve
 from .studies import ROBUST_OUTPUTS, SWEEP_OUTPUTS, StudyResult, robust, run_robust, run_sweep, sweep
 
+from ..threads import one_blas_thread
+
+# every computing entry point runs with one BLAS thread (sizing/threads.py)
+(catalog_add, catalog_import_mgdb, diagnose, diagnose_check, evaluate, fit_dc_motor, fit_hysteresis, robust,
+ run_diagnose, run_robust, run_solve, run_sweep, solve, sweep) = map(one_blas_thread, (
+    catalog_add, catalog_import_mgdb, diagnose, diagnose_check, evaluate, fit_dc_motor, fit_hysteresis, robust,
+    run_diagnose, run_robust, run_solve, run_sweep, solve, sweep))
+
 __all__ = [
     "CatalogEntry", "CatalogUpdate", "DIAGNOSE_OUTPUTS", "DiagnoseResult", "EvaluateResult", "FitResult",
     "PLOTLY_FILE", "ROBUST_OUTPUTS", "SOLVE_OUTPUTS", "SWEEP_OUTPUTS", "SolveResult", "StudyResult",

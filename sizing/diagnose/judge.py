@@ -43,10 +43,13 @@ Parsimony (``pick``, ``beyond_form``): a pair is taken over its single
 only when its partner removes more than the other partners of the same
 single take of the single's own form error.
 The thresholds are declared in settings.py (rationale: docs/diagnosis-settings.md).
-Significance (separation test): moving-block bootstrap over the holdout
-runs cut into BLOCK_S blocks; the statistic is the difference of the
-weighted squared residual energy of two candidates; B = N_BOOT
-resamples (seeded); "significant" when fewer than ALPHA of the
+Significance (separation test): a bootstrap of fixed, non-overlapping
+blocks (Carlstein's non-overlapping block bootstrap, not a moving-block
+one): the holdout runs are cut into consecutive ``settings.block_s``
+blocks, each block's energy is one observation, and the blocks are drawn
+with replacement. The statistic is the difference of the weighted squared
+residual energy of two candidates, paired block by block; B =
+``settings.n_boot`` resamples (seeded); "significant" when fewer than ALPHA of the
 resampled differences favour the other candidate. Against the baseline the
 test is one-sided (an effect is asked to lower the gap); between two
 candidates ranked on the same holdout runs it is two-sided

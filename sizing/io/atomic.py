@@ -19,6 +19,13 @@ and never one of the command's inputs. Every refusal is an ``InputError``
 naming the option, so the CLI exits 2 with one line. Temporary files and
 folders are removed on any failure, KeyboardInterrupt included.
 
+Durable as well as atomic: every file is flushed to disk (``os.fsync``)
+before it is renamed into place, and the folders that hold the renamed
+entries are fsynced after the swap, so a power cut leaves either the old
+outputs or the new ones, never an empty or truncated file (on file systems
+that honour fsync; a folder that cannot be opened for it, as on some
+network mounts, is skipped).
+
     check_folder(out, ["results.json", "report.html", "catalog/"], inputs=[req])
     ...work...
     write_folder(out, {"results.json": text, "catalog/stacks.toml": text2}, inputs=[req])
@@ -170,7 +177,29 @@ def _write(path: Path, content: Content) -> None:
     path.parent.mkdir(parents=True, exist_ok=True)
     with open(path, "wb") as handle:
         handle.write(_render(content))
+        handle.flush()
+        os.fsync(handle.fileno())
     os.chmod(path, 0o666 & ~_umask())
+
+
+def fsync_folder(folder: Path) -> None:
+    """Flush a folder's entries (names created, renamed or removed) to disk."""
+    try:
+        fd = os.open(folder, os.O_RDONLY)
+    except OSError:
+        return
+    try:
+        os.fsync(fd)
+    except OSError:
+        pass            # a file system that cannot fsync a folder: nothing more to do
+    finally:
+        os.close(fd)
+
+
+def _fsync_tree(root: Path) -> None:
+    """Every folder below and including ``root`` (its files were fsynced as written)."""
+    for folder, _, _ in os.walk(root):
+        fsync_folder(Path(folder))
 
 
 def _carry_over(old: Path, new: Path, outputs: set[str], option: str) -> None:
@@ -222,6 +251,7 @@ def _write_folder(dest: Path, files: Mapping[str, Content], option: str) -> Path
         if dest.is_dir():
             _carry_over(dest, tmp, {name.partition("/")[0] for name in files}, option)
             old = Path(tempfile.mkdtemp(dir=parent, prefix=f".{dest.name}.old-"))
+            _fsync_tree(tmp)
             raise_if_interrupted()      # a signal swallowed on the way: write nothing
             with signals_deferred():
                 os.replace(dest, old / dest.name)
@@ -230,10 +260,13 @@ def _write_folder(dest: Path, files: Mapping[str, Content], option: str) -> Path
                 except BaseException:
                     os.replace(old / dest.name, dest)
                     raise
+                fsync_folder(parent)
         else:
+            _fsync_tree(tmp)
             raise_if_interrupted()      # a signal swallowed on the way: write nothing
             with signals_deferred():
                 os.replace(tmp, dest)
+                fsync_folder(parent)
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
         if old is not None:
@@ -253,6 +286,7 @@ def write_files(files: Mapping, inputs: Iterable = (), option: str = "--out") ->
 def _write_files(paths: list[Path], contents: list) -> None:
     temps: dict[Path, Path] = {}
     backups: dict[Path, Path] = {}
+    backup_folders: list[Path] = []
     done: list[Path] = []
     try:
         for path, content in zip(paths, contents):
@@ -262,7 +296,9 @@ def _write_files(paths: list[Path], contents: list) -> None:
             temps[path] = Path(name)
             _write(temps[path], content)
             if path.exists():
-                backups[path] = Path(tempfile.mktemp(dir=path.parent, prefix=f".{path.name}.", suffix=".old"))
+                # a private folder of its own: no other process can take the backup's name
+                backup_folders.append(Path(tempfile.mkdtemp(dir=path.parent, prefix=f".{path.name}.", suffix=".old")))
+                backups[path] = backup_folders[-1] / path.name
                 _link_or_copy(path, backups[path])
         raise_if_interrupted()
         with signals_deferred():
@@ -271,6 +307,8 @@ def _write_files(paths: list[Path], contents: list) -> None:
                     os.replace(temps[path], path)
                     del temps[path]
                     done.append(path)
+                for folder in {path.absolute().parent for path in paths}:
+                    fsync_folder(folder)
             except BaseException:
                 for path in done:
                     if path in backups:
@@ -281,6 +319,8 @@ def _write_files(paths: list[Path], contents: list) -> None:
     finally:
         for leftover in list(temps.values()) + list(backups.values()):
             leftover.unlink(missing_ok=True)
+        for folder in backup_folders:
+            shutil.rmtree(folder, ignore_errors=True)
 
 
 def store_cache(target: Path, content: bytes, keep: int) -> None:
@@ -293,6 +333,8 @@ def store_cache(target: Path, content: bytes, keep: int) -> None:
         fd, tmp = tempfile.mkstemp(dir=target.parent, suffix=".tmp")
         with os.fdopen(fd, "wb") as handle:
             handle.write(content)
+            handle.flush()
+            os.fsync(handle.fileno())
         os.replace(tmp, target)
         tmp = None
         kept = sorted(target.parent.glob(f"*{target.suffix}"), key=lambda f: f.stat().st_mtime, reverse=True)

@@ -18,13 +18,13 @@ from __future__ import annotations
 
 import csv
 import datetime as dt
-import json
 import re
 from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import InputError
 from .catalog import DEFAULT_CATALOG, KINDS, Entry, load_catalog
+from . import toml_text
 from .schema import parse_model
 
 # "name [unit]" or "name (unit)"; the unit may hold parentheses itself, as the
@@ -196,32 +196,20 @@ def parse_sheet(csv_path: str | Path, model: type[Entry], array: str) -> list[tu
 
 # --- TOML -----------------------------------------------------------------
 
-def _toml_value(value) -> str:
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, (int, float)):
-        return repr(value)
-    if isinstance(value, dt.date):
-        return value.isoformat()
-    if isinstance(value, (list, tuple)):
-        return "[" + ", ".join(_toml_value(v) for v in value) + "]"
-    return json.dumps(str(value), ensure_ascii=False)
-
-
 def entry_toml(array: str, raw: dict) -> str:
     """One ``[[array]]`` entry as written in the catalog files."""
-    lines = [f"[[{array}]]"]
+    lines = [f"[[{toml_text.table_name(array)}]]"]
     tables = {k: v for k, v in raw.items() if isinstance(v, dict)}
     first = [k for k in PROVENANCE[:5] if k in raw]
     rest = [k for k in raw if k not in first and k not in tables and k != "notes"]
     for key in first + rest + (["notes"] if "notes" in raw else []):
-        lines.append(f"{key} = {_toml_value(raw[key])}")
+        lines.append(toml_text.line(key, raw[key]))
     for name, table in tables.items():
         if name == "status":
             continue
-        lines += ["", f"[{array}.{name}]"] + [f"{k} = {_toml_value(v)}" for k, v in table.items()]
+        lines += ["", f"[{toml_text.table_name(array, name)}]"] + [toml_text.line(k, v) for k, v in table.items()]
     if raw.get("status"):
-        lines += ["", f"[{array}.status]"] + [f"{k} = {_toml_value(v)}" for k, v in raw["status"].items()]
+        lines += ["", f"[{toml_text.table_name(array, 'status')}]"] + [toml_text.line(k, v) for k, v in raw["status"].items()]
     return "\n".join(lines) + "\n"
 
 

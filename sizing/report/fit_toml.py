@@ -4,29 +4,18 @@ from __future__ import annotations
 
 import math
 
+from ..io import toml_text
+
 
 def _value(v) -> str:
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    if isinstance(v, int):
-        return str(v)
-    if isinstance(v, float):
-        if math.isnan(v):
-            return "nan"
-        if math.isinf(v):
-            return "inf" if v > 0 else "-inf"
-        return repr(float(f"{v:.6g}"))
-    if isinstance(v, str):
-        return '"' + v.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n") + '"'
+    """A value as written in a fit file: floats to six significant digits."""
+    if hasattr(v, "item") and not isinstance(v, str):
+        v = v.item()
+    if isinstance(v, float) and math.isfinite(v):
+        v = float(f"{v:.6g}")
     if isinstance(v, (list, tuple)):
         return "[" + ", ".join(_value(x) for x in v) + "]"
-    if hasattr(v, "item"):
-        return _value(v.item())
-    raise TypeError(f"cannot write {type(v).__name__} to TOML")
-
-
-def _key(k: str) -> str:
-    return k if k and all(c.isalnum() or c in "_-" for c in k) else _value(str(k))
+    return toml_text.value(v)
 
 
 def render_toml(tables: dict, comments: dict | None = None) -> str:
@@ -40,11 +29,11 @@ def render_toml(tables: dict, comments: dict | None = None) -> str:
         subs, body = [], []
         for key, val in table.items():
             if isinstance(val, dict):
-                subs.append((f"{name}.{_key(key)}", val))
+                subs.append((f"{name}.{toml_text.key(key)}", val))
             elif val is not None:
-                body.append(f"{_key(key)} = {_value(val)}")
+                body.append(f"{toml_text.key(key)} = {_value(val)}")
         if body or not subs:
-            lines.append(f"[{name}]" + (f"  # {comments[name]}" if name in comments else ""))
+            lines.append(f"[{name}]" + (f"  {toml_text.comment(comments[name])}" if name in comments else ""))
             lines.extend(body + [""])
         for sub_name, sub in subs:
             emit(sub_name, sub)

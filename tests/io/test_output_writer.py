@@ -207,3 +207,55 @@ def test_a_swallowed_signal_still_stops_the_write(tmp_path):
     finally:
         RECEIVED_SIGNALS.clear()
     assert not (tmp_path / "out").exists() and not list(tmp_path.iterdir())
+
+
+def _record_durability(monkeypatch):
+    """Log every fsync (by what it flushed) and every rename, in order."""
+    import sizing.io.atomic as atomic
+    events = []
+    real_fsync, real_replace = os.fsync, os.replace
+
+    def fsync(fd):
+        events.append(("fsync", os.readlink(f"/proc/self/fd/{fd}")))
+        return real_fsync(fd)
+
+    def replace(src, dst):
+        events.append(("replace", str(src), str(dst)))
+        return real_replace(src, dst)
+    monkeypatch.setattr(atomic.os, "fsync", fsync)
+    monkeypatch.setattr(atomic.os, "replace", replace)
+    return events
+
+
+def test_a_folder_is_fsynced_before_and_after_its_swap(tmp_path, monkeypatch):
+    from sizing.io.atomic import write_folder
+    dest = tmp_path / "out"
+    write_folder(dest, {"a.txt": "old"})
+    events = _record_durability(monkeypatch)
+    write_folder(dest, {"a.txt": "new", "sub/b.txt": "b"})
+    swap = next(i for i, e in enumerate(events) if e[0] == "replace" and e[2] == str(dest))
+    flushed_before = {e[1] for e in events[:swap] if e[0] == "fsync"}
+    new = events[swap][1]
+    assert {f"{new}/a.txt", f"{new}/sub/b.txt", new, f"{new}/sub"} <= flushed_before   # files, then their folders
+    assert ("fsync", str(tmp_path)) in events[swap:]                                   # the renames themselves
+    assert (dest / "a.txt").read_text() == "new"
+
+
+def test_loose_files_are_fsynced_before_and_after_their_rename(tmp_path, monkeypatch):
+    from sizing.io.atomic import write_files
+    target = tmp_path / "fit.toml"
+    target.write_text("old")
+    events = _record_durability(monkeypatch)
+    write_files({target: "new"})
+    rename = next(i for i, e in enumerate(events) if e[0] == "replace" and e[2] == str(target))
+    assert any(e[0] == "fsync" and e[1] == events[rename][1] for e in events[:rename])
+    assert ("fsync", str(tmp_path)) in events[rename:]
+    assert target.read_text() == "new" and [p.name for p in tmp_path.iterdir()] == ["fit.toml"]   # no backup left
+
+
+def test_no_temporary_name_is_taken_without_creating_it():
+    """``tempfile.mktemp`` hands out a name another process can take first."""
+    import inspect
+
+    import sizing.io.atomic as atomic
+    assert "mktemp(" not in inspect.getsource(atomic).replace("mkstemp(", "").replace("mkdtemp(", "")

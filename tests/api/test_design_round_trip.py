@@ -29,9 +29,21 @@ def _close(a, b) -> bool:
     return abs(a - b) <= TOLERANCE * max(1.0, abs(a))
 
 
-def _round_trip(study: str, tmp_path: Path) -> list[str]:
+@pytest.fixture(scope="module")
+def fast_solves() -> dict:
+    """The seed solves with --fast (no compliance: the design blocks are the same)."""
+    return {}
+
+
+def _solve(study: str, cache: dict) -> dict:
+    if study not in cache:
+        cache[study] = api.run_solve(REPO / "studies" / study, fast=True).results
+    return cache[study]
+
+
+def _round_trip(study: str, tmp_path: Path, cache: dict) -> list[str]:
     requirements = REPO / "studies" / study
-    results = api.run_solve(requirements, fast=True).results
+    results = _solve(study, cache)
     cands = [c for c in results["candidates"] if c["technology"] in TECHNOLOGIES and "design" in c]
     assert len(cands) > 50
     paths = []
@@ -53,17 +65,25 @@ def _round_trip(study: str, tmp_path: Path) -> list[str]:
 
 
 @pytest.mark.parametrize("study", ["seed-requirements.toml", "seed-requirements-low-duty.toml"])
-def test_every_ranked_design_evaluates_to_itself(study, tmp_path):
-    assert _round_trip(study, tmp_path) == []
+def test_every_ranked_design_evaluates_to_itself(study, tmp_path, fast_solves):
+    assert _round_trip(study, tmp_path, fast_solves) == []
 
 
-def test_evaluate_carries_the_amplifier_units_and_ramp(tmp_path):
+def test_fast_solve_states_no_compliance(fast_solves):
+    """solve --fast: the nominal recommendation, every compliance null."""
+    comp = _solve("seed-requirements.toml", fast_solves)["summary"]["comparison"]
+    assert all(t["compliance"] is None for t in comp["technologies"].values())
+    assert comp["recommended"]["compliance"] is None
+    assert comp["recommended"]["id"] in {t["best"] for t in comp["technologies"].values()}
+
+
+def test_evaluate_carries_the_amplifier_units_and_ramp(tmp_path, fast_solves):
     """The best piezohydraulic design of the seed: ``sizing evaluate`` on its
     design block (no requirements) gives the solve's mass and ramp, where
     one amplifier unit would give a lighter actuator and a ramp many times
     longer; with --requirements the JSON adds the margins and the verdict."""
     requirements = REPO / "studies" / "seed-requirements.toml"
-    results = api.run_solve(requirements, fast=True).results
+    results = _solve("seed-requirements.toml", fast_solves)
     best_id = results["summary"]["comparison"]["technologies"]["piezohydraulic"]["best"]
     best = next(c for c in results["candidates"] if c["id"] == best_id)
     assert best["design"]["amplifier_units"] > 1

@@ -97,9 +97,9 @@ def knife_edge_text(comparison: dict) -> str:
     rec = comparison.get("recommended") or {}
     entries = [(rec.get("name"), rec.get("knife_edges"))]
     entries += [(t.get("name"), t.get("knife_edges")) for t in comparison.get("technologies", {}).values()]
-    parts, seen = [], set()
+    parts, named = [], set()
     for name, edges in entries:
-        if edges and name not in seen:
-            seen.add(name)
+        if edges and name not in named:
+            named.add(name)
             parts.append(f"{name}: " + ", ".join(f"{k} {v:+.2%}" for k, v in edges.items()))
     return "knife edges (checks met by less than 1 %): " + "; ".join(parts) if parts else ""

@@ -193,9 +193,9 @@ def _sentence(techs, req, rec, chosen, nominal, study: Study) -> str:
     pick = chosen or nominal
     clause = f"; it complies in {_p(rec['compliance'])} of samples under tolerance"
     if chosen is None:
-        clause = (f"; no design meets min_compliance {study.target:.0%}: of the {len(rec['examined'])} lightest examined "
-                  f"none complies in that share of samples under tolerance, and this one complies in "
-                  f"{_p(rec['compliance'])}")
+        clause = (f"; no design meets min_compliance {study.target:.0%}: under tolerance this one complies in "
+                  f"{_p(rec['compliance'])} of samples, and none of the {len(rec['examined'])} lightest examined "
+                  f"reaches {study.target:.0%}")
     elif "nominal_lightest" in rec:
         n = rec["nominal_lightest"]
         clause += (f" (min_compliance {study.target:.0%}); the nominal lightest, {n['name']}, complies in only "

@@ -76,6 +76,20 @@ def test_policy_picks_a_heavier_design_that_complies(seed_solve, tmp_path):
     assert rec["name"] in comp["recommendation"] and nominal["name"] in comp["recommendation"]
 
 
+def test_report_and_terminal_flag_knife_edges(seed_solve):
+    """The seed's nominal answer binds on temperature at +0.0 %: the terminal
+    line and the report's answer section both name it, with the probability."""
+    from sizing.report.html import render
+    from sizing.report.text import knife_edge_text
+    comp = seed_solve.results["summary"]["comparison"]
+    rec = comp["recommended"]
+    assert "temperature" in rec["knife_edges"]
+    line = knife_edge_text(comp)
+    assert line.startswith("knife edges") and rec["name"] in line and "temperature +0.00%" in line
+    page = render(seed_solve.results, seed_solve.traces)
+    assert "knife edge" in page and f"of {rec['compliance']['samples']} samples under tolerance" in page
+
+
 def test_knife_edges_are_the_margins_under_one_percent():
     cand = {"margins": {"a": 0.0, "b": 0.0099, "c": 0.01, "d": -0.2, "e": None, "f": float("inf")}}
     assert compliance.knife_edges(cand) == {"a": 0.0, "b": 0.0099}

@@ -141,7 +141,9 @@ def solve(requirements: Path = typer.Argument(..., help="requirements.toml (docs
         if knife:
             typer.echo(knife)
         typer.echo(f"{out}/report.html, results.json, candidates.csv written "
-                   f"({results['runtime_s']:.1f} s)")
+                   f"({results['runtime_s']:.1f} s"
+                   + (f", and {results['compliance_s']:.1f} s for the probability of compliance"
+                      if results.get("compliance_s") is not None else "") + ")")
 
 
 def _solve(requirements, out, catalog, baseline, quiet, detail="summary", robust=None, fast=False):

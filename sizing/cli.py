@@ -136,8 +136,7 @@ def solve(requirements: Path = typer.Argument(..., help="requirements.toml (docs
             typer.echo(results["summary"]["comparison"]["text"])
         if results["summary"].get("comparison", {}).get("recommendation"):
             typer.echo(results["summary"]["comparison"]["recommendation"])
-        from .report.text import knife_edge_text
-        knife = knife_edge_text(results["summary"].get("comparison", {}))
+        knife = results.knife_edges()
         if knife:
             typer.echo(knife)
         typer.echo(f"{out}/report.html, results.json, candidates.csv written "

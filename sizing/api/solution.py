@@ -31,6 +31,11 @@ class SolveResult(Payload):
     def _payload(self) -> dict:
         return self.results
 
+    def knife_edges(self) -> str:
+        """The terminal line of the checks met by less than 1 % ("" when none)."""
+        from ..report.text import knife_edge_text
+        return knife_edge_text(self.results["summary"].get("comparison", {}))
+
     def files(self) -> dict:
         """results.json, candidates.csv, report.html, plotly.js and the
         catalog snapshot a later ``--baseline`` diffs against."""

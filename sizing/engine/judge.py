@@ -20,8 +20,6 @@ as a solved one would be:
 """
 from __future__ import annotations
 
-from dataclasses import replace
-
 import numpy as np
 
 from ..errors import InputError
@@ -101,30 +99,28 @@ def _triple(req, catalog: Catalog, design: PiezoDesignFile, file: str) -> tuple:
 
 
 def _dc_actuator(req, catalog: Catalog, design: DCDesignFile, file: str, loads) -> dict:
-    from .dc_candidates import _actuator_design
+    from .dc_candidates import actuator_design
     act = lookup(catalog, catalog.dc_actuators, design.actuator, file, "actuator")
-    d = _actuator_design(req, act, loads)
+    d = actuator_design(req, act, loads)
     return {"margins": dict(d.margins), "metrics": dict(d.metrics)}
 
 
 def _dc_parts(req, catalog: Catalog, design: DCDesignFile, file: str, loads) -> dict:
     from .dc_parts import metrics, static_screen
     from .dc_sizing import dc_parts_designs, verify_parts
-    from .sized import SETTINGS, DCParts, _dc_design
+    from .records import DCParts
+    from .sized import SETTINGS, parts_catalog, parts_design
     parts = DCParts(*(lookup(catalog, getattr(catalog, k + "s"), getattr(design, k), file, k).id
                       if getattr(design, k) is not None else None for k in ("motor", "screw", "gear", "drive")))
     if design.controller is None:
-        one = replace(catalog, motors={parts.motor: catalog.motors[parts.motor]},
-                      screws={parts.screw: catalog.screws[parts.screw]},
-                      gears={} if parts.gear is None else {parts.gear: catalog.gears[parts.gear]},
-                      drives={parts.drive: catalog.drives[parts.drive]})
-        found = dc_parts_designs(req, one, loads, duration=design.duration, exhaustive=True).designs
+        found = dc_parts_designs(req, parts_catalog(catalog, parts), loads, duration=design.duration,
+                                 exhaustive=True).designs
         d = next(x for x in found if x.parts.gear == parts.gear)
         return {"margins": dict(d.margins), "metrics": dict(d.metrics)}
     missing = [k for k in SETTINGS if k not in design.controller]
     if missing:
         raise InputError(file, "controller", f"expected {', '.join(SETTINGS)}; missing {', '.join(missing)}")
-    one = _dc_design(catalog, parts, {k: float(design.controller[k]) for k in SETTINGS}, design.duration)
+    one = parts_design(catalog, parts, {k: float(design.controller[k]) for k in SETTINGS}, design.duration)
     settings = {k: np.full(1, v) for k, v in one.settings.items()}
     checked = verify_parts(req, one.parts, loads, settings, duration=design.duration)[0]
     static = static_screen(one.parts, req, loads, settings=settings)[1]

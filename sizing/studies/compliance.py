@@ -65,7 +65,7 @@ class Study:
     """The sequential estimates of one solve, kept per design so a design
     examined by the policy and then stated continues its own samples."""
 
-    def __init__(self, req, catalog, candidates: list[dict], stages=None):
+    def __init__(self, req, catalog, stages=None):
         self.req, self.catalog, self.stages = req, catalog, stages
         self.tols = tolerances_of(req.tolerance_spreads)
         self.loads = [c["load_N"] for c in load_cases(req.load)]
@@ -116,7 +116,7 @@ def attach(req, catalog, results: dict, stages=None) -> None:
     comp = results["summary"]["comparison"]
     techs, cands = comp["technologies"], results["candidates"]
     by_id = {c["id"]: c for c in cands}
-    study = Study(req, catalog, cands, stages)
+    study = Study(req, catalog, stages)
     nominal = _nominal(techs, by_id, req)
     chosen, examined = _policy(study, cands, nominal, req)
     for t in techs.values():

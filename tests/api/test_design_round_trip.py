@@ -103,3 +103,14 @@ def test_evaluate_carries_the_amplifier_units_and_ramp(tmp_path, fast_solves):
     assert lone["design"]["amplifier_units"] == 1
     assert lone["metrics"]["mass_kg"] < best["metrics"]["mass_kg"] - 0.9 * best["design"]["amplifier_units"]
     assert lone["design"]["ramp_time_s"] > 3 * best["design"]["ramp_time"]
+
+
+def test_evaluate_requirements_bad_input_exits_2(tmp_path):
+    """A design judged against requirements needs every part; a missing
+    requirements file is named. One line each, exit 2."""
+    design = tmp_path / "design.toml"
+    design.write_text('technology = "piezohydraulic"\nstack = "pi-p-056.90"\nn_stacks = 10\nratio = 277\n')
+    code, _, err = run_cli("evaluate", design, "--requirements", REPO / "studies" / "seed-requirements.toml")
+    assert code == 2 and len(err.strip().splitlines()) == 1 and "design.toml" in err and "fluid" in err
+    code, _, err = run_cli("evaluate", design, "--requirements", tmp_path / "missing.toml")
+    assert code == 2 and len(err.strip().splitlines()) == 1 and "missing.toml" in err

@@ -192,7 +192,10 @@ def _sentence(techs, req, rec, chosen, nominal, study: Study) -> str:
     keys = [OBJECTIVE_KEYS[k] for k in req.objectives.minimize]
     pick = chosen or nominal
     clause = f"; it complies in {_p(rec['compliance'])} of samples under tolerance"
-    if chosen is None:
+    if chosen is None and not rec["examined"]:
+        clause = (f"; min_compliance {study.target:.0%} cannot be checked: no feasible design's parts carry a "
+                  "tolerance model")
+    elif chosen is None:
         clause = (f"; no design meets min_compliance {study.target:.0%}: under tolerance this one complies in "
                   f"{_p(rec['compliance'])} of samples, and none of the {len(rec['examined'])} lightest examined "
                   f"reaches {study.target:.0%}")

@@ -26,6 +26,7 @@ from sizing.engine.pump_candidate import pump_candidate
 from sizing.engine.solve import solve
 from sizing.io.catalog import load_catalog
 from sizing.io.requirements import load_requirements
+from sizing.studies import compliance
 
 LIMIT_S = 15.0
 ROOT = Path(__file__).resolve().parents[1]
@@ -46,7 +47,7 @@ def main() -> int:
     req, sha = load_requirements(args.requirements)
     catalog = load_catalog()
     loads = [c["load_N"] for c in load_cases(req.load)]
-    times, dc_times, pump_times = [], [], []
+    times, dc_times, pump_times, compliance_times = [], [], [], []
     for _ in range(args.repeat + 1):
         t0 = time.perf_counter()
         out = solve(req, sha, catalog)
@@ -54,6 +55,8 @@ def main() -> int:
         dc_times.append(_timed(lambda: [parts_candidate(req, catalog, d)
                                         for d in dc_parts_designs(req, catalog, loads).designs]))
         pump_times.append(_timed(lambda: [pump_candidate(req, d) for d in pump_designs(req, catalog, loads).designs]))
+        # what the default solve adds to --fast: the probability of compliance and its policy
+        compliance_times.append(_timed(lambda: compliance.attach(req, catalog, out.results, out.stages)))
     counts = out.results["counts"]
     warm, dc_warm = min(times[1:]), min(dc_times[1:])
     print(f"seed solve: cold {times[0]:.2f} s, warm best {warm:.2f} s of {args.repeat} "
@@ -64,6 +67,10 @@ def main() -> int:
     pump = counts.get("piezo_pump", {})
     print(f"piezo pump alone: warm {min(pump_times[1:]):.2f} s for {pump.get('combinations', 0)} designs screened, "
           f"{pump.get('simulated', 0)} simulated")
+    rec = out.results["summary"]["comparison"]["recommended"] or {}
+    print(f"probability of compliance (the default solve over --fast): warm best {min(compliance_times[1:]):.2f} s, "
+          f"{len(rec.get('examined', []))} designs examined by the policy; solve with it {warm + min(compliance_times[1:]):.2f} s, "
+          f"--fast {warm:.2f} s")
     print(f"load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores")
     return 0 if warm <= LIMIT_S else 1
 

@@ -93,10 +93,13 @@ def _jsonable(value):
 def evaluate(design: Path = typer.Argument(..., help="design.toml (docs/formats.md)."),
              json_out: bool = typer.Option(False, "--json", help="Print one JSON object instead of a summary."),
              catalog: Optional[Path] = CatalogOpt,
+             requirements: Optional[Path] = typer.Option(
+                 None, "--requirements", help="requirements.toml: judge the design with the checks of sizing solve "
+                                              "(margins and feasibility)."),
              max_steps: Optional[float] = MaxStepsOpt):
-    """Static and simulated figures of one design."""
+    """Static and simulated figures of one design; with --requirements, its margins and verdict."""
     with use_limits(steps=max_steps):
-        result = api.evaluate(design, catalog)
+        result = api.evaluate(design, catalog, requirements)
     for warning in result.warnings:
         typer.echo(f"warning: {design}: {warning}", err=True)
     if json_out:
@@ -117,10 +120,12 @@ def solve(requirements: Path = typer.Argument(..., help="requirements.toml (docs
           detail: str = typer.Option("summary", "--detail",
                                      help="summary: combinations ruled out before sizing counted by reason; "
                                           "full: a record of each in results.json."),
+          fast: bool = typer.Option(False, "--fast", help="Skip the probability of compliance under tolerance "
+                                                           "(compliance null; the nominal recommendation)."),
           max_steps: Optional[float] = MaxStepsOpt):
     """Size, verify by simulation and rank every design for the requirements."""
     with use_limits(steps=max_steps):
-        results = _solve(requirements, out, catalog, baseline, quiet, detail, robust)
+        results = _solve(requirements, out, catalog, baseline, quiet, detail, robust, fast)
     if not quiet:
         if results.get("changes_summary"):
             typer.echo(f"what changed: {results['changes_summary']['text']}")
@@ -131,15 +136,20 @@ def solve(requirements: Path = typer.Argument(..., help="requirements.toml (docs
             typer.echo(results["summary"]["comparison"]["text"])
         if results["summary"].get("comparison", {}).get("recommendation"):
             typer.echo(results["summary"]["comparison"]["recommendation"])
+        knife = results.knife_edges()
+        if knife:
+            typer.echo(knife)
         typer.echo(f"{out}/report.html, results.json, candidates.csv written "
-                   f"({results['runtime_s']:.1f} s)")
+                   f"({results['runtime_s']:.1f} s"
+                   + (f", and {results['compliance_s']:.1f} s for the probability of compliance"
+                      if results.get("compliance_s") is not None else "") + ")")
 
 
-def _solve(requirements, out, catalog, baseline, quiet, detail="summary", robust=None):
+def _solve(requirements, out, catalog, baseline, quiet, detail="summary", robust=None, fast=False):
     with _StageBars(quiet) as bars:          # the same bars as robust and sweep (below)
         return api.solve(requirements, out, catalog, baseline,
                          progress=lambda stage, done, total: bars(f"{stage} candidates", done, total), detail=detail,
-                         robust=robust)
+                         robust=robust, fast=fast)
 
 
 @catalog_app.command("list")

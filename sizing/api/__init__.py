@@ -15,7 +15,7 @@ from .catalogs import (CatalogEntry, CatalogUpdate, catalog, catalog_add, catalo
                        catalog_import_mgdb, catalog_table, catalog_validate)
 from .checks import check_envelope, check_evaluate_steps, check_solve_steps
 from .diagnosis import DIAGNOSE_OUTPUTS, DiagnoseResult, diagnose, diagnose_check, run_diagnose
-from .evaluation import EvaluateResult, evaluate
+from .evaluation import EvaluateResult, evaluate, judge_designs
 from .fitting import FitResult, fit_dc_motor, fit_hysteresis
 from .output import PLOTLY_FILE, plotly_js, write
 from .solution import SOLVE_OUTPUTS, SolveResult, results_json, run_solve, solve
@@ -34,6 +34,6 @@ __all__ = [
     "PLOTLY_FILE", "ROBUST_OUTPUTS", "SOLVE_OUTPUTS", "SWEEP_OUTPUTS", "SolveResult", "StudyResult",
     "catalog", "catalog_add", "catalog_diff", "catalog_entry", "catalog_import_mgdb", "catalog_table",
     "catalog_validate", "check_envelope", "check_evaluate_steps", "check_solve_steps", "diagnose",
-    "diagnose_check", "evaluate", "fit_dc_motor", "fit_hysteresis", "plotly_js", "results_json", "robust",
+    "diagnose_check", "evaluate", "judge_designs", "fit_dc_motor", "fit_hysteresis", "plotly_js", "results_json", "robust",
     "run_diagnose", "run_robust", "run_solve", "run_sweep", "solve", "sweep", "write",
 ]

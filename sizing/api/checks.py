@@ -21,7 +21,8 @@ def check_evaluate_steps(design, cat: Catalog, file: str) -> None:
     from ..engine.verify import SETTLE_TIME_S
     from ..limits import check_steps, dc_steps, piezo_steps
     if isinstance(design, PiezoDesignFile):
-        check_steps(piezo_steps(design.rise_time + SETTLE_TIME_S, n_loads(design.load)), file, "rise_time",
+        ramp = design.ramp_time if design.ramp_time is not None else design.rise_time
+        check_steps(piezo_steps(ramp + SETTLE_TIME_S, n_loads(design.load)), file, "rise_time",
                     "simulation steps (rise time x 20 kHz x load cases)")
     elif design.actuator in cat.dc_actuators:
         rate = cat.dc_actuators[design.actuator].pid.rate

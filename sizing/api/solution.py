@@ -31,6 +31,11 @@ class SolveResult(Payload):
     def _payload(self) -> dict:
         return self.results
 
+    def knife_edges(self) -> str:
+        """The terminal line of the checks met by less than 1 % ("" when none)."""
+        from ..report.text import knife_edge_text
+        return knife_edge_text(self.results["summary"].get("comparison", {}))
+
     def files(self) -> dict:
         """results.json, candidates.csv, report.html, plotly.js and the
         catalog snapshot a later ``--baseline`` diffs against."""
@@ -45,7 +50,7 @@ class SolveResult(Payload):
 
 def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-out",
           catalog_dir: str | Path | None = None, baseline: str | Path | None = None,
-          progress=None, detail: str = "summary", robust: str | Path | None = None) -> SolveResult:
+          progress=None, detail: str = "summary", robust: str | Path | None = None, fast: bool = False) -> SolveResult:
     """Size, verify and rank designs for a requirements file (docs/formats.md).
 
     Writes results.json, candidates.csv and report.html into ``out_dir``
@@ -57,15 +62,17 @@ def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-ou
     sizing by reason (``summary.ruled_out``); "full" also records each one.
     ``robust``: a robust.json of these requirements; each design it studied
     gets its probability of compliance (``p_compliance``, ``p_ci95``).
+    ``fast``: no probability of compliance (``compliance`` null) and the
+    nominal recommendation, for quick iterations.
     Raises InputError for bad input before writing anything.
     """
     def compute():
-        return run_solve(requirements_path, catalog_dir, baseline, progress, detail, robust)
+        return run_solve(requirements_path, catalog_dir, baseline, progress, detail, robust, fast)
     return output.produce(SOLVE_OUTPUTS, out_dir, (requirements_path, catalog_dir, baseline, robust), compute)
 
 
 def run_solve(requirements_path, catalog_dir=None, baseline=None, progress=None, detail: str = "summary",
-              robust=None) -> SolveResult:
+              robust=None, fast: bool = False) -> SolveResult:
     """The solve without writing anything (``solve``'s arguments)."""
     from ..engine.solve import solve as run
     from ..io.requirements import load_requirements
@@ -79,6 +86,11 @@ def run_solve(requirements_path, catalog_dir=None, baseline=None, progress=None,
     out = run(req, sha, cat, progress=progress, detail=detail)
     results = out.results
     results["catalog_dir"] = str(cat.folder.resolve())
+    from ..studies import compliance
+    if fast:
+        compliance.attach_fast(results, req)
+    else:
+        compliance.attach(req, cat, results, out.stages)
     if studied is not None:
         _attach_compliance(results, studied)
     if old is not None:

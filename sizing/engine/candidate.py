@@ -143,10 +143,16 @@ def _design_variables(req, d: PiezoDesign) -> dict:
            "amplifier": combo.amplifier.id, "wide_gap": st["wide_gap_m"], "rise_time": d.ramp,
            "temperature": req.requirements.max_temperature, "material": var.material.id,
            "end_cap_thickness": res.cap_thickness, "frame_area": res.frame_area,
-           "compensator": comp.id if comp else None, "strokes_per_second": req.duty.strokes_per_second}
+           "compensator": comp.id if comp else None, "strokes_per_second": req.duty.strokes_per_second,
+           "amplifier_units": _count(st["amplifier_units"]), "ramp_time": d.ramp}
     if d.spacer > 0:
         out["spacer_length"] = d.spacer
     return out
+
+
+def _count(units: float) -> int | float:
+    """A whole number of amplifier units as an int (TOML and JSON read it back as one)."""
+    return int(units) if float(units).is_integer() else float(units)
 
 
 def _fluid_at_temperature(req, d: PiezoDesign) -> dict:

@@ -116,15 +116,27 @@ def _ratio_line(a, b, keys, label) -> str:
     return " / ".join(sides) + ": " + (", ".join(ratios) or "not comparable")
 
 
-def _recommendation(out: dict, keys: list[str]) -> str:
-    """One sentence: the feasible technology best in the first objective,
-    against the other's best (or its one-miss design)."""
+def recommendation_sentence(out: dict, keys: list[str], pick: dict | None = None, clause: str = "") -> str:
+    """The one-sentence answer; ``pick``: a candidate chosen by a policy
+    (``studies/compliance.py``) instead of the nominal one, ``clause`` what
+    the policy adds."""
+    if pick is None:
+        return _recommendation(out, keys, clause=clause)
+    deciding = [f"{r['part']}.{r['field']}" for r in pick.get("rests_on_assumed") or [] if r.get("decides")]
+    entry = {"name": pick.get("name", pick["id"]), "metrics": pick["metrics"], "deciding_assumed": deciding}
+    return _recommendation(out, keys, (pick["technology"], entry), clause)
+
+
+def _recommendation(out: dict, keys: list[str], pick: tuple | None = None, clause: str = "") -> str:
+    """One sentence: the feasible technology best in the first objective
+    (or ``pick``: (technology, its entry)), against the other's best (or
+    its one-miss design)."""
     feasible = {t: e for t, e in out.items() if e["feasible"]}
     if not feasible or not keys:
         return ("No technology meets every requirement: see what blocks each and what would flip it"
                 + _pump_clause(out) + ".")
     key = keys[0]
-    tech, best = min(feasible.items(), key=lambda kv: kv[1]["metrics"].get(key) or math.inf)
+    tech, best = pick or min(feasible.items(), key=lambda kv: kv[1]["metrics"].get(key) or math.inf)
     text = f"Choose the {LABELS.get(tech, tech)}: {best['name']} ({format_metric(key, best['metrics'].get(key))})"
     for other, entry in out.items():
         if other == tech:
@@ -137,7 +149,7 @@ def _recommendation(out: dict, keys: list[str]) -> str:
     deciding = best.get("deciding_assumed") or []
     if deciding:
         text += f"; its binding check rests on assumed {', '.join(deciding[:3])}"
-    return text + _pump_clause(out) + "."
+    return text + clause + _pump_clause(out) + "."
 
 
 def _pump_clause(out: dict) -> str:

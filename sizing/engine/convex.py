@@ -111,6 +111,10 @@ class SizingResult:
     slack: dict = field(default_factory=dict)     # requirement -> phase-1 slack (1: met)
     binding: list = field(default_factory=list)   # requirements that cannot be met, worst first
     status: str = ""
+    # the drive as a design file fixes it (``sizing evaluate``); None: planned
+    # by ``piezo_designs._build`` from the requirements (units the ramp needs)
+    amplifier_units: float | None = None
+    ramp_time: float | None = None     # s
 
     @property
     def driver(self) -> str | None:

@@ -8,6 +8,7 @@ from __future__ import annotations
 from .dc_candidates import dc_duration
 from .dc_assumed import resting
 from .records import DCActuatorDesign, DCDesign, Simulation
+from .sized import SETTINGS
 
 
 def _cases(sim: Simulation) -> list[dict]:
@@ -55,7 +56,8 @@ def parts_candidate(req, catalog, d: DCDesign) -> dict:
         "design": {"technology": "dc_motor", **components, "step": r.stroke, "duration": d.duration,
                    "temperature": T, "speed": r.speed, "strokes_per_second": req.duty.strokes_per_second,
                    "amplifier_location": o.amplifier_location,
-                   "electronics_bay_temperature": o.electronics_bay_temperature},
+                   "electronics_bay_temperature": o.electronics_bay_temperature,
+                   "controller": {k: float(d.controller[k]) for k in SETTINGS}},
         "reason": "" if not d.missed or stage == "simulated"
                   else "ruled out before simulation: " + ", ".join(d.missed),
         **resting(catalog, components, d.margins),

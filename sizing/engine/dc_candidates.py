@@ -22,10 +22,10 @@ def dc_duration(req: RequirementsFile) -> float:
 
 def actuator_designs(req: RequirementsFile, catalog: Catalog, loads: list[float]) -> tuple[DCActuatorDesign, ...]:
     """Every catalog DC actuator, simulated under every load case."""
-    return tuple(_actuator_design(req, act, loads) for act in catalog.dc_actuators.values())
+    return tuple(actuator_design(req, act, loads) for act in catalog.dc_actuators.values())
 
 
-def _actuator_design(req: RequirementsFile, act, loads: list[float]) -> DCActuatorDesign:
+def actuator_design(req: RequirementsFile, act, loads: list[float]) -> DCActuatorDesign:
     r = req.requirements
     cases = dc_engine.step_cases(act, r.stroke, loads, dc_duration(req))
     static = dict(dc_engine.static_figures(act, max(loads) if loads else 0.0), free_stroke_m=act.stroke)

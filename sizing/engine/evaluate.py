@@ -13,12 +13,12 @@ from . import dc as dc_engine, force_path
 from .loads import load_cases, surface_mass
 from .piezo import (DEFAULT_PRESSURE_RATING_PA, Candidates, part_row, reference_bouc_wen, stack_bouc_wen,
                     structure_row)
-from .verify import FILL_TEMPERATURE_DEGC, metrics, seal_friction_at, simulate_cases, static_figures
+from .verify import FILL_TEMPERATURE_DEGC, metrics, ramp_time, seal_friction_at, simulate_cases, static_figures
 
 RATIO_TOLERANCE = 0.01
 
 
-def _lookup(catalog: Catalog, group: dict, entry_id: str | None, file: str, field: str):
+def lookup(catalog: Catalog, group: dict, entry_id: str | None, file: str, field: str):
     if entry_id is None:
         return None
     if entry_id not in group:
@@ -29,14 +29,14 @@ def _lookup(catalog: Catalog, group: dict, entry_id: str | None, file: str, fiel
 
 def evaluate_piezo(design: PiezoDesignFile, catalog: Catalog, file: str) -> dict:
     warnings: list[str] = []
-    stack = _lookup(catalog, catalog.stacks, design.stack, file, "stack")
-    fluid = _lookup(catalog, catalog.fluids, design.fluid, file, "fluid")
-    seal = _lookup(catalog, catalog.seals, design.seal, file, "seal")
-    amplifier = _lookup(catalog, catalog.amplifiers, design.amplifier, file, "amplifier")
+    stack = lookup(catalog, catalog.stacks, design.stack, file, "stack")
+    fluid = lookup(catalog, catalog.fluids, design.fluid, file, "fluid")
+    seal = lookup(catalog, catalog.seals, design.seal, file, "seal")
+    amplifier = lookup(catalog, catalog.amplifiers, design.amplifier, file, "amplifier")
     voltage = design.voltage or stack.max_voltage
     if voltage > stack.max_voltage * (1 + 1e-9):
         raise InputError(file, "voltage", f"expected at most the stack's rated {stack.max_voltage:g} V, got {voltage:g} V")
-    ratio, wide_area = _geometry(design, stack, voltage, seal, warnings)
+    ratio, wide_area = geometry(design, stack, voltage, seal, warnings)
     bw, bw_source = stack_bouc_wen(stack, reference_bouc_wen(catalog.stacks))
     if bw_source.startswith("assumed"):
         warnings.append(f"Bouc-Wen parameters of {stack.id}: {bw_source.removeprefix('assumed: ')}")
@@ -47,15 +47,7 @@ def evaluate_piezo(design: PiezoDesignFile, catalog: Catalog, file: str) -> dict
     overrides = design.model_dump(include={"wide_piston_mass", "narrow_piston_mass", "wide_friction",
                                            "narrow_friction", "breakaway_ratio", "loss_coefficient",
                                            "bulk_modulus", "no_return", "air_fraction", "air_pressure"})
-    material = (_lookup(catalog, catalog.materials, design.material, file, "material")
-                if design.material is not None else force_path.default_material(catalog.materials))
-    compensator = _lookup(catalog, catalog.compensators, design.compensator, file, "compensator")
-    rating = design.pressure_rating or (seal.pressure_rating if seal else DEFAULT_PRESSURE_RATING_PA)
-    x_free = stack.stroke * voltage / stack.max_voltage
-    t_cap, frame_area = force_path.design_structure(
-        design.n_stacks * stack.stiffness, design.n_stacks * stack.stiffness * x_free, wide_area, stack.length,
-        design.wide_gap, rating, material, design.structure_stiffness_ratio,
-        design.end_cap_thickness, design.frame_area)
+    material, compensator, t_cap, frame_area = structure_of(design, catalog, file, stack, seal, voltage, wide_area)
     surface = surface_mass(design.load)
     struct = structure_row(material, t_cap, frame_area, spacer=force_path.spacer_material(catalog.materials),
                            spacer_length=design.spacer_length, compensator=compensator, surface_mass=surface,
@@ -63,15 +55,19 @@ def evaluate_piezo(design: PiezoDesignFile, catalog: Catalog, file: str) -> dict
     row = part_row(stack, design.n_stacks, ratio, wide_area, voltage, bw, design.temperature,
                    design.wide_gap, fluid, seal, amplifier, design.pressure_rating, overrides, struct)
     c = Candidates.from_rows([row])
+    if design.amplifier_units is not None:
+        c.amp_units = np.array([float(design.amplifier_units)])
+    # the ramp the drive delivers: the one asked, lengthened to what the units allow (as solve drives it)
+    ramp = ramp_time(c, design.ramp_time if design.ramp_time is not None else design.rise_time)
     static = {k: float(np.asarray(v).ravel()[0])
-              for k, v in static_figures(c, design.rise_time, design.strokes_per_second).items()}
+              for k, v in static_figures(c, ramp, design.strokes_per_second).items()}
     checks = _buildable(static, design.n_stacks, warnings)
     members = force_path.members(c)
     worst_load = max((case["load_N"] for case in load_cases(design.load)), default=0.0)
     p_load = worst_load / float(c.narrow_area[0])
     seal_f = {k: float(v[0]) for k, v in seal_friction_at(c, p_load).items()}
     cases = load_cases(design.load)
-    sims = simulate_cases(c, [case["load_N"] for case in cases], design.rise_time,
+    sims = simulate_cases(c, [case["load_N"] for case in cases], ramp,
                           load_stiffness=design.load.stiffness)
     simulated = [dict(case, **{k: _num(v[0]) for k, v in sim.items()}) for case, sim in zip(cases, sims)]
     return {
@@ -79,11 +75,12 @@ def evaluate_piezo(design: PiezoDesignFile, catalog: Catalog, file: str) -> dict
         "design": {"stack": stack.id, "n_stacks": design.n_stacks, "ratio": ratio, "voltage_V": voltage,
                    "fluid": design.fluid, "seal": design.seal, "amplifier": design.amplifier,
                    "temperature_degC": design.temperature, "rise_time_s": design.rise_time,
+                   "amplifier_units": int(c.amp_units[0]), "ramp_time_s": float(ramp[0]),
                    "bouc_wen": dict(zip(["d33", "alpha", "beta", "gamma", "delta", "n"], bw.as_array().tolist())),
                    "bouc_wen_source": bw_source},
         "static": static,
         "simulated": {"cases": simulated, "worst": _worst(simulated)},
-        "metrics": {k: float(v[0]) for k, v in metrics(c, design.rise_time).items()},
+        "metrics": {k: float(v[0]) for k, v in metrics(c, ramp).items()},
         "force_path": force_path.as_list(members, 0, material.id, compensator.id if compensator else None,
                                          force_path.spacer_material(catalog.materials).id),
         "thermal_budget": {k: static["thermal_" + k] for k in (*thermal.TERMS, "net_m")},
@@ -92,6 +89,22 @@ def evaluate_piezo(design: PiezoDesignFile, catalog: Catalog, file: str) -> dict
         "checks": checks,
         "warnings": warnings,
     }
+
+
+def structure_of(design: PiezoDesignFile, catalog: Catalog, file: str, stack, seal, voltage: float,
+                 wide_area: float) -> tuple:
+    """(material, compensator, end cap thickness, frame area) of a design
+    file: the thickness and area as given, else sized for the stacks' force."""
+    material = (lookup(catalog, catalog.materials, design.material, file, "material")
+                if design.material is not None else force_path.default_material(catalog.materials))
+    compensator = lookup(catalog, catalog.compensators, design.compensator, file, "compensator")
+    rating = design.pressure_rating or (seal.pressure_rating if seal else DEFAULT_PRESSURE_RATING_PA)
+    x_free = stack.stroke * voltage / stack.max_voltage
+    t_cap, frame_area = force_path.design_structure(
+        design.n_stacks * stack.stiffness, design.n_stacks * stack.stiffness * x_free, wide_area, stack.length,
+        design.wide_gap, rating, material, design.structure_stiffness_ratio,
+        design.end_cap_thickness, design.frame_area)
+    return material, compensator, t_cap, frame_area
 
 
 def _buildable(static: dict, n_stacks: int, warnings: list) -> dict:
@@ -120,7 +133,7 @@ def _compensator(comp, members) -> dict | None:
             "capacity_m3": comp.capacity}
 
 
-def _geometry(design: PiezoDesignFile, stack, voltage, seal, warnings) -> tuple[float, float]:
+def geometry(design: PiezoDesignFile, stack, voltage, seal, warnings) -> tuple[float, float]:
     """Ratio and wide piston area: from the diameters when given (warning if
     a stated ratio disagrees), else the wide area that keeps the blocked
     pressure at the rating (docs/models.md, "Force path")."""
@@ -155,17 +168,20 @@ def evaluate_dc(design: DCDesignFile, catalog: Catalog, file: str) -> dict:
     if design.actuator is None:
         from .dc_sizing import evaluate_parts
         cases = load_cases(design.load)
-        parts = {kind: _lookup(catalog, getattr(catalog, kind + "s"), getattr(design, kind), file, kind)
+        parts = {kind: lookup(catalog, getattr(catalog, kind + "s"), getattr(design, kind), file, kind)
                  for kind in ("motor", "screw", "gear", "drive")}
-        if parts["drive"].bus_voltage < parts["motor"].rated_voltage:
-            raise InputError(file, "drive", f"drive {parts['drive'].id} has a {parts['drive'].bus_voltage:g} V bus, "
-                             f"below the {parts['motor'].rated_voltage:g} V rated voltage of motor {parts['motor'].id}")
         gear, motor = parts["gear"], parts["motor"]
         if gear is not None and gear.mount is not None and gear.mount not in (motor.gear_mounts or ()):
             raise InputError(file, "gear", f"gearhead {gear.id} (mount {gear.mount}) does not mount on motor {motor.id} "
                              f"(its mounts: {', '.join(motor.gear_mounts or ()) or 'none'})")
-        return evaluate_parts(design, catalog, parts, cases)
-    act = _lookup(catalog, catalog.dc_actuators, design.actuator, file, "actuator")
+        out = evaluate_parts(design, catalog, parts, cases)
+        if parts["drive"].bus_voltage < parts["motor"].rated_voltage:
+            # the solve ranks such designs too: the motor runs at the bus voltage
+            out["warnings"].append(f"drive {parts['drive'].id} has a {parts['drive'].bus_voltage:g} V bus, below the "
+                                   f"{parts['motor'].rated_voltage:g} V rated voltage of motor {parts['motor'].id}: "
+                                   "the motor runs at the bus voltage")
+        return out
+    act = lookup(catalog, catalog.dc_actuators, design.actuator, file, "actuator")
     cases = load_cases(design.load)
     sims = dc_engine.step_cases(act, design.step, [c["load_N"] for c in cases], design.duration)
     simulated = [dict(case, **{k: _num(v) for k, v in sim.items()}) for case, sim in zip(cases, sims)]

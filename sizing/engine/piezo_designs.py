@@ -180,7 +180,8 @@ def _build(b: PiezoBrief, pending: list[PiezoDesign], spacer) -> list[PiezoDesig
         combo, res, var = d.combo, d.gp, d.variant
         v = min(res.voltage_fraction, combo.voltage_fraction_max)
         free = res.ratio * combo.stack_stroke * v
-        rise.append(0.5 * b.stroke_time * free / S)          # reach the stroke in half the time allowed
+        # reach the stroke in half the time allowed, unless the design fixes its ramp
+        rise.append(0.5 * b.stroke_time * free / S if res.ramp_time is None else res.ramp_time)
         struct = structure_row(var.material, res.cap_thickness, res.frame_area, spacer, d.spacer,
                                var.compensator, b.surface_mass, b.delta_T)
         rows.append(part_row(combo.stack, combo.n, res.ratio, res.wide_area, v * combo.stack.max_voltage,
@@ -191,6 +192,8 @@ def _build(b: PiezoBrief, pending: list[PiezoDesign], spacer) -> list[PiezoDesig
     rise = np.array(rise)
     needed = drive_figures(c, rise, b.strokes_per_second)["amplifier_units_needed"]
     c.amp_units = np.minimum(needed, b.max_amplifier_units).astype(float)
+    fixed = [i for i, d in enumerate(pending) if d.gp.amplifier_units is not None]
+    c.amp_units[fixed] = [pending[i].gp.amplifier_units for i in fixed]    # units a design file gives
     ramp = ramp_time(c, rise)
     static = static_figures(c, ramp, b.strokes_per_second)
     met = metrics(c, ramp)

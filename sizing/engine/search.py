@@ -73,29 +73,38 @@ def enumerate_combos(req: RequirementsFile, catalog: Catalog) -> list[Combo]:
     """Every combination of the catalog's parts and stack counts 1..max_stacks,
     with the margins known before sizing and ``pruned`` set when one of them
     rules the combination out."""
-    r = req.requirements
-    work_needed = r.blocked_force * r.stroke
     combos = []
     parts = itertools.product(catalog.stacks.values(), catalog.fluids.values(),
                               catalog.seals.values(), catalog.amplifiers.values())
     for stack, fluid, seal, amp in parts:
-        temps = component_temperatures(req, stack, fluid, seal, amp)
-        t_margin = min(temperature_margin(rated, need) for k, (rated, need) in temps.items()
-                       if not k.startswith("amplifier"))
-        a_margin = temperature_margin(*temps[f"amplifier {amp.id}"])
-        x0 = float(stack_phys.derated_stroke(stack.stroke, stack.stroke_temperature_coefficient, r.max_temperature))
-        v_max = min(1.0, amp.max_voltage / stack.max_voltage)
-        for n in range(1, req.options.max_stacks + 1):
-            work_amp = float(stack_phys.work_capacity(n, stack.stiffness, x0 * v_max))
-            work_full = float(stack_phys.work_capacity(n, stack.stiffness, x0))
-            margins = {"temperature": t_margin, "amplifier_temperature": a_margin,
-                       "work": work_amp / work_needed - 1}
-            if v_max < 1 and work_full >= work_needed > work_amp:
-                # voltage at which the work bound is just met, against what the amplifier gives
-                v_needed = (work_needed / (n * stack.stiffness)) ** 0.5 / x0
-                margins["amplifier_voltage"] = v_max / v_needed - 1
-                margins["work"] = work_full / work_needed - 1
-            c = Combo(stack, n, fluid, seal, amp, v_max, x0, margins=margins, temperatures=temps)
-            c.pruned = min(margins.values()) < 0
-            combos.append(c)
+        combos.extend(combos_of(req, stack, fluid, seal, amp, range(1, req.options.max_stacks + 1)))
+    return combos
+
+
+def combos_of(req: RequirementsFile, stack: Stack, fluid: Fluid, seal: Seal, amp: Amplifier,
+              counts) -> list[Combo]:
+    """The combinations of these parts with each stack count of ``counts``
+    (``enumerate_combos``; ``sizing evaluate --requirements`` asks for one)."""
+    r = req.requirements
+    work_needed = r.blocked_force * r.stroke
+    temps = component_temperatures(req, stack, fluid, seal, amp)
+    t_margin = min(temperature_margin(rated, need) for k, (rated, need) in temps.items()
+                   if not k.startswith("amplifier"))
+    a_margin = temperature_margin(*temps[f"amplifier {amp.id}"])
+    x0 = float(stack_phys.derated_stroke(stack.stroke, stack.stroke_temperature_coefficient, r.max_temperature))
+    v_max = min(1.0, amp.max_voltage / stack.max_voltage)
+    combos = []
+    for n in counts:
+        work_amp = float(stack_phys.work_capacity(n, stack.stiffness, x0 * v_max))
+        work_full = float(stack_phys.work_capacity(n, stack.stiffness, x0))
+        margins = {"temperature": t_margin, "amplifier_temperature": a_margin,
+                   "work": work_amp / work_needed - 1}
+        if v_max < 1 and work_full >= work_needed > work_amp:
+            # voltage at which the work bound is just met, against what the amplifier gives
+            v_needed = (work_needed / (n * stack.stiffness)) ** 0.5 / x0
+            margins["amplifier_voltage"] = v_max / v_needed - 1
+            margins["work"] = work_full / work_needed - 1
+        c = Combo(stack, n, fluid, seal, amp, v_max, x0, margins=margins, temperatures=temps)
+        c.pruned = min(margins.values()) < 0
+        combos.append(c)
     return combos

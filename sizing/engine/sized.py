@@ -72,7 +72,7 @@ class DCPartsDesign:
 
 def dc_parts_design(catalog: Catalog, d: DCDesign) -> DCPartsDesign:
     """The solve's record of a DC design from parts, as robust perturbs it."""
-    return _dc_design(catalog, d.parts, {k: float(d.controller[k]) for k in SETTINGS}, d.duration)
+    return parts_design(catalog, d.parts, {k: float(d.controller[k]) for k in SETTINGS}, d.duration)
 
 
 def _dc_read_back(catalog: Catalog, cand: dict) -> DCPartsDesign:
@@ -85,23 +85,27 @@ def _dc_read_back(catalog: Catalog, cand: dict) -> DCPartsDesign:
           and all(k in ctl for k in SETTINGS))
     if not ok:
         raise InputError(None, cand.get("id"), "expected a DC design sized from parts of this catalog")
-    return _dc_design(catalog, DCParts(comp["motor"], comp["screw"], gear, comp["drive"]),
+    return parts_design(catalog, DCParts(comp["motor"], comp["screw"], gear, comp["drive"]),
                       {k: float(ctl[k]) for k in SETTINGS},
                       float(cand.get("design", {}).get("duration", 0.0)) or None)
 
 
-def _dc_design(catalog: Catalog, parts: DCParts, settings: dict, duration: float | None) -> DCPartsDesign:
+def parts_design(catalog: Catalog, parts: DCParts, settings: dict, duration: float | None) -> DCPartsDesign:
     """``parts`` as one row of ``dc_parts.PartArrays`` (enumerated from a
     catalog of these parts alone, so the row's values are the solve's)."""
-    from dataclasses import replace
     from .dc_parts import enumerate_parts
-    one = replace(catalog, motors={parts.motor: catalog.motors[parts.motor]},
-                  screws={parts.screw: catalog.screws[parts.screw]},
-                  gears={} if parts.gear is None else {parts.gear: catalog.gears[parts.gear]},
-                  drives={parts.drive: catalog.drives[parts.drive]})
-    p = enumerate_parts(one)
+    p = enumerate_parts(parts_catalog(catalog, parts))
     row = [i for i in range(len(p)) if p.gear[i] == parts.gear]
     return DCPartsDesign(p.take(row), settings, duration)
+
+
+def parts_catalog(catalog: Catalog, parts: DCParts) -> Catalog:
+    """The catalog with these DC parts as its only motor, screw, gear and drive."""
+    from dataclasses import replace
+    return replace(catalog, motors={parts.motor: catalog.motors[parts.motor]},
+                   screws={parts.screw: catalog.screws[parts.screw]},
+                   gears={} if parts.gear is None else {parts.gear: catalog.gears[parts.gear]},
+                   drives={parts.drive: catalog.drives[parts.drive]})
 
 
 SETTINGS = ("kp", "ki", "kd", "current_limit_A", "voltage_limit_V")

@@ -50,6 +50,10 @@ class PiezoDesignFile(Strict):
     loss_coefficient: Optional[Qty("dimensionless", nonnegative=True)] = None
     bulk_modulus: Optional[Qty("pressure", positive=True)] = None
     rise_time: Qty("time", positive=True) = 0.1
+    # the drive as ``sizing solve`` sized it: units in parallel (default 1) and
+    # the ramp they drive (default: rise_time, lengthened to what the units allow)
+    amplifier_units: Optional[int] = Field(None, gt=0, le=1000)
+    ramp_time: Optional[Qty("time", positive=True)] = None
     temperature: Qty("temperature") = 25.0
     no_return: bool = False
     # force path, thermal budget and drive duty
@@ -95,6 +99,10 @@ class DCDesignFile(Strict):
     temperature: Qty("temperature") = 25.0
     speed: Qty("speed", positive=True) = 0.1
     strokes_per_second: float = Field(1.0, gt=0.0, allow_inf_nan=False)
+    # the controller and drive limits as ``sizing solve`` set them on the
+    # nominal parts (kp, ki, kd, current_limit_A, voltage_limit_V); judged
+    # with requirements they are kept; absent, they follow from the rule
+    controller: Optional[dict[str, float]] = None
     amplifier_location: Literal["bay", "actuator"] = "bay"
     electronics_bay_temperature: Qty("temperature") = 30.0
     load: LoadTable = Field(default_factory=LoadTable)
@@ -115,3 +123,21 @@ DesignFile = Union[PiezoDesignFile, DCDesignFile]
 
 def load_design(path: str | Path) -> DesignFile:
     return parse_tagged(path, "technology", {"piezohydraulic": PiezoDesignFile, "dc_motor": DCDesignFile})
+
+
+def design_toml(block: dict) -> str:
+    """A results.json ``design`` block as a design.toml that ``sizing
+    evaluate`` reads back: floats at full precision (a margin of 1e-7 must
+    not flip on rounding), None left out, a dict value as a table."""
+    def value(v) -> str:
+        if isinstance(v, bool):
+            return "true" if v else "false"
+        if isinstance(v, (int, float)):
+            return repr(v) if isinstance(v, int) or v == v and abs(v) != float("inf") else f"{v}"
+        if isinstance(v, str):
+            return '"' + v.replace("\\", "\\\\").replace('"', '\\"') + '"'
+        raise TypeError(f"cannot write {type(v).__name__} to design.toml")
+    top = [f"{k} = {value(v)}" for k, v in block.items() if v is not None and not isinstance(v, dict)]
+    tables = [f"\n[{k}]\n" + "\n".join(f"{kk} = {value(vv)}" for kk, vv in v.items() if vv is not None)
+              for k, v in block.items() if isinstance(v, dict)]
+    return "\n".join(top) + "\n" + "".join(t + "\n" for t in tables)

@@ -50,6 +50,16 @@ class RequirementsTable(Strict):
 class ObjectivesTable(Strict):
     minimize: list[Literal["mass", "cost", "volume", "power"]] = Field(
         default_factory=lambda: ["mass", "cost"], min_length=1)
+    # probability of compliance under [tolerances] the recommendation must
+    # reach (studies/compliance.py); 0: the nominal answer
+    min_compliance: Qty("dimensionless", nonnegative=True) = 0.9
+
+    @field_validator("min_compliance")
+    @classmethod
+    def _probability(cls, value: float) -> float:
+        if value > 1.0:
+            raise ValueError(f"expected a probability from 0 to 1 (or 0 % to 100 %), got {value!r}")
+        return value
 
     @field_validator("minimize")
     @classmethod

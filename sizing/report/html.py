@@ -6,6 +6,7 @@ import html
 from collections import Counter
 
 from ..engine.comparison import format_metric
+from .text import knife_edge_text
 from .bundle import plotly_tag
 
 from .figures import MARGIN_ORDER, comparison_figure, pareto_figure, traces_figure
@@ -227,6 +228,7 @@ def _answer(summary: dict) -> str:
             lo, hi = t.get("p_ci95") or (None, None)
             interval = f" [{lo:.0%}, {hi:.0%}]" if lo is not None else ""
             binding += f"<br>complies in {t['p_compliance']:.0%}{interval} of robust samples"
+        binding += _compliance_cell(t)
         deciding = t.get("deciding_assumed") or []
         rests = (f"{len(t.get('rests_on_assumed') or [])} assumed values; in its binding margin: "
                  + (_e(", ".join(deciding)) if deciding else "none"))
@@ -242,9 +244,29 @@ def _answer(summary: dict) -> str:
     if sourced:
         ruled_text = f"{_e(sourced)}</p><p>{ruled_text}"
     advice = summary.get("comparison", {}).get("recommendation")
-    return ("<h2>The answer</h2>" + (f"<div class='box ok'><b>{_e(advice)}</b></div>" if advice else "") + "<table><tr><th class='l'>technology</th><th class='l'>verdict</th>"
+    box = f"<div class='box ok'><b>{_e(advice)}</b></div>" if advice else ""
+    knife = knife_edge_text(summary.get("comparison", {}))
+    if knife:
+        box += f"<div class='box warn'>{_e(knife)}</div>"
+    return ("<h2>The answer</h2>" + box + "<table><tr><th class='l'>technology</th><th class='l'>verdict</th>"
             "<th class='l'>best design</th><th class='l'>binding check</th><th class='l'>rests on</th>"
             "<th class='l'>what would flip the verdict</th></tr>" + "".join(rows) + f"</table><p>{ruled_text}</p>")
+
+
+def _compliance_cell(t: dict) -> str:
+    """A technology's best under tolerance (studies/compliance.py) and its
+    knife edges, for the answer table."""
+    c = t.get("compliance") or {}
+    out = ""
+    if c.get("p") is not None:
+        out += (f"<br>complies in {c['p']:.0%} [{c['low']:.0%}, {c['high']:.0%}] of {c['samples']} samples "
+                "under tolerance")
+    elif c.get("method"):
+        out += f"<br>{_e(c['method'])}"
+    edges = t.get("knife_edges") or {}
+    if edges:
+        out += "<br><b>knife edge</b>: " + _e(", ".join(f"{k} {v:+.2%}" for k, v in edges.items()))
+    return out
 
 
 def _ruled_out_text(by_tech: dict) -> str:

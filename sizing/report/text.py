@@ -45,7 +45,13 @@ def evaluation_summary(result: dict) -> str:
         if key in result["simulated"]:
             lines.append(f"  {_label(key):<28} {_fmt(key, result['simulated'][key])}")
     if result.get("margins"):
-        lines.append("margins: " + ", ".join(f"{k} {v:+.1%}" for k, v in result["margins"].items() if v is not None))
+        lines.append("margins: " + ", ".join(f"{k} {v:+.1%}" if v is not None else f"{k} missed (no value)"
+                                             for k, v in result["margins"].items()))
+    if "feasible" in result:
+        judged = result.get("judged", {})
+        lines.append(f"against {judged.get('requirements', 'the requirements')}: "
+                     + ("feasible" if result["feasible"] else "infeasible")
+                     + (f" (binding check {result['driver']})" if result.get("driver") else ""))
     lines.append("metrics: " + ", ".join(f"{_label(k)} {_fmt(k, v)}" for k, v in result["metrics"].items()))
     if result.get("force_path"):
         lines.append("force path (in series, referred to the wide piston; share of the compliance):")
@@ -82,3 +88,18 @@ def entry_details(kind: str, entry: Entry) -> str:
     if entry.notes:
         lines.append(f"  notes: {entry.notes}")
     return "\n".join(lines)
+
+
+def knife_edge_text(comparison: dict) -> str:
+    """The margins under 1 % of the recommended design and of each
+    technology's best (``knife_edges``, studies/compliance.py), one line;
+    "" when there are none."""
+    rec = comparison.get("recommended") or {}
+    entries = [(rec.get("name"), rec.get("knife_edges"))]
+    entries += [(t.get("name"), t.get("knife_edges")) for t in comparison.get("technologies", {}).values()]
+    parts, named = [], set()
+    for name, edges in entries:
+        if edges and name not in named:
+            named.add(name)
+            parts.append(f"{name}: " + ", ".join(f"{k} {v:+.2%}" for k, v in edges.items()))
+    return "knife edges (checks met by less than 1 %): " + "; ".join(parts) if parts else ""

@@ -344,7 +344,8 @@ def test_seed_solve_end_to_end(tmp_path, seed_requirements):
         f'amplifier = "{d["amplifier"]}"', f'wide_gap = {d["wide_gap"]!r}', f'rise_time = {d["rise_time"]!r}',
         f'temperature = {d["temperature"]!r}', f'material = "{d["material"]}"',
         f'end_cap_thickness = {d["end_cap_thickness"]!r}', f'frame_area = {d["frame_area"]!r}',
-        f'compensator = "{d["compensator"]}"', "[load]", 'dynamic_pressure = ["10 kPa", "25 kPa"]']) + "\n")
+        f'compensator = "{d["compensator"]}"', f'amplifier_units = {d["amplifier_units"]}',
+        f'ramp_time = {d["ramp_time"]!r}', "[load]", 'dynamic_pressure = ["10 kPa", "25 kPa"]']) + "\n")
     ev = api.evaluate(design)
     for key in ("free_stroke_m", "blocked_force_N", "blocked_force_ideal_N", "natural_frequency_Hz",
                 "blocked_pressure_Pa", "drive_current_A", "thermal_net_m", "continuous_current_A"):

@@ -60,6 +60,8 @@ def test_bare_numbers_are_si_and_options_have_defaults(tmp_path):
     ('["mass", "cost"]', '["mass", "beauty"]', r"\[objectives", "mass"),
     ('["mass", "cost"]', '["mass", "mass"]', r"\[objectives\]\.minimize", "once"),
     ('["mass", "cost"]', "[]", r"\[objectives\]\.minimize", "at least 1"),
+    ('["mass", "cost"]', '["mass", "cost"]\nmin_compliance = 1.5', r"\[objectives\]\.min_compliance", "from 0 to 1"),
+    ('["mass", "cost"]', '["mass", "cost"]\nmin_compliance = "-5 %"', r"\[objectives\]\.min_compliance", "negative"),
     ('blocked_force = "2.5 kN"\n', "", r"\[requirements\]\.blocked_force", "missing"),
     ('max_temperature = "100 degC"', 'max_temperature = "100 degC"\nmax_temprature = 3', "max_temprature", "unknown"),
     ('max_temperature = "100 degC"', 'max_temperature = "-300 degC"', "max_temperature", "absolute zero"),

@@ -24,10 +24,10 @@ from .studies import ROBUST_OUTPUTS, SWEEP_OUTPUTS, StudyResult, robust, run_rob
 from ..threads import one_blas_thread
 
 # every computing entry point runs with one BLAS thread (sizing/threads.py)
-(catalog_add, catalog_import_mgdb, diagnose, diagnose_check, evaluate, fit_dc_motor, fit_hysteresis, robust,
- run_diagnose, run_robust, run_solve, run_sweep, solve, sweep) = map(one_blas_thread, (
-    catalog_add, catalog_import_mgdb, diagnose, diagnose_check, evaluate, fit_dc_motor, fit_hysteresis, robust,
-    run_diagnose, run_robust, run_solve, run_sweep, solve, sweep))
+(catalog_add, catalog_import_mgdb, diagnose, diagnose_check, evaluate, fit_dc_motor, fit_hysteresis,
+ judge_designs, robust, run_diagnose, run_robust, run_solve, run_sweep, solve, sweep) = map(one_blas_thread, (
+    catalog_add, catalog_import_mgdb, diagnose, diagnose_check, evaluate, fit_dc_motor, fit_hysteresis,
+    judge_designs, robust, run_diagnose, run_robust, run_solve, run_sweep, solve, sweep))
 
 __all__ = [
     "CatalogEntry", "CatalogUpdate", "DIAGNOSE_OUTPUTS", "DiagnoseResult", "EvaluateResult", "FitResult",

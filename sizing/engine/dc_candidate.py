@@ -7,6 +7,8 @@ from __future__ import annotations
 
 from .dc_candidates import dc_duration
 from .dc_assumed import resting
+from .dc_parts import MASS_PARTS
+from .dc_structure import structure_members
 from .records import DCActuatorDesign, DCDesign, Simulation
 
 
@@ -58,5 +60,8 @@ def parts_candidate(req, catalog, d: DCDesign) -> dict:
                    "electronics_bay_temperature": o.electronics_bay_temperature},
         "reason": "" if not d.missed or stage == "simulated"
                   else "ruled out before simulation: " + ", ".join(d.missed),
+        "mass_breakdown_kg": {name: d.static[f"mass_{name}_kg"] for name in MASS_PARTS
+                              if f"mass_{name}_kg" in d.static},
+        "structure": structure_members(d.static),
         **resting(catalog, components, d.margins),
     }

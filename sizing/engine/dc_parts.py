@@ -27,7 +27,10 @@ a combination is ruled out by every margin below zero, and keeps them:
   (physics/motor.py) against the duty's torque;
 - gear_torque: the gear's continuous output torque against the holding load;
 - holding: the winding after holding the steady load on the back-driven
-  screw for the hold time (no brake).
+  screw for the hold time (no brake);
+- rod_buckling, bearing_life, bearing_static, housing_stress, clevis: the
+  structure around the screw, sized for the force the drive can push
+  (``dc_structure``), each member's check.
 k_t is taken with the magnets at the holding duty's winding temperature.
 Continuous choices are catalog values (lead, ratio): the feasible ratios of
 a motor-screw pair form an interval (force needs N >= N_min, speed N <=
@@ -42,13 +45,11 @@ import numpy as np
 
 from ..physics import motor as motor_phys
 from ..physics import screw as screw_phys
+from . import dc_structure
 
 # Assumed construction (README, DC sizing): stated here, used everywhere.
 TRAVEL_FACTOR = 1.10          # designed travel over the required stroke: 10 % for end stops and rigging (assumed)
 SCREW_EXTRA_LENGTH = 0.05     # m: nut, bearings and end stop beyond the travel (assumed)
-ROD_MASS = 0.15               # kg: output rod and rod end moving with the nut (assumed)
-HOUSING_MASS_PER_LENGTH = 1.2  # kg/m: aluminium tube housing the screw (assumed, 2 mm wall, ~50 mm)
-HOUSING_FIXED_MASS = 0.25     # kg: bearing block, end caps, rod-end clevis (assumed)
 ASSEMBLY_USD = 600.0          # assumed: machining and assembly of housing and bearing block
 REQUIRED_LIFE_H = 200.0       # assumed: ground test, qualification and flights of a glide body
 STATIC_SAFETY_REQUIRED = screw_phys.STATIC_SAFETY_WITH_VIBRATION   # C0 / F_peak (THK, with vibration)
@@ -164,15 +165,17 @@ def parts_at(lists, im, isc, ig, idr) -> PartArrays:
     return PartArrays(iM[im], iS[isc], iG[ig], iD[idr], v)
 
 
-def plant(p: PartArrays, stroke: float, temperature: float) -> dict[str, np.ndarray]:
+def plant(p: PartArrays, stroke: float, temperature: float, moving_structure=0.0) -> dict[str, np.ndarray]:
     """Seed eq. 13 of each combination, referred to the motor shaft:
     J = J_motor + J_gear + J_screw / N^2 + m_moving (l / 2 pi N)^2,
-    c1 = -b / J, c2 = k_t(T) / J, effective lead l / N (m per motor turn)."""
+    c1 = -b / J, c2 = k_t(T) / J, effective lead l / N (m per motor turn).
+    The moving mass is the nut and ``moving_structure`` (kg: the rod and
+    its rod-end eye, ``dc_structure``)."""
     v = p.values
     N = v["gear_ratio"]
     lead_eff = v["screw_lead"] / N
     screw_len = TRAVEL_FACTOR * stroke + SCREW_EXTRA_LENGTH
-    moving = v["screw_nut_mass"] + ROD_MASS
+    moving = v["screw_nut_mass"] + moving_structure
     J = (v["motor_rotor_inertia"] + v["gear_inertia"] + v["screw_inertia_per_length"] * screw_len / N**2
          + moving * (lead_eff / (2 * np.pi)) ** 2)
     kt = motor_phys.torque_constant_at(v["motor_torque_constant"], v["motor_torque_constant_temperature_coefficient"],
@@ -250,6 +253,13 @@ def static_screen(p: PartArrays, req, loads, ambient=None, settings=None) -> tup
     v_max = screw_phys.output_speed(w_max, lead)
     P_cr = screw_phys.buckling_load(v["screw_elastic_modulus"], v["screw_diameter"], pl["screw_length"])
     rev_per_s = 2 * r.stroke / v["screw_lead"] * req.duty.strokes_per_second
+    # the structure around the screw, sized for what the drive can push; its moving part joins the plant
+    built = dc_structure.size(v, TRAVEL_FACTOR * r.stroke, np.maximum(F_peak, r.blocked_force), F_load,
+                              rev_per_s, float(pl["screw_length"][0]) if len(p) else 0.0)
+    moved = plant(p, r.stroke, T_op, built["moving_mass_kg"])
+    for key in ("inertia", "c1"):
+        pl[key] = moved[key]
+    pl["c2"] = kt / pl["inertia"]
     life_h = screw_phys.l10_revolutions(v["screw_dynamic_load_rating"], F_load) / rev_per_s / 3600.0
     n_low, n_high = ratio_interval(kt, v["motor_back_emf_constant"], r_hot, i_max, v["screw_lead"], eta,
                                    v["drive_bus_voltage"], v["motor_max_speed"], r.blocked_force, F_load, r.speed)
@@ -265,7 +275,10 @@ def static_screen(p: PartArrays, req, loads, ambient=None, settings=None) -> tup
         "holding_power_with_brake_W": np.zeros(len(p)), "static_safety": screw_phys.static_safety(v["screw_static_load_rating"], F_peak),
         "continuous_torque_rated_N_m": motor_phys.continuous_torque_at(v["motor_continuous_torque"],
                                                                        v["motor_max_winding_temperature"], T),
+        "moving_mass_kg": v["screw_nut_mass"] + built["moving_mass_kg"],
+        **dc_structure.static_figures(built),
     }
+    static.update({f"mass_{name}_kg": m for name, m in mass_breakdown(p, req, static).items()})
     margins = {
         "blocked_force": F_peak / r.blocked_force - 1.0,
         "speed": v_max / r.speed - 1.0,
@@ -282,6 +295,7 @@ def static_screen(p: PartArrays, req, loads, ambient=None, settings=None) -> tup
             F_load, v["screw_lead"], v["screw_efficiency"]), 1e-12) - 1.0,
         "continuous_torque": static["continuous_torque_rated_N_m"] / np.maximum(kt * rated["current_A"], 1e-12) - 1.0,
         "holding": temperature_margin(v["motor_max_winding_temperature"], end_of_hold),
+        **built["margins"],
     }
     return pl, static, margins
 
@@ -318,14 +332,28 @@ def ratio_interval(kt, ke, r_hot, i_max, lead, eta, u_bus, w_mech_motor, force, 
     return np.maximum(n_force, lo), hi
 
 
-def metrics(p: PartArrays, req, i_max) -> dict[str, np.ndarray]:
+MASS_PARTS = ("motor", "gear", "screw", "nut", "drive") + dc_structure.MEMBERS
+
+
+def mass_breakdown(p: PartArrays, req, static: dict) -> dict[str, np.ndarray]:
+    """Mass of each part and member (kg), (n,) arrays: the catalog parts,
+    the screw shaft over its length, and the structure (``dc_structure``)."""
+    v = p.values
+    L = TRAVEL_FACTOR * req.requirements.stroke + SCREW_EXTRA_LENGTH
+    out = {"motor": v["motor_mass"], "gear": v["gear_mass"], "screw": v["screw_mass_per_length"] * L,
+           "nut": v["screw_nut_mass"], "drive": v["drive_mass"]}
+    out.update({name: static[f"{name}_mass_kg"] for name in dc_structure.MEMBERS})
+    return out
+
+
+def metrics(p: PartArrays, req, static: dict) -> dict[str, np.ndarray]:
     """Mass, cost, volume and peak electrical power of each combination."""
     v = p.values
     L = TRAVEL_FACTOR * req.requirements.stroke + SCREW_EXTRA_LENGTH
-    housing = HOUSING_FIXED_MASS + HOUSING_MASS_PER_LENGTH * L
-    mass = (v["motor_mass"] + v["gear_mass"] + v["screw_mass_per_length"] * L + v["screw_nut_mass"] + ROD_MASS
-            + housing + v["drive_mass"])
+    mass = sum(static[f"mass_{name}_kg"] for name in MASS_PARTS)
     cost = v["motor_cost_usd"] + v["gear_cost_usd"] + v["screw_cost_usd"] + v["drive_cost_usd"] + ASSEMBLY_USD
-    # volume: the housing tube (screw diameter + 30 mm) plus motor and gear at 3000 kg/m^3 (assumed)
-    volume = np.pi / 4 * (v["screw_diameter"] + 0.03) ** 2 * L + (v["motor_mass"] + v["gear_mass"]) / 3000.0
-    return {"mass_kg": mass, "cost_usd": cost, "volume_m3": volume, "power_W": v["drive_bus_voltage"] * i_max}
+    # volume: the housing tube over its length plus motor and gear at 3000 kg/m^3 (assumed)
+    volume = (np.pi / 4 * static["housing_outer_diameter_m"] ** 2 * np.maximum(static["housing_length_m"], L)
+              + (v["motor_mass"] + v["gear_mass"]) / 3000.0)
+    return {"mass_kg": mass, "cost_usd": cost, "volume_m3": volume,
+            "power_W": v["drive_bus_voltage"] * static["current_limit_A"]}

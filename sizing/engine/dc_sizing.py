@@ -107,7 +107,7 @@ def dc_parts_designs(req, catalog, loads, progress=None, duration=None, exhausti
     if len(p) == 0:
         return DCPartsOutcome((), frozen(ruled_out), combinations or 0)
     pl, static, margins = static_screen(p, req, loads)
-    screen = _Screen(p, pl, static, margins, metrics(p, req, static["current_limit_A"]),
+    screen = _Screen(p, pl, static, margins, metrics(p, req, static),
                      ctl.pole_target(req.stroke_time, p.values["drive_rate"]))
     gains = ctl.ipd_gains(pl["c1"], pl["c2"], pl["lead"], screen.pole)
     real_ids = {e.id for _, e in catalog.entries() if dc_verdict.is_real(e)}

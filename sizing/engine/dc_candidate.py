@@ -42,6 +42,21 @@ def actuator_candidate(req, catalog, d: DCActuatorDesign) -> dict:
     }
 
 
+# Checks a design from parts can be ruled out of, and why: a margin with
+# nothing to check (an unrated part, no gear) is left out of ``margins``,
+# never counted as passed, and named in ``unchecked`` with its reason.
+UNCHECKED = {
+    "magnet_temperature": "the motor's catalog entry gives no magnet temperature rating",
+    "gear_torque": "no gear (direct drive)",
+    "static_safety": "the screw's catalog entry gives no static load rating",
+}
+
+
+def unchecked(margins) -> list[dict]:
+    """The checks left out of ``margins``, each with its reason."""
+    return [{"check": name, "reason": why} for name, why in UNCHECKED.items() if name not in margins]
+
+
 def parts_candidate(req, catalog, d: DCDesign) -> dict:
     """The record of a DC design from parts."""
     r, o = req.requirements, req.options
@@ -63,5 +78,6 @@ def parts_candidate(req, catalog, d: DCDesign) -> dict:
         "mass_breakdown_kg": {name: d.static[f"mass_{name}_kg"] for name in MASS_PARTS
                               if f"mass_{name}_kg" in d.static},
         "structure": structure_members(d.static),
+        "unchecked": unchecked(d.margins),
         **resting(catalog, components, d.margins),
     }

@@ -128,6 +128,7 @@ def _columns(lists) -> dict:
         for name in MOTOR_FIELDS:
             cols["motor_" + name] = _col(M, name)
         cols["motor_magnet_max_temperature"] = _col(M, "magnet_max_temperature", np.inf)
+        cols["motor_frameless"] = np.array([float(is_frameless(m)) for m in M])
         for name in SCREW_FIELDS:
             cols["screw_" + name] = _col(S, name)
         cols["screw_static_load_rating"] = _col(S, "static_load_rating", np.inf)
@@ -332,7 +333,29 @@ def ratio_interval(kt, ke, r_hot, i_max, lead, eta, u_bus, w_mech_motor, force, 
     return np.maximum(n_force, lo), hi
 
 
-MASS_PARTS = ("motor", "gear", "screw", "nut", "drive") + dc_structure.MEMBERS
+MASS_PARTS = ("motor", "motor_housing", "gear", "screw", "nut", "drive") + dc_structure.MEMBERS
+# A frameless kit (stator and rotor) needs the housing, shaft, bearings and
+# feedback a housed motor carries. Rule from the motor database: the mass of
+# housed motors of the closest form (maxon's outer-rotor flat EC motors, 26,
+# large diameter and short like the kits) against the frameless kits (Allied
+# HT and Megaflux, 148), each fitted as m = a T_c^b over continuous torque
+# (least squares in logs, catalogs/motors-mgdb.toml; tests/engine/
+# test_dc_structure.py refits them): housed 0.842 T^0.720, frameless
+# 0.543 T^0.771 (kg, N m). The kit carries the difference at its own torque.
+HOUSED_FIT = (0.842, 0.720)
+FRAMELESS_FIT = (0.543, 0.771)
+
+
+def frameless_housing_mass(continuous_torque):
+    """Housing, bearings and feedback of a frameless kit (kg): the housed
+    fit minus the frameless fit at its continuous torque (N m), at least 0."""
+    T = np.maximum(np.asarray(continuous_torque, float), 1e-6)
+    return np.maximum(HOUSED_FIT[0] * T ** HOUSED_FIT[1] - FRAMELESS_FIT[0] * T ** FRAMELESS_FIT[1], 0.0)
+
+
+def is_frameless(motor) -> bool:
+    """A catalog motor that is a frameless kit (its notes say so)."""
+    return (getattr(motor, "notes", None) or "").lower().startswith("frameless")
 
 
 def mass_breakdown(p: PartArrays, req, static: dict) -> dict[str, np.ndarray]:
@@ -340,7 +363,9 @@ def mass_breakdown(p: PartArrays, req, static: dict) -> dict[str, np.ndarray]:
     the screw shaft over its length, and the structure (``dc_structure``)."""
     v = p.values
     L = TRAVEL_FACTOR * req.requirements.stroke + SCREW_EXTRA_LENGTH
-    out = {"motor": v["motor_mass"], "gear": v["gear_mass"], "screw": v["screw_mass_per_length"] * L,
+    out = {"motor": v["motor_mass"],
+           "motor_housing": np.where(v["motor_frameless"] > 0, frameless_housing_mass(v["motor_continuous_torque"]), 0.0),
+           "gear": v["gear_mass"], "screw": v["screw_mass_per_length"] * L,
            "nut": v["screw_nut_mass"], "drive": v["drive_mass"]}
     out.update({name: static[f"{name}_mass_kg"] for name in dc_structure.MEMBERS})
     return out

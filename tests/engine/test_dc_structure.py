@@ -1,0 +1,104 @@
+"""The DC structure sized by the load (engine/dc_structure.py) and the
+frameless-kit housing rule (engine/dc_parts.py), against hand numbers and
+the data they come from."""
+import math
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from sizing.engine import dc_parts, dc_structure
+from sizing.physics import column
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def _values(n=1, **over):
+    """Part values of a 12 x 2 THK screw (BNK1202-3) for ``size``."""
+    v = {"screw_mass_per_length": 0.71, "screw_nut_mass": 0.05, "screw_diameter": 0.011,
+         "screw_elastic_modulus": 2.0e11}
+    v.update(over)
+    return {k: np.full(n, val, float) for k, val in v.items()}
+
+
+def test_rod_is_the_thinnest_column_that_carries_the_design_force():
+    """The rod's wall, re-checked with the column formula by hand: at the
+    sized diameter the critical load is the design force (or the floor
+    carries more); 1 % thinner it is not enough."""
+    F = np.array([2000.0, 20000.0, 60000.0])
+    r = dc_structure.rod(F, 0.012, 0.055)
+    bore, L = 0.012 + 2 * dc_structure.ROD_CLEARANCE, 0.055 + dc_structure.ROD_END_LENGTH
+    assert r["bore_m"] == pytest.approx(bore)
+    cap = lambda D: column.critical_load(205e9, 834e6, column.tube_area(D, bore),
+                                         column.tube_radius_of_gyration(D, bore), L, 2.0)
+    assert cap(r["outer_diameter_m"]) == pytest.approx(r["critical_load_N"])
+    sized = r["outer_diameter_m"] > bore + 2 * dc_structure.ROD_MIN_WALL + 1e-9
+    assert sized[-1]                                      # 60 kN is above the floor's capacity
+    assert r["critical_load_N"][sized] == pytest.approx(F[sized], rel=1e-6)
+    thinner = bore + 0.99 * (r["outer_diameter_m"][sized] - bore)
+    assert np.all(cap(thinner) < F[sized])
+    # mass: steel tube over its length
+    assert r["mass_kg"] == pytest.approx(7850 * math.pi / 4 * (r["outer_diameter_m"] ** 2 - bore**2) * L)
+
+
+def test_bearing_pair_by_life_and_static_safety_hand_computed():
+    """A 12 mm shaft at 1 kN holding, 40 rev/s: the 7200 pair gives L10 =
+    (7020 / 570)^3 10^6 / (40 x 3600) = 12 972 h; at a 6 kN peak its s0 =
+    3350 / (0.26 x 6000) = 2.15 >= 2; at 7 kN, 1.84: the 7201 (C0 3.8 kN,
+    bore 12 mm fits a 12 mm shaft) gives 2.09."""
+    b = dc_structure.thrust_bearing(np.array([6000.0, 7000.0]), 1000.0, 40.0, 0.012)
+    assert [dc_structure.BEARINGS[i][0] for i in b["index"]] == ["7200 BECBP", "7201 BECBP"]
+    assert b["life_h"][0] == pytest.approx((7020 / 570) ** 3 * 1e6 / (40 * 3600))
+    assert b["static_safety"] == pytest.approx([3350 / 1560, 3800 / 1820])
+    assert b["mass_kg"] == pytest.approx([0.060, 0.072])
+    # a journal too small for any bearing of the series: the check fails, not passes
+    tiny = dc_structure.size(_values(screw_mass_per_length=0.3), 0.05, np.array([100.0]), 50.0,
+                             np.array([10.0]), 0.1)
+    assert tiny["margins"]["bearing_life"][0] < 0 and tiny["margins"]["bearing_static"][0] < 0
+
+
+def test_housing_wall_from_its_rules():
+    """Small load: the wall floor or the stiffness rule binds (E_al A_h >= E_s A_screw);
+    large load: the column or eccentric stress, whose capacity then equals the design force."""
+    bore, L, screw_k = 0.03, 0.12, 2e11 * math.pi / 4 * 0.011**2 / 0.1
+    h = dc_structure.housing(np.array([100.0, 400e3]), bore, L, screw_k)
+    need = screw_k * L / 68.9e9
+    floor = max(bore + 2 * dc_structure.HOUSING_MIN_WALL, math.sqrt(bore**2 + 4 * need / math.pi))
+    assert h["outer_diameter_m"][0] == pytest.approx(floor)
+    assert h["capacity_N"][1] == pytest.approx(400e3, rel=1e-6)
+    # eccentric stress at the sized wall is at most the yield strength
+    D = h["outer_diameter_m"][1]
+    assert column.eccentric_stress(400e3, dc_structure.ECCENTRICITY, D, bore) <= 276e6 * (1 + 1e-6)
+
+
+def test_structure_grows_with_the_force_and_margins_are_finite():
+    F = np.array([100.0, 1000.0, 5000.0, 20000.0])
+    out = dc_structure.size(_values(4, screw_mass_per_length=1.387, screw_nut_mass=0.3, screw_diameter=0.013),
+                            0.055, F, F / 2, np.full(4, 5.0), 0.1)
+    assert np.all(np.diff(out["mass_kg"]) >= 0)
+    assert out["mass_kg"][-1] > out["mass_kg"][0]
+    for name, m in out["margins"].items():
+        assert np.all(np.isfinite(m)), name
+    assert set(out["margins"]) == set(dc_structure.MARGINS)
+
+
+def test_frameless_housing_rule_refits_the_database():
+    """The housed (maxon outer-rotor flat) and frameless (Allied) fits of
+    mass over continuous torque, recomputed from catalogs/motors-mgdb.toml."""
+    motors = tomllib.loads((ROOT / "catalogs" / "motors-mgdb.toml").read_text())["motor"]
+
+    def fit(rows):
+        T = np.array([m["continuous_torque"] for m in rows])
+        M = np.array([m["mass"] for m in rows])
+        b, log_a = np.polyfit(np.log(T), np.log(M), 1)
+        return math.exp(log_a), b
+
+    flat = [m for m in motors if m["manufacturer"] == "Maxon" and "Outer-rotor" in (m.get("notes") or "")]
+    kits = [m for m in motors if (m.get("notes") or "").startswith("Frameless")]
+    assert len(flat) == 26 and len(kits) == 148
+    for (a, b), (a0, b0) in ((fit(flat), dc_parts.HOUSED_FIT), (fit(kits), dc_parts.FRAMELESS_FIT)):
+        assert a == pytest.approx(a0, rel=0.01) and b == pytest.approx(b0, abs=0.002)
+    # at 1 N m: 0.842 - 0.543 = 0.299 kg of housing, bearings and feedback
+    assert dc_parts.frameless_housing_mass(1.0) == pytest.approx(0.299, abs=1e-3)
+    assert np.all(dc_parts.frameless_housing_mass(np.array([0.0, 0.05])) >= 0)

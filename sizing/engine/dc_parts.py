@@ -208,10 +208,12 @@ def winding(p: PartArrays, ambient, i_rms) -> dict[str, np.ndarray]:
 
 
 def temperature_margin(rated, required):
-    """search.temperature_margin, vectorised; an unbounded requirement (runaway) is -inf."""
+    """search.temperature_margin, vectorised. A winding that runs away
+    (required temperature unbounded) gets the margin's limit, -1 ((rated -
+    T) / T as T grows): a finite number that fails, as results.json needs."""
     required = np.asarray(required, float)
     with np.errstate(invalid="ignore"):
-        return np.where(np.isfinite(required), (np.asarray(rated) - required) / np.maximum(np.abs(required), 1.0), -np.inf)
+        return np.where(np.isfinite(required), (np.asarray(rated) - required) / np.maximum(np.abs(required), 1.0), -1.0)
 
 
 def static_screen(p: PartArrays, req, loads, ambient=None, settings=None) -> tuple[dict, dict, dict]:

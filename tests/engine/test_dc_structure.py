@@ -102,3 +102,43 @@ def test_frameless_housing_rule_refits_the_database():
     # at 1 N m: 0.842 - 0.543 = 0.299 kg of housing, bearings and feedback
     assert dc_parts.frameless_housing_mass(1.0) == pytest.approx(0.299, abs=1e-3)
     assert np.all(dc_parts.frameless_housing_mass(np.array([0.0, 0.05])) >= 0)
+
+
+def _dc_records(data):
+    from sizing.engine.dc_candidate import actuator_candidate, parts_candidate
+    from sizing.engine.dc_candidates import actuator_designs
+    from sizing.engine.dc_sizing import dc_parts_designs
+    from sizing.engine.evaluate import load_cases
+    from sizing.io.catalog import load_catalog
+    from sizing.io.requirements import parse_requirements
+    catalog = load_catalog()
+    req = parse_requirements(data, "requirements.toml")
+    loads = [c["load_N"] for c in load_cases(req.load)]
+    return ([parts_candidate(req, catalog, d) for d in dc_parts_designs(req, catalog, loads).designs]
+            + [actuator_candidate(req, catalog, d) for d in actuator_designs(req, catalog, loads)])
+
+
+@pytest.mark.parametrize("blocked", [None, pytest.param(100.0, marks=pytest.mark.slow), 1e3,
+                                     pytest.param(5e3, marks=pytest.mark.slow), 20e3])
+def test_no_dc_margin_is_infinite(blocked):
+    """The seed's case (blocked None) and the force probe (50 mm, 20 mm/s at
+    half the blocked force, 40 degC): every DC record's margins are finite
+    (an unrated part is named in ``unchecked``, never passed with inf), and
+    the record is strict JSON."""
+    import json
+    if blocked is None:
+        data = tomllib.loads((ROOT / "studies" / "seed-requirements.toml").read_text())
+    else:
+        data = {"requirements": {"stroke": "50 mm", "blocked_force": blocked, "speed": "20 mm/s",
+                                 "max_temperature": "40 degC"},
+                "load": {"force": [blocked / 2]}, "duty": {"strokes_per_second": 0.1}}
+    records = _dc_records(data)
+    assert records
+    for c in records:
+        assert all(math.isfinite(v) for v in c["margins"].values()), (c["id"], c["margins"])
+        json.dumps(c["margins"], allow_nan=False)
+        if c["variant"] == "parts":
+            assert {"rod_buckling", "bearing_life", "bearing_static", "housing_stress", "clevis"} <= set(c["margins"])
+            assert c["metrics"]["mass_kg"] == pytest.approx(sum(c["mass_breakdown_kg"].values()))
+            for u in c["unchecked"]:
+                assert u["check"] not in c["margins"] and u["reason"]

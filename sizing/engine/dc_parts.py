@@ -92,6 +92,25 @@ def enumerate_parts(catalog) -> PartArrays:
     return parts_at(lists, np.asarray(pm)[pair], isc, np.asarray(pg)[pair], idr)
 
 
+# A drive runs from a supply between this fraction of its rated bus and the
+# rated bus (assumed: compact servo drives accept about 4:1, e.g. maxon EPOS4
+# 50/8, 10-50 V; TGdrives TGZ-D-48, 0-48 V).
+DRIVE_SUPPLY_RANGE = 0.25
+
+
+def drives_for_supply(catalog, supply_voltage):
+    """The catalog with only the drives that run from ``supply_voltage``
+    (V; None: the catalog as it is), each at that bus: the speed ceiling,
+    the drive's voltage limit and the controller then follow the supply, so
+    the windings whose back-EMF suits it are the ones that meet the speed."""
+    if supply_voltage is None:
+        return catalog
+    from dataclasses import replace
+    drives = {k: d.model_copy(update={"bus_voltage": float(supply_voltage)}) for k, d in catalog.drives.items()
+              if DRIVE_SUPPLY_RANGE * d.bus_voltage <= supply_voltage <= d.bus_voltage * (1 + 1e-9)}
+    return replace(catalog, drives=drives)
+
+
 def part_lists(catalog) -> tuple[list, list, list, list]:
     """(motors, screws, [None] + gears, drives) in catalog order."""
     return (list(catalog.motors.values()), list(catalog.screws.values()),

@@ -26,7 +26,7 @@ from ..sim.metrics import step_metrics
 from . import dc_controller as ctl
 from .dc import OUTPUT_RATE_HZ, SETTLED
 from . import dc_search, dc_verdict
-from .dc_parts import enumerate_parts, metrics, mountable, static_screen, temperature_margin
+from .dc_parts import drives_for_supply, enumerate_parts, metrics, mountable, static_screen, temperature_margin
 from .dc_candidates import dc_duration
 from .rank import nondominated_levels, verdict
 from .records import DCDesign, DCParts, DCPartsOutcome, Simulation, frozen
@@ -96,6 +96,7 @@ def dc_parts_designs(req, catalog, loads, progress=None, duration=None, exhausti
     catalog of at most MIN_SIMULATED combinations: every combination, each
     recorded."""
     duration = dc_duration(req) if duration is None else duration
+    catalog = drives_for_supply(catalog, req.requirements.supply_voltage)
     ruled_out, combinations = {}, None
     small = sum(1 + len(g) for g in mountable(catalog)) * len(catalog.screws) * len(catalog.drives)
     if exhaustive or small <= MIN_SIMULATED:      # a few parts (evaluate, robust): every one simulated

@@ -27,6 +27,8 @@ class RequirementsTable(Strict):
     blocked_force: Qty("force", positive=True)
     speed: Qty("speed", positive=True)
     max_temperature: Qty("temperature")
+    # the bus the DC drive and winding are chosen for (None: each drive at its rated bus)
+    supply_voltage: Optional[Qty("voltage", positive=True)] = None
 
     @field_validator("stroke")
     @classmethod

@@ -142,3 +142,30 @@ def test_no_dc_margin_is_infinite(blocked):
             assert c["metrics"]["mass_kg"] == pytest.approx(sum(c["mass_breakdown_kg"].values()))
             for u in c["unchecked"]:
                 assert u["check"] not in c["margins"] and u["reason"]
+
+
+def test_supply_voltage_chooses_the_drives_and_sets_the_bus():
+    """At 24 V: the 28 V and 48 V drives run from it (within 4:1 of their
+    rated bus), the 96 V one too, the 270 V one does not; each runs at 24 V,
+    so the screen's voltage limit is at most 24 V. Without a supply the
+    catalog is untouched. A bad value is refused naming the field."""
+    from sizing.errors import InputError
+    from sizing.io.catalog import load_catalog
+    from sizing.io.requirements import parse_requirements
+    catalog = load_catalog()
+    at24 = dc_parts.drives_for_supply(catalog, 24.0)
+    assert dc_parts.drives_for_supply(catalog, None) is catalog
+    rated = {k: d.bus_voltage for k, d in catalog.drives.items()}
+    assert set(at24.drives) == {k for k, u in rated.items() if u / 4 <= 24.0 <= u}
+    assert "servo-270v-10a" not in at24.drives and "servo-48v-10a" in at24.drives
+    assert all(d.bus_voltage == 24.0 for d in at24.drives.values())
+    data = {"requirements": {"stroke": "50 mm", "blocked_force": "200 N", "speed": "20 mm/s",
+                             "max_temperature": "40 degC", "supply_voltage": "24 V"}, "load": {"force": [100.0]}}
+    req = parse_requirements(data, "r.toml")
+    assert req.requirements.supply_voltage == pytest.approx(24.0)
+    p = dc_parts.enumerate_parts(dc_parts.drives_for_supply(catalog, req.requirements.supply_voltage))
+    _, st, _ = dc_parts.static_screen(p.take(np.arange(min(len(p), 2000))), req, [100.0])
+    assert np.all(st["drive_voltage_V"] <= 24.0 + 1e-9)
+    data["requirements"]["supply_voltage"] = "24 kg"
+    with pytest.raises(InputError, match="supply_voltage"):
+        parse_requirements(data, "r.toml")

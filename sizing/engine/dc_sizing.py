@@ -24,7 +24,7 @@ from ..physics import screw as screw_phys
 from ..sim.dc_motor import DCMotorModel, simulate
 from ..sim.metrics import step_metrics
 from . import dc_controller as ctl
-from .dc import OUTPUT_RATE_HZ, SETTLED
+from .dc import SETTLED, output_times
 from . import dc_search, dc_verdict
 from .dc_parts import drives_for_supply, enumerate_parts, metrics, mountable, static_screen, temperature_margin
 from .dc_candidates import dc_duration
@@ -236,7 +236,7 @@ def _simulate(req, pl, static, gains, p, chosen, loads, duration, progress) -> d
     if len(chosen) == 0 or not loads:
         return {}
     S = req.requirements.stroke
-    t = np.arange(0.0, duration + 0.5 / OUTPUT_RATE_HZ, 1.0 / OUTPUT_RATE_HZ)
+    t = output_times(duration)
     ref = np.full_like(t, S)
     ref[0] = 0.0
     n_l = len(loads)

@@ -169,3 +169,15 @@ def test_supply_voltage_chooses_the_drives_and_sets_the_bus():
     data["requirements"]["supply_voltage"] = "24 kg"
     with pytest.raises(InputError, match="supply_voltage"):
         parse_requirements(data, "r.toml")
+
+
+def test_output_samples_scale_with_the_duration():
+    """The seed's 1.6 s response keeps 2 kHz; a 100 mm stroke at 3 mm/s
+    (133 s simulated) keeps the same 3200 samples, 800 per stroke time."""
+    from sizing.engine import dc
+    assert dc.output_rate(1.6) == dc.OUTPUT_RATE_HZ
+    assert len(dc.output_times(1.6)) == 3201
+    T = 4 * 0.1 / 0.003
+    t = dc.output_times(T)
+    assert len(t) == pytest.approx(3201, abs=1) and t[-1] == pytest.approx(T, rel=1e-3)
+    assert dc.output_rate(T) * (T / 4) == pytest.approx(800)

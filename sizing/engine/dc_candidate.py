@@ -47,14 +47,17 @@ def actuator_candidate(req, catalog, d: DCActuatorDesign) -> dict:
 # never counted as passed, and named in ``unchecked`` with its reason.
 UNCHECKED = {
     "magnet_temperature": "the motor's catalog entry gives no magnet temperature rating",
-    "gear_torque": "no gear (direct drive)",
+    "gear_torque": "the gear's catalog entry gives no continuous output torque",
     "static_safety": "the screw's catalog entry gives no static load rating",
 }
 
 
-def unchecked(margins) -> list[dict]:
+def unchecked(margins, components: dict) -> list[dict]:
     """The checks left out of ``margins``, each with its reason."""
-    return [{"check": name, "reason": why} for name, why in UNCHECKED.items() if name not in margins]
+    reasons = dict(UNCHECKED)
+    if components.get("gear") is None:
+        reasons["gear_torque"] = "no gear (direct drive)"
+    return [{"check": name, "reason": why} for name, why in reasons.items() if name not in margins]
 
 
 def parts_candidate(req, catalog, d: DCDesign) -> dict:
@@ -78,6 +81,6 @@ def parts_candidate(req, catalog, d: DCDesign) -> dict:
         "mass_breakdown_kg": {name: d.static[f"mass_{name}_kg"] for name in MASS_PARTS
                               if f"mass_{name}_kg" in d.static},
         "structure": structure_members(d.static),
-        "unchecked": unchecked(d.margins),
+        "unchecked": unchecked(d.margins, components),
         **resting(catalog, components, d.margins),
     }

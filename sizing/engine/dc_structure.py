@@ -150,7 +150,7 @@ def housing(force, bore, length, screw_stiffness):
 
 
 def end_caps(force, housing_outer, housing_bore, bearing_od, bearing_width, rod_outer):
-    """Bearing block (a ring round the pair, closed by a plate carrying the
+    """Bearing block (a ring around the pair, closed by a plate carrying the
     force) and the rod-end cap holding the guide bushing (m, kg)."""
     q = force / (np.pi * (housing_bore / 2) ** 2)
     plate_t = np.maximum(plate.plate_thickness_for_stress(q, housing_bore / 2, ALUMINIUM["yield"],
@@ -220,7 +220,7 @@ RULES = {
             "at the ultimate factor", "rod_buckling"),
     "thrust_bearing": ("back-to-back pair of 40 degree angular contact bearings, the lightest of the "
                        "series with L10 life (ISO 281) and static safety (ISO 76)", "bearing_life"),
-    "housing": ("6061 tube round nut, bearings and guide: wall from the floor, the column, the "
+    "housing": ("6061 tube around nut, bearings and guide: wall from the floor, the column, the "
                 "eccentric load and an axial stiffness at least the screw's", "housing_stress"),
     "end_caps": ("bearing block (ring and plate carrying the force) and rod-end guide cap", "housing_stress"),
     "clevises": ("pin in double shear and eye in bearing at each end", "clevis"),

@@ -30,7 +30,8 @@ each with its mass and its check as a margin (achieved / needed - 1):
 - ``end_caps``: the bearing block (a ring holding the pair, closed by a
   plate carrying F_d: ``physics/structure.plate_thickness_for_stress``,
   simply supported) and the rod-end cap carrying the guide bushing.
-- ``clevises``: a pin-and-lug fitting at each end (``physics/clevis``).
+- ``clevises``: a pin-and-lug fitting at each end, the pin sized for shear
+  and bending, the eye for bearing (``physics/clevis``).
   Margin ``clevis``.
 
 The moving mass adds the rod and the rod-end eye to the nut.
@@ -165,10 +166,14 @@ def end_caps(force, housing_outer, housing_bore, bearing_od, bearing_width, rod_
 
 def clevises(force):
     """A pin-and-lug fitting at each end; the rod end's eye moves with the rod."""
-    pin = np.maximum(clevis_phys.pin_diameter(force, STEEL["yield"]), PIN_MIN_DIAMETER)
-    t = np.maximum(clevis_phys.eye_thickness(force, pin, STEEL["yield"]), LUG_MIN_THICKNESS)
+    Sy = STEEL["yield"]
+    pin = np.maximum.reduce([clevis_phys.pin_diameter(force, Sy), clevis_phys.pin_bending_diameter(force, Sy),
+                             np.full(np.shape(force), PIN_MIN_DIAMETER)])
+    t = np.maximum(clevis_phys.eye_thickness(force, pin, Sy), LUG_MIN_THICKNESS)
     one = STEEL["density"] * clevis_phys.fitting_volume(pin, t)
-    capacity = np.minimum(np.pi * pin**2 / 2 * STEEL["yield"] / np.sqrt(3), pin * t * STEEL["yield"])
+    # the force at which shear, bearing or bending reaches yield (bending grows as F t / 4 at fixed t)
+    capacity = np.minimum.reduce([np.pi * pin**2 / 2 * Sy / np.sqrt(3), pin * t * Sy,
+                                  Sy * np.pi * pin**3 / (8 * t)])
     return {"pin_diameter_m": pin, "eye_thickness_m": t, "capacity_N": capacity, "mass_kg": 2 * one,
             "moving_mass_kg": one / 2}
 
@@ -223,7 +228,7 @@ RULES = {
     "housing": ("6061 tube around nut, bearings and guide: wall from the floor, the column, the "
                 "eccentric load and an axial stiffness at least the screw's", "housing_stress"),
     "end_caps": ("bearing block (ring and plate carrying the force) and rod-end guide cap", "housing_stress"),
-    "clevises": ("pin in double shear and eye in bearing at each end", "clevis"),
+    "clevises": ("pin in double shear and bending, eye in bearing, at each end", "clevis"),
 }
 
 

@@ -16,6 +16,17 @@ S_y of aircraft practice); its net section across the hole, (w - d) t,
 carries F at w = 2 d at the same stress. The fork's two lugs carry half
 the force each, together the eye's thickness.
 
+The pin also bends: with the eye's load spread over its thickness t and
+each fork lug's over t / 2, without a gap, the moment at the pin's middle
+is M = (F / 2) (t / 4 + t / 4) = F t / 4 (the lug-and-pin analysis of Bruhn,
+Analysis and Design of Flight Vehicle Structures, ch. D1, without a gap or
+"peaking"), sigma = 32 M / (pi d^3). With t = F / (d S_y) this is
+sigma = 8 F^2 / (pi d^4 S_y), at most S_y when
+
+    d >= (8 / pi)^(1/4) sqrt(F / S_y)
+
+which needs a thicker pin than shear (sqrt(2 sqrt 3 / pi) sqrt(F / S_y)).
+
 Vectorised over candidates; SI.
 """
 from __future__ import annotations
@@ -29,6 +40,17 @@ def pin_diameter(force, yield_strength):
     """Pin diameter (m) in double shear at the distortion-energy shear yield."""
     tau = np.asarray(yield_strength, float) / np.sqrt(3.0)
     return np.sqrt(2 * np.abs(np.asarray(force, float)) / (np.pi * tau))
+
+
+def pin_bending_diameter(force, yield_strength):
+    """Pin diameter (m) whose bending stress in a clevis sized by
+    ``eye_thickness`` is the yield strength: (8 / pi)^(1/4) sqrt(F / S_y)."""
+    return (8 / np.pi) ** 0.25 * np.sqrt(np.abs(np.asarray(force, float)) / np.asarray(yield_strength, float))
+
+
+def pin_bending_stress(force, diameter, thickness):
+    """Bending stress (Pa) of the pin: M = F t / 4, sigma = 32 M / (pi d^3)."""
+    return 32 * np.abs(np.asarray(force, float)) * np.asarray(thickness) / 4 / (np.pi * np.asarray(diameter) ** 3)
 
 
 def pin_shear_stress(force, diameter):

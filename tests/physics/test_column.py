@@ -91,3 +91,16 @@ def test_clevis_pin_and_eye_hand_computed():
     # the fitting's volume: lugs of total 2 t, 2d x 2d less the hole, plus the pin
     assert clevis.fitting_volume(0.01, 0.005) == pytest.approx(
         2 * 0.005 * (0.02**2 - math.pi / 4 * 1e-4) + math.pi / 4 * 1e-4 * 0.01)
+
+
+def test_clevis_pin_bending_hand_computed():
+    """At the eye thickness t = F / (d S_y) the pin's moment F t / 4 gives
+    sigma = 8 F^2 / (pi d^4 S_y): at d = (8/pi)^(1/4) sqrt(F / S_y) it is S_y.
+    10 kN, 834 MPa: d = 1.2633 x 3.4627 mm = 4.374 mm, above shear's 3.636 mm."""
+    F, Sy = 1e4, 834e6
+    d = clevis.pin_bending_diameter(F, Sy)
+    assert d == pytest.approx((8 / math.pi) ** 0.25 * math.sqrt(F / Sy))
+    assert d == pytest.approx(4.374e-3, rel=1e-3)
+    assert d > clevis.pin_diameter(F, Sy)
+    t = clevis.eye_thickness(F, d, Sy)
+    assert clevis.pin_bending_stress(F, d, t) == pytest.approx(Sy, rel=1e-9)

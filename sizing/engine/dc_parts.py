@@ -27,7 +27,8 @@ a combination is ruled out by every margin below zero, and keeps them:
   (physics/motor.py) against the duty's torque;
 - gear_torque: the gear's continuous output torque against the holding load;
 - holding: the winding after holding the steady load on the back-driven
-  screw for the hold time (no brake);
+  screw for the hold time (no brake; with ``[options] dc_brake`` the brake
+  holds and the winding carries no current, the brake's mass is counted);
 - rod_buckling, bearing_life, bearing_static, housing_stress, clevis: the
   structure around the screw, sized for the force the drive can push
   (``dc_structure``), each member's check.
@@ -264,6 +265,9 @@ def static_screen(p: PartArrays, req, loads, ambient=None, settings=None) -> tup
     # holding the steady load on the back-driven screw for the hold time, no brake
     t_hold = screw_phys.holding_torque(F_load, v["screw_lead"], SCREW_BACK_EFFICIENCY, v["gear_ratio"],
                                        v["gear_efficiency"])
+    brake = brake_mass(t_hold) if o.dc_brake else np.zeros(len(p))
+    if o.dc_brake:          # the brake holds: the winding carries no current while holding
+        t_hold = np.zeros(len(p))
     held = derated(p, T_op, t_hold)
     hold_power = r_hot * held["current_A"] ** 2
     end_of_hold = motor_phys.holding_temperature(rated["temperature_degC"], held["temperature_degC"],
@@ -297,7 +301,7 @@ def static_screen(p: PartArrays, req, loads, ambient=None, settings=None) -> tup
         "holding_power_with_brake_W": np.zeros(len(p)), "static_safety": screw_phys.static_safety(v["screw_static_load_rating"], F_peak),
         "continuous_torque_rated_N_m": motor_phys.continuous_torque_at(v["motor_continuous_torque"],
                                                                        v["motor_max_winding_temperature"], T),
-        "moving_mass_kg": v["screw_nut_mass"] + built["moving_mass_kg"],
+        "moving_mass_kg": v["screw_nut_mass"] + built["moving_mass_kg"], "brake_mass_kg": brake,
         **dc_structure.static_figures(built),
     }
     static.update({f"mass_{name}_kg": m for name, m in mass_breakdown(p, req, static).items()})
@@ -354,7 +358,18 @@ def ratio_interval(kt, ke, r_hot, i_max, lead, eta, u_bus, w_mech_motor, force, 
     return np.maximum(n_force, lo), hi
 
 
-MASS_PARTS = ("motor", "motor_housing", "gear", "screw", "nut", "drive") + dc_structure.MEMBERS
+MASS_PARTS = ("motor", "motor_housing", "brake", "gear", "screw", "nut", "drive") + dc_structure.MEMBERS
+# Holding brake on the motor shaft ([options] dc_brake): a spring-applied
+# brake rated for the holding torque. assumed: 0.05 kg + 0.5 kg per N m of
+# rated torque, the order of small servo-motor holding brakes (0.1-0.2 kg
+# for 0.1-0.4 N m); no brake datasheet was retrieved.
+BRAKE_FIXED_MASS = 0.05
+BRAKE_MASS_PER_TORQUE = 0.5
+
+
+def brake_mass(holding_torque):
+    """Mass (kg) of a holding brake for ``holding_torque`` (N m, motor shaft)."""
+    return BRAKE_FIXED_MASS + BRAKE_MASS_PER_TORQUE * np.abs(np.asarray(holding_torque, float))
 # A frameless kit (stator and rotor) needs the housing, shaft, bearings and
 # feedback a housed motor carries. Rule from the motor database: the mass of
 # housed motors of the closest form (maxon's outer-rotor flat EC motors, 26,
@@ -386,6 +401,7 @@ def mass_breakdown(p: PartArrays, req, static: dict) -> dict[str, np.ndarray]:
     L = TRAVEL_FACTOR * req.requirements.stroke + SCREW_EXTRA_LENGTH
     out = {"motor": v["motor_mass"],
            "motor_housing": np.where(v["motor_frameless"] > 0, frameless_housing_mass(v["motor_continuous_torque"]), 0.0),
+           "brake": static["brake_mass_kg"],
            "gear": v["gear_mass"], "screw": v["screw_mass_per_length"] * L,
            "nut": v["screw_nut_mass"], "drive": v["drive_mass"]}
     out.update({name: static[f"{name}_mass_kg"] for name in dc_structure.MEMBERS})

@@ -82,6 +82,7 @@ class OptionsTable(Strict):
     # amplifier units a piezo drive may put in parallel (assumed: one rack)
     max_amplifier_units: int = Field(16, ge=1, le=1000)
     dc_motors: bool = True                                # rank the catalog's DC actuators too
+    dc_brake: bool = False                                # a holding brake on every DC design from parts
     # end cap, base plate and frame each at least this x the stacks' stiffness; the
     # geometric program makes them stiffer where the blocked force needs it. 3 is the reviewer's
     # "frame three times stiffer than the stacks" (10-18 kg of 6061 for a 9-stack design);

@@ -181,3 +181,29 @@ def test_output_samples_scale_with_the_duration():
     t = dc.output_times(T)
     assert len(t) == pytest.approx(3201, abs=1) and t[-1] == pytest.approx(T, rel=1e-3)
     assert dc.output_rate(T) * (T / 4) == pytest.approx(800)
+
+
+def test_brake_holds_the_load_and_weighs_its_rule():
+    """[options] dc_brake: the winding carries no current while holding, so
+    the holding margin is at least the one without; the brake's mass is
+    0.05 kg + 0.5 kg per N m of the back-driven holding torque, and the
+    design's mass grows by exactly it."""
+    from sizing.io.catalog import load_catalog
+    from sizing.io.requirements import load_requirements
+    from sizing.physics import screw
+    req, _ = load_requirements(ROOT / "studies" / "seed-requirements.toml")
+    braked = req.model_copy(update={"options": req.options.model_copy(update={"dc_brake": True})})
+    p = dc_parts.enumerate_parts(load_catalog())
+    p = p.take(np.arange(0, len(p), max(1, len(p) // 500)))
+    loads = [500.0, 1209.675]
+    _, st0, m0 = dc_parts.static_screen(p, req, loads)
+    _, st1, m1 = dc_parts.static_screen(p, braked, loads)
+    v = p.values
+    t_hold = screw.holding_torque(1209.675, v["screw_lead"], dc_parts.SCREW_BACK_EFFICIENCY, v["gear_ratio"],
+                                  v["gear_efficiency"])
+    assert st1["brake_mass_kg"] == pytest.approx(0.05 + 0.5 * t_hold)
+    assert np.all(st0["brake_mass_kg"] == 0)
+    assert dc_parts.metrics(p, braked, st1)["mass_kg"] == pytest.approx(
+        dc_parts.metrics(p, req, st0)["mass_kg"] + st1["brake_mass_kg"])
+    assert np.all(m1["holding"] >= m0["holding"] - 1e-12)
+    assert np.all(st1["holding_power_W"] == 0)

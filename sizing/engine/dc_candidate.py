@@ -75,7 +75,9 @@ def parts_candidate(req, catalog, d: DCDesign) -> dict:
         "design": {"technology": "dc_motor", **components, "step": r.stroke, "duration": d.duration,
                    "temperature": T, "speed": r.speed, "strokes_per_second": req.duty.strokes_per_second,
                    "amplifier_location": o.amplifier_location,
-                   "electronics_bay_temperature": o.electronics_bay_temperature},
+                   "electronics_bay_temperature": o.electronics_bay_temperature,
+                   **({} if r.supply_voltage is None else {"supply_voltage": r.supply_voltage}),
+                   **({"brake": True} if o.dc_brake else {})},
         "reason": "" if not d.missed or stage == "simulated"
                   else "ruled out before simulation: " + ", ".join(d.missed),
         "mass_breakdown_kg": {name: d.static[f"mass_{name}_kg"] for name in MASS_PARTS

@@ -97,6 +97,8 @@ class DCDesignFile(Strict):
     strokes_per_second: float = Field(1.0, gt=0.0, allow_inf_nan=False)
     amplifier_location: Literal["bay", "actuator"] = "bay"
     electronics_bay_temperature: Qty("temperature") = 30.0
+    supply_voltage: Optional[Qty("voltage", positive=True)] = None   # design from parts: the drive's bus
+    brake: bool = False                                               # design from parts: a holding brake
     load: LoadTable = Field(default_factory=LoadTable)
     notes: Optional[str] = None
 

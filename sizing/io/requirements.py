@@ -258,9 +258,11 @@ def design_requirements(design, loads: list[float]) -> RequirementsFile:
     evaluate``: its step, speed (the controller rule), temperature, duty and
     drive location; blocked force 1 N (evaluate reports figures, not that
     margin)."""
+    supply = {} if design.supply_voltage is None else {"supply_voltage": design.supply_voltage}
     return RequirementsFile.model_validate({
         "requirements": {"stroke": design.step, "blocked_force": 1.0, "speed": design.speed,
-                         "max_temperature": design.temperature},
+                         "max_temperature": design.temperature, **supply},
         "load": {"force": list(loads)}, "duty": {"strokes_per_second": design.strokes_per_second},
         "options": {"amplifier_location": design.amplifier_location,
-                    "electronics_bay_temperature": design.electronics_bay_temperature}})
+                    "electronics_bay_temperature": design.electronics_bay_temperature,
+                    "dc_brake": design.brake}})

@@ -207,3 +207,30 @@ def test_brake_holds_the_load_and_weighs_its_rule():
         dc_parts.metrics(p, req, st0)["mass_kg"] + st1["brake_mass_kg"])
     assert np.all(m1["holding"] >= m0["holding"] - 1e-12)
     assert np.all(st1["holding_power_W"] == 0)
+
+
+def test_a_24_v_braked_design_round_trips_through_evaluate(tmp_path):
+    """The design block of a design solved on a 24 V supply with a brake
+    carries both; evaluated, it reproduces the mass and margins."""
+    import json
+    from sizing import api
+    from sizing.engine.dc_candidate import parts_candidate
+    from sizing.engine.dc_sizing import dc_parts_designs
+    from sizing.engine.rank import verdict
+    from sizing.io.catalog import load_catalog
+    from sizing.io.requirements import parse_requirements
+    catalog = load_catalog()
+    data = {"requirements": {"stroke": "50 mm", "blocked_force": "300 N", "speed": "30 mm/s",
+                             "max_temperature": "40 degC", "supply_voltage": "24 V"},
+            "load": {"force": [150.0]}, "duty": {"strokes_per_second": 0.1}, "options": {"dc_brake": True}}
+    req = parse_requirements(data, "r.toml")
+    feasible = [d for d in dc_parts_designs(req, catalog, [150.0]).designs if verdict(dict(d.margins))[0]]
+    c = parts_candidate(req, catalog, min(feasible, key=lambda d: d.metrics["mass_kg"]))
+    assert c["design"]["supply_voltage"] == 24.0 and c["design"]["brake"] is True
+    assert c["controller"]["bus_voltage_V"] == 24.0 and c["mass_breakdown_kg"]["brake"] > 0
+    lines = [f"{k} = {json.dumps(v)}" for k, v in c["design"].items() if v is not None]
+    (tmp_path / "d.toml").write_text("\n".join(lines + ["[load]", "force = [150.0]"]) + "\n")
+    e = api.evaluate(tmp_path / "d.toml")
+    assert e["metrics"]["mass_kg"] == pytest.approx(c["metrics"]["mass_kg"], rel=0.005)
+    for k, v in e["margins"].items():
+        assert v == pytest.approx(c["margins"][k], rel=0.005, abs=0.005), k

@@ -30,6 +30,7 @@ each with its mass and its check as a margin (achieved / needed - 1):
 - ``end_caps``: the bearing block (a ring holding the pair, closed by a
   plate carrying F_d: ``physics/structure.plate_thickness_for_stress``,
   simply supported) and the rod-end cap carrying the guide bushing.
+  Margin ``end_cap_stress``.
 - ``clevises``: a pin-and-lug fitting at each end, the pin sized for shear
   and bending, the eye for bearing (``physics/clevis``).
   Margin ``clevis``.
@@ -87,7 +88,7 @@ BEARINGS = (
     ("7208 BECBP", 0.040, 0.080, 0.018, 36400.0, 26000.0, 0.370),
 )
 MEMBERS = ("rod", "thrust_bearing", "housing", "end_caps", "clevises")
-MARGINS = ("rod_buckling", "bearing_life", "bearing_static", "housing_stress", "clevis")
+MARGINS = ("rod_buckling", "bearing_life", "bearing_static", "housing_stress", "end_cap_stress", "clevis")
 
 
 def shaft_diameter(mass_per_length):
@@ -161,7 +162,9 @@ def end_caps(force, housing_outer, housing_bore, bearing_od, bearing_width, rod_
                    + np.pi / 4 * housing_outer**2 * plate_t)
     guide = GUIDE_LENGTH_OVER_DIAMETER * rod_outer
     cap = rho * np.pi / 4 * (housing_outer**2 - rod_outer**2) * guide
-    return {"plate_thickness_m": plate_t, "guide_length_m": guide, "mass_kg": block + cap}
+    stress = plate.plate_stress(q, housing_bore / 2, plate_t, ALUMINIUM["poisson"])
+    return {"plate_thickness_m": plate_t, "guide_length_m": guide, "mass_kg": block + cap,
+            "plate_capacity_N": force * ALUMINIUM["yield"] / np.maximum(stress, 1e-30)}
 
 
 def clevises(force):
@@ -202,6 +205,7 @@ def size(values: dict, travel: float, peak_force, holding_force, rev_per_s, scre
         "bearing_life": np.where(b["fits"], b["life_h"] / BEARING_LIFE_H - 1.0, -1.0),
         "bearing_static": np.where(b["fits"], b["static_safety"] / BEARING_STATIC_SAFETY - 1.0, -1.0),
         "housing_stress": h["capacity_N"] / F - 1.0,
+        "end_cap_stress": caps["plate_capacity_N"] / F - 1.0,
         "clevis": c["capacity_N"] / F - 1.0,
     }
     mass = sum(m["mass_kg"] for m in members.values())
@@ -227,7 +231,7 @@ RULES = {
                        "series with L10 life (ISO 281) and static safety (ISO 76)", "bearing_life"),
     "housing": ("6061 tube around nut, bearings and guide: wall from the floor, the column, the "
                 "eccentric load and an axial stiffness at least the screw's", "housing_stress"),
-    "end_caps": ("bearing block (ring and plate carrying the force) and rod-end guide cap", "housing_stress"),
+    "end_caps": ("bearing block (ring and plate carrying the force) and rod-end guide cap", "end_cap_stress"),
     "clevises": ("pin in double shear and bending, eye in bearing, at each end", "clevis"),
 }
 

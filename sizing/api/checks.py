@@ -17,7 +17,7 @@ def n_loads(load) -> int:
 def check_evaluate_steps(design, cat: Catalog, file: str) -> None:
     """Refuse a design whose simulation would need more steps than the
     limit: duration x rate x load cases."""
-    from ..engine.dc import OUTPUT_RATE_HZ
+    from ..engine.dc import output_rate
     from ..engine.verify import SETTLE_TIME_S
     from ..limits import check_steps, dc_steps, piezo_steps
     if isinstance(design, PiezoDesignFile):
@@ -25,22 +25,23 @@ def check_evaluate_steps(design, cat: Catalog, file: str) -> None:
         check_steps(piezo_steps(ramp + SETTLE_TIME_S, n_loads(design.load)), file, "rise_time",
                     "simulation steps (rise time x 20 kHz x load cases)")
     elif design.actuator in cat.dc_actuators:
-        rate = cat.dc_actuators[design.actuator].pid.rate
-        check_steps(dc_steps(design.duration, rate, n_loads(design.load), OUTPUT_RATE_HZ), file, "duration",
-                    f"simulation steps (duration x {max(rate, OUTPUT_RATE_HZ):g} Hz x load cases)")
+        rate, out = cat.dc_actuators[design.actuator].pid.rate, output_rate(design.duration)
+        check_steps(dc_steps(design.duration, rate, n_loads(design.load), out), file, "duration",
+                    f"simulation steps (duration x {max(rate, out):g} Hz x load cases)")
 
 
 def check_solve_steps(req, cat: Catalog, file: str) -> None:
     """Refuse requirements whose verification would need more steps than
     the limit: simulated candidates x load cases x stroke time."""
-    from ..engine.dc import OUTPUT_RATE_HZ
+    from ..engine.dc import output_rate
     from ..engine.dc_candidates import dc_duration
     from ..engine.verify import SETTLE_TIME_S
     from ..limits import check_steps, dc_steps, piezo_steps
     n = n_loads(req.load)
     steps = piezo_steps(req.stroke_time + SETTLE_TIME_S, n * req.options.max_simulated)
     if req.options.dc_motors:
-        steps += sum(dc_steps(dc_duration(req), act.pid.rate, n, OUTPUT_RATE_HZ) for act in cat.dc_actuators.values())
+        T, out = dc_duration(req), output_rate(dc_duration(req))
+        steps += sum(dc_steps(T, act.pid.rate, n, out) for act in cat.dc_actuators.values())
     check_steps(steps, file, "[requirements].stroke",
                 "simulation steps (candidates x load cases x stroke / speed)")
     check_envelope(req, cat, file)

@@ -7,6 +7,8 @@ from __future__ import annotations
 
 from .dc_candidates import dc_duration
 from .dc_assumed import resting
+from .dc_parts import MASS_PARTS
+from .dc_structure import structure_members
 from .records import DCActuatorDesign, DCDesign, Simulation
 from .sized import SETTINGS
 
@@ -41,6 +43,24 @@ def actuator_candidate(req, catalog, d: DCActuatorDesign) -> dict:
     }
 
 
+# Checks a design from parts can be ruled out of, and why: a margin with
+# nothing to check (an unrated part, no gear) is left out of ``margins``,
+# never counted as passed, and named in ``unchecked`` with its reason.
+UNCHECKED = {
+    "magnet_temperature": "the motor's catalog entry gives no magnet temperature rating",
+    "gear_torque": "the gear's catalog entry gives no continuous output torque",
+    "static_safety": "the screw's catalog entry gives no static load rating",
+}
+
+
+def unchecked(margins, components: dict) -> list[dict]:
+    """The checks left out of ``margins``, each with its reason."""
+    reasons = dict(UNCHECKED)
+    if components.get("gear") is None:
+        reasons["gear_torque"] = "no gear (direct drive)"
+    return [{"check": name, "reason": why} for name, why in reasons.items() if name not in margins]
+
+
 def parts_candidate(req, catalog, d: DCDesign) -> dict:
     """The record of a DC design from parts."""
     r, o = req.requirements, req.options
@@ -57,8 +77,14 @@ def parts_candidate(req, catalog, d: DCDesign) -> dict:
                    "temperature": T, "speed": r.speed, "strokes_per_second": req.duty.strokes_per_second,
                    "amplifier_location": o.amplifier_location,
                    "electronics_bay_temperature": o.electronics_bay_temperature,
-                   "controller": {k: float(d.controller[k]) for k in SETTINGS}},
+                   "controller": {k: float(d.controller[k]) for k in SETTINGS},
+                   **({} if r.supply_voltage is None else {"supply_voltage": r.supply_voltage}),
+                   **({"brake": True} if o.dc_brake else {})},
         "reason": "" if not d.missed or stage == "simulated"
                   else "ruled out before simulation: " + ", ".join(d.missed),
+        "mass_breakdown_kg": {name: d.static[f"mass_{name}_kg"] for name in MASS_PARTS
+                              if f"mass_{name}_kg" in d.static},
+        "structure": structure_members(d.static),
+        "unchecked": unchecked(d.margins, components),
         **resting(catalog, components, d.margins),
     }

@@ -27,7 +27,11 @@ a combination is ruled out by every margin below zero, and keeps them:
   (physics/motor.py) against the duty's torque;
 - gear_torque: the gear's continuous output torque against the holding load;
 - holding: the winding after holding the steady load on the back-driven
-  screw for the hold time (no brake).
+  screw for the hold time (no brake; with ``[options] dc_brake`` the brake
+  holds and the winding carries no current, the brake's mass is counted);
+- rod_buckling, bearing_life, bearing_static, housing_stress, clevis: the
+  structure around the screw, sized for the force the drive can push
+  (``dc_structure``), each member's check.
 k_t is taken with the magnets at the holding duty's winding temperature.
 Continuous choices are catalog values (lead, ratio): the feasible ratios of
 a motor-screw pair form an interval (force needs N >= N_min, speed N <=
@@ -42,13 +46,11 @@ import numpy as np
 
 from ..physics import motor as motor_phys
 from ..physics import screw as screw_phys
+from . import dc_structure
 
 # Assumed construction (README, DC sizing): stated here, used everywhere.
 TRAVEL_FACTOR = 1.10          # designed travel over the required stroke: 10 % for end stops and rigging (assumed)
 SCREW_EXTRA_LENGTH = 0.05     # m: nut, bearings and end stop beyond the travel (assumed)
-ROD_MASS = 0.15               # kg: output rod and rod end moving with the nut (assumed)
-HOUSING_MASS_PER_LENGTH = 1.2  # kg/m: aluminium tube housing the screw (assumed, 2 mm wall, ~50 mm)
-HOUSING_FIXED_MASS = 0.25     # kg: bearing block, end caps, rod-end clevis (assumed)
 ASSEMBLY_USD = 600.0          # assumed: machining and assembly of housing and bearing block
 REQUIRED_LIFE_H = 200.0       # assumed: ground test, qualification and flights of a glide body
 STATIC_SAFETY_REQUIRED = screw_phys.STATIC_SAFETY_WITH_VIBRATION   # C0 / F_peak (THK, with vibration)
@@ -91,6 +93,25 @@ def enumerate_parts(catalog) -> PartArrays:
     return parts_at(lists, np.asarray(pm)[pair], isc, np.asarray(pg)[pair], idr)
 
 
+# A drive runs from a supply between this fraction of its rated bus and the
+# rated bus (assumed: compact servo drives accept about 4:1, e.g. maxon EPOS4
+# 50/8, 10-50 V; TGdrives TGZ-D-48, 0-48 V).
+DRIVE_SUPPLY_RANGE = 0.25
+
+
+def drives_for_supply(catalog, supply_voltage):
+    """The catalog with only the drives that run from ``supply_voltage``
+    (V; None: the catalog as it is), each at that bus: the speed ceiling,
+    the drive's voltage limit and the controller then follow the supply, so
+    the windings whose back-EMF suits it are the ones that meet the speed."""
+    if supply_voltage is None:
+        return catalog
+    from dataclasses import replace
+    drives = {k: d.model_copy(update={"bus_voltage": float(supply_voltage)}) for k, d in catalog.drives.items()
+              if DRIVE_SUPPLY_RANGE * d.bus_voltage <= supply_voltage <= d.bus_voltage * (1 + 1e-9)}
+    return replace(catalog, drives=drives)
+
+
 def part_lists(catalog) -> tuple[list, list, list, list]:
     """(motors, screws, [None] + gears, drives) in catalog order."""
     return (list(catalog.motors.values()), list(catalog.screws.values()),
@@ -127,6 +148,7 @@ def _columns(lists) -> dict:
         for name in MOTOR_FIELDS:
             cols["motor_" + name] = _col(M, name)
         cols["motor_magnet_max_temperature"] = _col(M, "magnet_max_temperature", np.inf)
+        cols["motor_frameless"] = np.array([float(is_frameless(m)) for m in M])
         for name in SCREW_FIELDS:
             cols["screw_" + name] = _col(S, name)
         cols["screw_static_load_rating"] = _col(S, "static_load_rating", np.inf)
@@ -164,15 +186,17 @@ def parts_at(lists, im, isc, ig, idr) -> PartArrays:
     return PartArrays(iM[im], iS[isc], iG[ig], iD[idr], v)
 
 
-def plant(p: PartArrays, stroke: float, temperature: float) -> dict[str, np.ndarray]:
+def plant(p: PartArrays, stroke: float, temperature: float, moving_structure=0.0) -> dict[str, np.ndarray]:
     """Seed eq. 13 of each combination, referred to the motor shaft:
     J = J_motor + J_gear + J_screw / N^2 + m_moving (l / 2 pi N)^2,
-    c1 = -b / J, c2 = k_t(T) / J, effective lead l / N (m per motor turn)."""
+    c1 = -b / J, c2 = k_t(T) / J, effective lead l / N (m per motor turn).
+    The moving mass is the nut and ``moving_structure`` (kg: the rod and
+    its rod-end eye, ``dc_structure``)."""
     v = p.values
     N = v["gear_ratio"]
     lead_eff = v["screw_lead"] / N
     screw_len = TRAVEL_FACTOR * stroke + SCREW_EXTRA_LENGTH
-    moving = v["screw_nut_mass"] + ROD_MASS
+    moving = v["screw_nut_mass"] + moving_structure
     J = (v["motor_rotor_inertia"] + v["gear_inertia"] + v["screw_inertia_per_length"] * screw_len / N**2
          + moving * (lead_eff / (2 * np.pi)) ** 2)
     kt = motor_phys.torque_constant_at(v["motor_torque_constant"], v["motor_torque_constant_temperature_coefficient"],
@@ -204,10 +228,12 @@ def winding(p: PartArrays, ambient, i_rms) -> dict[str, np.ndarray]:
 
 
 def temperature_margin(rated, required):
-    """search.temperature_margin, vectorised; an unbounded requirement (runaway) is -inf."""
+    """search.temperature_margin, vectorised. A winding that runs away
+    (required temperature unbounded) gets the margin's limit, -1 ((rated -
+    T) / T as T grows): a finite number that fails, as results.json needs."""
     required = np.asarray(required, float)
     with np.errstate(invalid="ignore"):
-        return np.where(np.isfinite(required), (np.asarray(rated) - required) / np.maximum(np.abs(required), 1.0), -np.inf)
+        return np.where(np.isfinite(required), (np.asarray(rated) - required) / np.maximum(np.abs(required), 1.0), -1.0)
 
 
 def static_screen(p: PartArrays, req, loads, ambient=None, settings=None) -> tuple[dict, dict, dict]:
@@ -239,6 +265,9 @@ def static_screen(p: PartArrays, req, loads, ambient=None, settings=None) -> tup
     # holding the steady load on the back-driven screw for the hold time, no brake
     t_hold = screw_phys.holding_torque(F_load, v["screw_lead"], SCREW_BACK_EFFICIENCY, v["gear_ratio"],
                                        v["gear_efficiency"])
+    brake = brake_mass(t_hold) if o.dc_brake else np.zeros(len(p))
+    if o.dc_brake:          # the brake holds: the winding carries no current while holding
+        t_hold = np.zeros(len(p))
     held = derated(p, T_op, t_hold)
     hold_power = r_hot * held["current_A"] ** 2
     end_of_hold = motor_phys.holding_temperature(rated["temperature_degC"], held["temperature_degC"],
@@ -250,6 +279,13 @@ def static_screen(p: PartArrays, req, loads, ambient=None, settings=None) -> tup
     v_max = screw_phys.output_speed(w_max, lead)
     P_cr = screw_phys.buckling_load(v["screw_elastic_modulus"], v["screw_diameter"], pl["screw_length"])
     rev_per_s = 2 * r.stroke / v["screw_lead"] * req.duty.strokes_per_second
+    # the structure around the screw, sized for what the drive can push; its moving part joins the plant
+    built = dc_structure.size(v, TRAVEL_FACTOR * r.stroke, np.maximum(F_peak, r.blocked_force), F_load,
+                              rev_per_s, float(pl["screw_length"][0]) if len(p) else 0.0)
+    moved = plant(p, r.stroke, T_op, built["moving_mass_kg"])
+    for key in ("inertia", "c1"):
+        pl[key] = moved[key]
+    pl["c2"] = kt / pl["inertia"]
     life_h = screw_phys.l10_revolutions(v["screw_dynamic_load_rating"], F_load) / rev_per_s / 3600.0
     n_low, n_high = ratio_interval(kt, v["motor_back_emf_constant"], r_hot, i_max, v["screw_lead"], eta,
                                    v["drive_bus_voltage"], v["motor_max_speed"], r.blocked_force, F_load, r.speed)
@@ -265,7 +301,10 @@ def static_screen(p: PartArrays, req, loads, ambient=None, settings=None) -> tup
         "holding_power_with_brake_W": np.zeros(len(p)), "static_safety": screw_phys.static_safety(v["screw_static_load_rating"], F_peak),
         "continuous_torque_rated_N_m": motor_phys.continuous_torque_at(v["motor_continuous_torque"],
                                                                        v["motor_max_winding_temperature"], T),
+        "moving_mass_kg": v["screw_nut_mass"] + built["moving_mass_kg"], "brake_mass_kg": brake,
+        **dc_structure.static_figures(built),
     }
+    static.update({f"mass_{name}_kg": m for name, m in mass_breakdown(p, req, static).items()})
     margins = {
         "blocked_force": F_peak / r.blocked_force - 1.0,
         "speed": v_max / r.speed - 1.0,
@@ -282,6 +321,7 @@ def static_screen(p: PartArrays, req, loads, ambient=None, settings=None) -> tup
             F_load, v["screw_lead"], v["screw_efficiency"]), 1e-12) - 1.0,
         "continuous_torque": static["continuous_torque_rated_N_m"] / np.maximum(kt * rated["current_A"], 1e-12) - 1.0,
         "holding": temperature_margin(v["motor_max_winding_temperature"], end_of_hold),
+        **built["margins"],
     }
     return pl, static, margins
 
@@ -318,14 +358,64 @@ def ratio_interval(kt, ke, r_hot, i_max, lead, eta, u_bus, w_mech_motor, force, 
     return np.maximum(n_force, lo), hi
 
 
-def metrics(p: PartArrays, req, i_max) -> dict[str, np.ndarray]:
+MASS_PARTS = ("motor", "motor_housing", "brake", "gear", "screw", "nut", "drive") + dc_structure.MEMBERS
+# Holding brake on the motor shaft ([options] dc_brake): a spring-applied
+# brake rated for the holding torque. assumed: 0.05 kg + 0.5 kg per N m of
+# rated torque, the order of small servo-motor holding brakes (0.1-0.2 kg
+# for 0.1-0.4 N m); no brake datasheet was retrieved.
+BRAKE_FIXED_MASS = 0.05
+BRAKE_MASS_PER_TORQUE = 0.5
+
+
+def brake_mass(holding_torque):
+    """Mass (kg) of a holding brake for ``holding_torque`` (N m, motor shaft)."""
+    return BRAKE_FIXED_MASS + BRAKE_MASS_PER_TORQUE * np.abs(np.asarray(holding_torque, float))
+# A frameless kit (stator and rotor) needs the housing, shaft, bearings and
+# feedback a housed motor carries. Rule from the motor database: the mass of
+# housed motors of the closest form (maxon's outer-rotor flat EC motors, 26,
+# large diameter and short like the kits) against the frameless kits (Allied
+# HT and Megaflux, 148), each fitted as m = a T_c^b over continuous torque
+# (least squares in logs, catalogs/motors-mgdb.toml; tests/engine/
+# test_dc_structure.py refits them): housed 0.842 T^0.720, frameless
+# 0.543 T^0.771 (kg, N m). The kit carries the difference at its own torque.
+HOUSED_FIT = (0.842, 0.720)
+FRAMELESS_FIT = (0.543, 0.771)
+
+
+def frameless_housing_mass(continuous_torque):
+    """Housing, bearings and feedback of a frameless kit (kg): the housed
+    fit minus the frameless fit at its continuous torque (N m), at least 0."""
+    T = np.maximum(np.asarray(continuous_torque, float), 1e-6)
+    return np.maximum(HOUSED_FIT[0] * T ** HOUSED_FIT[1] - FRAMELESS_FIT[0] * T ** FRAMELESS_FIT[1], 0.0)
+
+
+def is_frameless(motor) -> bool:
+    """A catalog motor that is a frameless kit (its notes say so)."""
+    return (getattr(motor, "notes", None) or "").lower().startswith("frameless")
+
+
+def mass_breakdown(p: PartArrays, req, static: dict) -> dict[str, np.ndarray]:
+    """Mass of each part and member (kg), (n,) arrays: the catalog parts,
+    the screw shaft over its length, and the structure (``dc_structure``)."""
+    v = p.values
+    L = TRAVEL_FACTOR * req.requirements.stroke + SCREW_EXTRA_LENGTH
+    out = {"motor": v["motor_mass"],
+           "motor_housing": np.where(v["motor_frameless"] > 0, frameless_housing_mass(v["motor_continuous_torque"]), 0.0),
+           "brake": static["brake_mass_kg"],
+           "gear": v["gear_mass"], "screw": v["screw_mass_per_length"] * L,
+           "nut": v["screw_nut_mass"], "drive": v["drive_mass"]}
+    out.update({name: static[f"{name}_mass_kg"] for name in dc_structure.MEMBERS})
+    return out
+
+
+def metrics(p: PartArrays, req, static: dict) -> dict[str, np.ndarray]:
     """Mass, cost, volume and peak electrical power of each combination."""
     v = p.values
     L = TRAVEL_FACTOR * req.requirements.stroke + SCREW_EXTRA_LENGTH
-    housing = HOUSING_FIXED_MASS + HOUSING_MASS_PER_LENGTH * L
-    mass = (v["motor_mass"] + v["gear_mass"] + v["screw_mass_per_length"] * L + v["screw_nut_mass"] + ROD_MASS
-            + housing + v["drive_mass"])
+    mass = sum(static[f"mass_{name}_kg"] for name in MASS_PARTS)
     cost = v["motor_cost_usd"] + v["gear_cost_usd"] + v["screw_cost_usd"] + v["drive_cost_usd"] + ASSEMBLY_USD
-    # volume: the housing tube (screw diameter + 30 mm) plus motor and gear at 3000 kg/m^3 (assumed)
-    volume = np.pi / 4 * (v["screw_diameter"] + 0.03) ** 2 * L + (v["motor_mass"] + v["gear_mass"]) / 3000.0
-    return {"mass_kg": mass, "cost_usd": cost, "volume_m3": volume, "power_W": v["drive_bus_voltage"] * i_max}
+    # volume: the housing tube over its length plus motor and gear at 3000 kg/m^3 (assumed)
+    volume = (np.pi / 4 * static["housing_outer_diameter_m"] ** 2 * np.maximum(static["housing_length_m"], L)
+              + (v["motor_mass"] + v["gear_mass"]) / 3000.0)
+    return {"mass_kg": mass, "cost_usd": cost, "volume_m3": volume,
+            "power_W": v["drive_bus_voltage"] * static["current_limit_A"]}

@@ -24,9 +24,9 @@ from ..physics import screw as screw_phys
 from ..sim.dc_motor import DCMotorModel, simulate
 from ..sim.metrics import step_metrics
 from . import dc_controller as ctl
-from .dc import OUTPUT_RATE_HZ, SETTLED
+from .dc import SETTLED, output_times
 from . import dc_search, dc_verdict
-from .dc_parts import enumerate_parts, metrics, mountable, static_screen, temperature_margin
+from .dc_parts import drives_for_supply, enumerate_parts, metrics, mountable, static_screen, temperature_margin
 from .dc_candidates import dc_duration
 from .rank import nondominated_levels, verdict
 from .records import DCDesign, DCParts, DCPartsOutcome, Simulation, frozen
@@ -96,6 +96,7 @@ def dc_parts_designs(req, catalog, loads, progress=None, duration=None, exhausti
     catalog of at most MIN_SIMULATED combinations: every combination, each
     recorded."""
     duration = dc_duration(req) if duration is None else duration
+    catalog = drives_for_supply(catalog, req.requirements.supply_voltage)
     ruled_out, combinations = {}, None
     small = sum(1 + len(g) for g in mountable(catalog)) * len(catalog.screws) * len(catalog.drives)
     if exhaustive or small <= MIN_SIMULATED:      # a few parts (evaluate, robust): every one simulated
@@ -107,7 +108,7 @@ def dc_parts_designs(req, catalog, loads, progress=None, duration=None, exhausti
     if len(p) == 0:
         return DCPartsOutcome((), frozen(ruled_out), combinations or 0)
     pl, static, margins = static_screen(p, req, loads)
-    screen = _Screen(p, pl, static, margins, metrics(p, req, static["current_limit_A"]),
+    screen = _Screen(p, pl, static, margins, metrics(p, req, static),
                      ctl.pole_target(req.stroke_time, p.values["drive_rate"]))
     gains = ctl.ipd_gains(pl["c1"], pl["c2"], pl["lead"], screen.pole)
     real_ids = {e.id for _, e in catalog.entries() if dc_verdict.is_real(e)}
@@ -235,7 +236,7 @@ def _simulate(req, pl, static, gains, p, chosen, loads, duration, progress) -> d
     if len(chosen) == 0 or not loads:
         return {}
     S = req.requirements.stroke
-    t = np.arange(0.0, duration + 0.5 / OUTPUT_RATE_HZ, 1.0 / OUTPUT_RATE_HZ)
+    t = output_times(duration)
     ref = np.full_like(t, S)
     ref[0] = 0.0
     n_l = len(loads)

@@ -127,6 +127,8 @@ def _summary(req: RequirementsFile, candidates: list[dict], catalog, piezo_prune
             entry["text"] = f"{len(feasible)} feasible; best ranked {_label(best)} (driver: {best['driver']})"
             if key[0] == "piezohydraulic":
                 entry["text"] += _amplifier_caveat(req, feasible, catalog)
+            if key == ("dc_motor", "parts") and req.requirements.supply_voltage is not None:
+                entry["text"] += f"; drives and windings chosen for the {req.requirements.supply_voltage:g} V supply"
         else:
             m = furthest["margins"][furthest["driver"]]
             entry["blocking"] = furthest["driver"]

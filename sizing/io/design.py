@@ -105,6 +105,8 @@ class DCDesignFile(Strict):
     controller: Optional[dict[str, float]] = None
     amplifier_location: Literal["bay", "actuator"] = "bay"
     electronics_bay_temperature: Qty("temperature") = 30.0
+    supply_voltage: Optional[Qty("voltage", positive=True)] = None   # design from parts: the drive's bus
+    brake: bool = False                                               # design from parts: a holding brake
     load: LoadTable = Field(default_factory=LoadTable)
     notes: Optional[str] = None
 

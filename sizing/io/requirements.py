@@ -27,6 +27,8 @@ class RequirementsTable(Strict):
     blocked_force: Qty("force", positive=True)
     speed: Qty("speed", positive=True)
     max_temperature: Qty("temperature")
+    # the bus the DC drive and winding are chosen for (None: each drive at its rated bus)
+    supply_voltage: Optional[Qty("voltage", positive=True)] = None
 
     @field_validator("stroke")
     @classmethod
@@ -90,6 +92,7 @@ class OptionsTable(Strict):
     # amplifier units a piezo drive may put in parallel (assumed: one rack)
     max_amplifier_units: int = Field(16, ge=1, le=1000)
     dc_motors: bool = True                                # rank the catalog's DC actuators too
+    dc_brake: bool = False                                # a holding brake on every DC design from parts
     # end cap, base plate and frame each at least this x the stacks' stiffness; the
     # geometric program makes them stiffer where the blocked force needs it. 3 is the reviewer's
     # "frame three times stiffer than the stacks" (10-18 kg of 6061 for a 9-stack design);
@@ -265,9 +268,11 @@ def design_requirements(design, loads: list[float]) -> RequirementsFile:
     evaluate``: its step, speed (the controller rule), temperature, duty and
     drive location; blocked force 1 N (evaluate reports figures, not that
     margin)."""
+    supply = {} if design.supply_voltage is None else {"supply_voltage": design.supply_voltage}
     return RequirementsFile.model_validate({
         "requirements": {"stroke": design.step, "blocked_force": 1.0, "speed": design.speed,
-                         "max_temperature": design.temperature},
+                         "max_temperature": design.temperature, **supply},
         "load": {"force": list(loads)}, "duty": {"strokes_per_second": design.strokes_per_second},
         "options": {"amplifier_location": design.amplifier_location,
-                    "electronics_bay_temperature": design.electronics_bay_temperature}})
+                    "electronics_bay_temperature": design.electronics_bay_temperature,
+                    "dc_brake": design.brake}})

@@ -124,7 +124,7 @@ def _dc_parts(req, catalog: Catalog, design: DCDesignFile, file: str, loads) -> 
     settings = {k: np.full(1, v) for k, v in one.settings.items()}
     checked = verify_parts(req, one.parts, loads, settings, duration=design.duration)[0]
     static = static_screen(one.parts, req, loads, settings=settings)[1]
-    met = metrics(one.parts, req, static["current_limit_A"])
+    met = metrics(one.parts, req, static)
     return {"margins": checked["margins"], "metrics": {k: float(v[0]) for k, v in met.items()}}
 
 

@@ -212,7 +212,6 @@ def test_brake_holds_the_load_and_weighs_its_rule():
 def test_a_24_v_braked_design_round_trips_through_evaluate(tmp_path):
     """The design block of a design solved on a 24 V supply with a brake
     carries both; evaluated, it reproduces the mass and margins."""
-    import json
     from sizing import api
     from sizing.engine.dc_candidate import parts_candidate
     from sizing.engine.dc_sizing import dc_parts_designs
@@ -228,8 +227,9 @@ def test_a_24_v_braked_design_round_trips_through_evaluate(tmp_path):
     c = parts_candidate(req, catalog, min(feasible, key=lambda d: d.metrics["mass_kg"]))
     assert c["design"]["supply_voltage"] == 24.0 and c["design"]["brake"] is True
     assert c["controller"]["bus_voltage_V"] == 24.0 and c["mass_breakdown_kg"]["brake"] > 0
-    lines = [f"{k} = {json.dumps(v)}" for k, v in c["design"].items() if v is not None]
-    (tmp_path / "d.toml").write_text("\n".join(lines + ["[load]", "force = [150.0]"]) + "\n")
+    import tomlkit
+    design = {k: v for k, v in c["design"].items() if v is not None}
+    (tmp_path / "d.toml").write_text(tomlkit.dumps({**design, "load": {"force": [150.0]}}))
     e = api.evaluate(tmp_path / "d.toml")
     assert e["metrics"]["mass_kg"] == pytest.approx(c["metrics"]["mass_kg"], rel=0.005)
     for k, v in e["margins"].items():

@@ -6,21 +6,54 @@ option is checked here (``number_option``): finite, in range, an integer
 where it counts something."""
 from __future__ import annotations
 
-from .threads import single_threaded_blas
+import signal
+import sys
+import threading
+
+from .errors import RECEIVED_SIGNALS
+
+
+def _record_interrupt(signum, frame):
+    """Until ``main`` takes over: note the signal, then interrupt as Python
+    would (the imports below take seconds; a library that turns the
+    interrupt into an ImportError still leaves the note)."""
+    RECEIVED_SIGNALS.append(signum)
+    raise KeyboardInterrupt
+
+
+def _one_line_on_interrupt(kind, value, tb, _default=sys.excepthook):
+    """An interrupt that arrives outside ``main`` (while the command line
+    loads, or as it exits): one line and exit 128 + signal, not a traceback."""
+    if RECEIVED_SIGNALS or issubclass(kind, KeyboardInterrupt):
+        import os
+        signum = RECEIVED_SIGNALS[0] if RECEIVED_SIGNALS else signal.SIGINT
+        sys.stderr.write(f"error: interrupted by {signal.Signals(signum).name}; {INTERRUPTED_OUTPUTS}\n")
+        sys.stderr.flush()
+        os._exit(128 + signum)
+    _default(kind, value, tb)
+
+
+INTERRUPTED_OUTPUTS = "outputs are complete or untouched"
+if signal.getsignal(signal.SIGINT) is signal.default_int_handler and \
+        threading.current_thread() is threading.main_thread():      # not when a host program set its own
+    signal.signal(signal.SIGINT, _record_interrupt)
+    signal.signal(signal.SIGTERM, _record_interrupt)
+    if sys.excepthook is sys.__excepthook__:
+        sys.excepthook = _one_line_on_interrupt
+
+from .threads import single_threaded_blas  # noqa: E402
 
 single_threaded_blas()   # before numpy loads (sizing/threads.py)
 
 import json  # noqa: E402
 import math  # noqa: E402
-import signal  # noqa: E402
-import sys  # noqa: E402
 from pathlib import Path  # noqa: E402
 from typing import List, Optional  # noqa: E402
 
 import typer  # noqa: E402
 
 from . import __version__, api  # noqa: E402
-from .errors import RECEIVED_SIGNALS, FitError, InputError, Interrupted, raise_if_interrupted  # noqa: E402
+from .errors import FitError, InputError, Interrupted, raise_if_interrupted  # noqa: E402
 from .limits import use_limits  # noqa: E402
 
 app = typer.Typer(help="Size smart-material actuators for glide-body control surfaces, "
@@ -259,8 +292,9 @@ class _LazyProgress:
                 return
             from rich.console import Console
             from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+            console = Console(stderr=True)
             self.bar = Progress(TextColumn("{task.description}"), BarColumn(), TimeElapsedColumn(),
-                                console=Console(stderr=True), transient=True)
+                                console=console, transient=True, disable=not console.is_terminal)
             self.bar.start()
             self.task = self.bar.add_task(self.label, total=1.0)
         self.bar.update(self.task, completed=fraction, description=f"{self.label}: {message}")
@@ -344,8 +378,9 @@ class _StageBars:
         before any work print their one line and nothing else."""
         from rich.console import Console
         from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+        console = Console(stderr=True)      # bars only on a terminal: a log file gets no blank line
         self.bar = Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(),
-                            TimeElapsedColumn(), console=Console(stderr=True), transient=True)
+                            TimeElapsedColumn(), console=console, transient=True, disable=not console.is_terminal)
         self.bar.start()
 
     def __call__(self, stage: str, done: int, total: int) -> None:
@@ -436,7 +471,6 @@ def _interrupt(signum, frame):
 def _handle_signals() -> dict:
     """SIGINT and SIGTERM raise Interrupted (main thread only); returns the
     previous handlers."""
-    import threading
     if threading.current_thread() is not threading.main_thread():
         return {}
     return {sig: signal.signal(sig, _interrupt) for sig in (signal.SIGINT, signal.SIGTERM)}
@@ -453,10 +487,11 @@ def main(argv: Optional[List[str]] = None) -> None:
 
     previous = _handle_signals()
     try:
+        raise_if_interrupted()        # one that arrived while the command line loaded
         code = app(args=argv, standalone_mode=False, prog_name="sizing")
         raise_if_interrupted()        # a signal some library swallowed still ends the run as interrupted
     except Interrupted as exc:
-        typer.echo(f"error: interrupted by {signal.Signals(exc.signum).name}; outputs are complete or untouched", err=True)
+        typer.echo(f"error: interrupted by {signal.Signals(exc.signum).name}; {INTERRUPTED_OUTPUTS}", err=True)
         sys.exit(128 + exc.signum)
     except (InputError, FitError) as exc:
         typer.echo(f"error: {_one_line(exc)}", err=True)

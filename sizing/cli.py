@@ -441,7 +441,7 @@ def robust(requirements: Path = typer.Argument(..., help="requirements.toml (doc
     if not quiet:
         for d in data["designs"]:
             lo, hi = d["p_ci95"]
-            typer.echo(f"{d['id']}: P(compliance) {d['p_compliance']:.3f} [{lo:.3f}, {hi:.3f}], "
+            typer.echo(f"{d.get('name') or d['id']}: P(compliance) {d['p_compliance']:.3f} [{lo:.3f}, {hi:.3f}], "
                        f"driven by {d['driving_tolerance'] or '-'}")
         typer.echo(f"{out}/robust.json, robust.html written ({data['where']})")
 
@@ -457,9 +457,9 @@ def sweep(requirements: Path = typer.Argument(..., help="requirements.toml (docs
     """A full solve at every point of a grid over requirement fields."""
     data = _run_study(api.sweep, quiet, workers, requirements, vary, out, catalog, scheduler=scheduler)
     if not quiet:
+        from .report.words import sweep_point_line
         for g in data["grid"]:
-            b = g["best"]
-            typer.echo(f"{g['varied']}: feasible {g['feasible']}, best {b['id'] if b else 'none'}")
+            typer.echo(sweep_point_line(g))
         typer.echo(f"{out}/sweep.json, sweep.html written ({data['where']})")
 
 

@@ -1,32 +1,17 @@
 """Plain-text summaries for the terminal."""
 from __future__ import annotations
 
+from ..display import label, number, of_kind, quantity
 from ..io.catalog import Catalog, Entry
 
-_SCALES = {"_m": (1e3, "mm"), "_N": (1.0, "N"), "_Pa": (1e-6, "MPa"), "_Hz": (1.0, "Hz"),
-           "_A": (1.0, "A"), "_s": (1.0, "s"), "_m_s": (1e3, "mm/s"), "_J": (1.0, "J"),
-           "_kg": (1.0, "kg"), "_usd": (1.0, "USD"), "_m3": (1e6, "cm^3"), "_W": (1.0, "W"),
-           "_N_m": (1.0, "N/m"), "_V": (1.0, "V")}
 
 
 def _fmt(key: str, value) -> str:
-    if value is None:
-        return "n/a"
-    if not isinstance(value, (int, float)):
-        return str(value)
-    for suffix in sorted(_SCALES, key=len, reverse=True):
-        if key.endswith(suffix):
-            scale, unit = _SCALES[suffix]
-            return f"{value * scale:.4g} {unit}"
-    return f"{value:.4g}"
+    return quantity(key, value)
 
 
 def _label(key: str) -> str:
-    for suffix in sorted(_SCALES, key=len, reverse=True):
-        if key.endswith(suffix):
-            key = key[: -len(suffix)]
-            break
-    return key.replace("_", " ")
+    return label(key)
 
 
 def evaluation_summary(result: dict) -> str:
@@ -67,18 +52,36 @@ def catalog_table(catalog: Catalog) -> str:
     return "\n".join([fmt.format(*header)] + [fmt.format(*r) for r in rows])
 
 
+# what the status in brackets after each value means (README, "The catalog")
+STATUS_WORDS = {"datasheet": "read from the vendor document named in source",
+                "seed": "from the seed report ARL-TR-10251",
+                "measured": "fitted to test data (sizing fit)",
+                "sourced": "from the makers' table named in source",
+                "rule": "derived by a stated rule from sourced values",
+                "assumed": "an engineering estimate, its reason given",
+                "default": "not given in the catalog file: the schema's default"}
+
+
 def entry_details(kind: str, entry: Entry) -> str:
+    """Every value of a catalog entry in the unit an engineer reads it, its
+    status in brackets and, at the end, what each status shown means."""
+    from ..io.catalog_diff import quantity_kind
     lines = [f"{entry.id} ({kind}): {entry.name}", f"  manufacturer: {entry.manufacturer}",
              f"  source: {entry.source}", f"  retrieved: {entry.retrieved.isoformat()}"]
+    shown = set()
     for name in entry.quantity_fields():
         value = getattr(entry, name)
         if value is None:
             continue
-        lines.append(f"  {name:<36} {value!r:<14} [{entry.status.get(name, '?')}]")
+        status = entry.status.get(name, "default")
+        shown.add(status.partition(":")[0].strip())
+        text = of_kind(value, quantity_kind(type(entry), name), name) if isinstance(value, (int, float)) else str(value)
+        lines.append(f"  {name:<36} {text:<14} [{status}]")
     for sub in ("bouc_wen", "pid"):
         table = getattr(entry, sub, None)
         if table is not None:
-            lines.append(f"  [{sub}] " + ", ".join(f"{k}={v}" for k, v in table.model_dump().items()))
+            lines.append(f"  [{sub}] " + ", ".join(f"{k} = {number(v)}" for k, v in table.model_dump().items()))
     if entry.notes:
         lines.append(f"  notes: {entry.notes}")
+    lines.append("status: " + "; ".join(f"{s} = {STATUS_WORDS[s]}" for s in STATUS_WORDS if s in shown))
     return "\n".join(lines)

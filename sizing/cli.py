@@ -305,6 +305,9 @@ class _LazyProgress:
 
 
 def _fit_output(result, out: Optional[Path]) -> None:
+    """The result first (on stderr when stdout carries the TOML), then the warnings."""
+    from .report.text import fit_summary
+    typer.echo(fit_summary(result.kind, result.result), err=out is None)
     for warning in result.warnings:
         typer.echo(f"warning: {warning}", err=True)
     if out is None:

@@ -121,7 +121,9 @@ def fit_hysteresis(paths, holdout=None, model: str = "auto", out=None, report=No
     extra = {} if catalog_entry is None else _catalog_entry(catalog_entry, base_raw, base_named, bw, paths,
                                                             prior_text, out)
     result = _hysteresis_result(carried, summary, traces, fit_table, bw, pi, choice, paths)
-    return _finish(FitResult("hysteresis", toml, result, _unique(log), out, report, extra, tuple(paths)))
+    plain = set(bw.warnings_)
+    said = tuple(tables.plain_warnings([w])[0] if w in plain else w for w in _unique(log))
+    return _finish(FitResult("hysteresis", toml, result, said, out, report, extra, tuple(paths)))
 
 
 def _unique(log) -> tuple[str, ...]:

@@ -19,6 +19,12 @@ def _thin(n: int) -> slice:
     return slice(None, None, max(1, int(np.ceil(n / MAX_POINTS))))
 
 
+def _f4(values) -> np.ndarray:
+    """Single precision for plotting: plotly embeds numpy arrays as binary,
+    and 4-byte floats (7 digits, far below a pixel) halve the page."""
+    return np.asarray(values, dtype=np.float32)
+
+
 def _table(rows: list[list], header: list[str]) -> str:
     head = "".join(f"<th>{html.escape(h)}</th>" for h in header)
     body = "".join("<tr>" + "".join(f"<td>{html.escape(str(c))}</td>" for c in row) + "</tr>" for row in rows)
@@ -37,15 +43,15 @@ def _run_figure(trace: dict, kind: str) -> go.Figure:
         fig = make_subplots(rows=2, cols=2, column_widths=[0.62, 0.38], row_heights=[0.65, 0.35],
                             specs=[[{}, {"rowspan": 2}], [{}, None]],
                             subplot_titles=("displacement", "loop: voltage vs displacement", "residual (measured - fitted)"))
-        fig.add_trace(go.Scatter(x=t[s], y=x[s] * UM, name="measured", line=dict(color=COLORS["measured"])), 1, 1)
-        fig.add_trace(go.Scatter(x=trace["voltage"][s], y=x[s] * UM, name="measured loop", showlegend=False,
+        fig.add_trace(go.Scatter(x=_f4(t[s]), y=_f4(x[s] * UM), name="measured", line=dict(color=COLORS["measured"])), 1, 1)
+        fig.add_trace(go.Scatter(x=_f4(trace["voltage"][s]), y=_f4(x[s] * UM), name="measured loop", showlegend=False,
                                  line=dict(color=COLORS["measured"])), 1, 2)
         for model, y in trace["fitted"].items():
             c = COLORS[model]
-            fig.add_trace(go.Scatter(x=t[s], y=y[s] * UM, name=model, line=dict(color=c, dash="dash")), 1, 1)
-            fig.add_trace(go.Scatter(x=trace["voltage_filtered"][s], y=y[s] * UM, name=f"{model} loop",
+            fig.add_trace(go.Scatter(x=_f4(t[s]), y=_f4(y[s] * UM), name=model, line=dict(color=c, dash="dash")), 1, 1)
+            fig.add_trace(go.Scatter(x=_f4(trace["voltage_filtered"][s]), y=_f4(y[s] * UM), name=f"{model} loop",
                                      showlegend=False, line=dict(color=c, dash="dash")), 1, 2)
-            fig.add_trace(go.Scatter(x=t[s], y=(x - y)[s] * UM, name=f"residual {model}", showlegend=False,
+            fig.add_trace(go.Scatter(x=_f4(t[s]), y=_f4((x - y)[s] * UM), name=f"residual {model}", showlegend=False,
                                      line=dict(color=c)), 2, 1)
         fig.update_yaxes(title_text="um", row=1, col=1)
         fig.update_yaxes(title_text="um", row=2, col=1)
@@ -55,13 +61,13 @@ def _run_figure(trace: dict, kind: str) -> go.Figure:
     else:
         fig = make_subplots(rows=2, cols=1, row_heights=[0.65, 0.35], shared_xaxes=True,
                             subplot_titles=("position", "residual (measured - fitted)"))
-        fig.add_trace(go.Scatter(x=t[s], y=trace["reference"][s] * 1e3, name="reference",
+        fig.add_trace(go.Scatter(x=_f4(t[s]), y=_f4(trace["reference"][s] * 1e3), name="reference",
                                  line=dict(color="#999999")), 1, 1)
-        fig.add_trace(go.Scatter(x=t[s], y=x[s] * 1e3, name="measured", line=dict(color=COLORS["measured"])), 1, 1)
+        fig.add_trace(go.Scatter(x=_f4(t[s]), y=_f4(x[s] * 1e3), name="measured", line=dict(color=COLORS["measured"])), 1, 1)
         for model, y in trace["fitted"].items():
-            fig.add_trace(go.Scatter(x=t[s], y=y[s] * 1e3, name="fitted (eq. 14 closed loop)",
+            fig.add_trace(go.Scatter(x=_f4(t[s]), y=_f4(y[s] * 1e3), name="fitted (eq. 14 closed loop)",
                                      line=dict(color=COLORS[model], dash="dash")), 1, 1)
-            fig.add_trace(go.Scatter(x=t[s], y=(x - y)[s] * 1e3, name="residual", showlegend=False,
+            fig.add_trace(go.Scatter(x=_f4(t[s]), y=_f4((x - y)[s] * 1e3), name="residual", showlegend=False,
                                      line=dict(color=COLORS[model])), 2, 1)
         fig.update_yaxes(title_text="mm", row=1, col=1)
         fig.update_yaxes(title_text="mm", row=2, col=1)

@@ -85,3 +85,47 @@ def entry_details(kind: str, entry: Entry) -> str:
         lines.append(f"  notes: {entry.notes}")
     lines.append("status: " + "; ".join(f"{s} = {STATUS_WORDS[s]}" for s in STATUS_WORDS if s in shown))
     return "\n".join(lines)
+
+
+# units of the fitted parameters (seed eq. 1-2 and 13-14; docs/formats.md);
+# beta and gamma are in SI (1/m^(n-1)), n is a plain number
+FIT_UNITS = {"d33": "m/V", "alpha": "m/V", "delta": "m/V", "c1": "1/s", "c2": "rad/(s^2 A)",
+             "kp": "A/m", "ki": "A/(m s)", "kd": "A s/m"}
+
+
+def _percent(x) -> str:
+    return "n/a" if x is None else f"{100 * x:.2f} %"
+
+
+def _parameter_rows(params: dict, ci95: dict, plain: dict | None = None) -> list[str]:
+    rows = []
+    for name, value in params.items():
+        lo, hi = ci95.get(name) or (None, None)
+        unit = FIT_UNITS.get(name, "")
+        text = f"  {name:<6} {number(value):>10} {unit:<12} 95 % interval [{number(lo)}, {number(hi)}]"
+        if plain is not None and name in plain:
+            text += f"; plain least squares {number(plain[name])}"
+        rows.append(text.rstrip())
+    return rows
+
+
+def fit_summary(kind: str, result: dict) -> str:
+    """What ``sizing fit`` found, before any warning: the model carried, its
+    held-out NRMSE (share of the measured range) and the parameters with
+    their 95 % intervals."""
+    summary = result["summary"]
+    held = any(s.get("nrmse_holdout") is not None for s in summary.values())
+    which = "held-out" if held else "training"
+    score = ", ".join(f"{m} {_percent(s.get('nrmse_holdout') if held else s.get('nrmse_train'))}"
+                      for m, s in summary.items())
+    if kind != "hysteresis":
+        return "\n".join([f"fit dc-motor: {which} NRMSE {score} of the measured range",
+                          "parameters (seed eq. 13-14, through the closed loop):",
+                          *_parameter_rows(result["params"], result["ci95"])])
+    bw, pi = result["bouc_wen"], result.get("prandtl_ishlinskii") or {}
+    operators = (f"Prandtl-Ishlinskii: {len(pi.get('weights_m_V', []))} play operators, weights in the TOML's "
+                 "[prandtl_ishlinskii]") if pi else ""
+    return "\n".join([f"model carried: {result['model']} ({which} NRMSE, share of the measured range: {score})",
+                      *([operators] if operators else []),
+                      "Bouc-Wen [stack] for a rig.toml, regularised toward the prior (beta, gamma SI; n a number):",
+                      *_parameter_rows(bw["params"], bw["ci95"], bw.get("plain"))])

@@ -444,7 +444,7 @@ def robust(requirements: Path = typer.Argument(..., help="requirements.toml (doc
     if not quiet:
         for d in data["designs"]:
             lo, hi = d["p_ci95"]
-            typer.echo(f"{d.get('name') or d['id']}: P(compliance) {d['p_compliance']:.3f} [{lo:.3f}, {hi:.3f}], "
+            typer.echo(f"{d.get('name') or d['id']}: P(compliance) {d['p_compliance']:.3f} (95 % interval {lo:.3f} to {hi:.3f}), "
                        f"driven by {d['driving_tolerance'] or '-'}")
         typer.echo(f"{out}/robust.json, robust.html written ({data['where']})")
 

@@ -71,6 +71,13 @@ def number(value, digits: int = 4) -> str:
     return text if "e" not in text else f"{value:.0f}"
 
 
+def interval(lo, hi, show=None) -> str:
+    """A 95 % interval as people read it: "0.861 to 0.987" (no bracketed
+    pair that reads like a Python list)."""
+    show = show or number
+    return f"{show(lo)} to {show(hi)}"
+
+
 def _with(value, factor: float, unit: str) -> str:
     if not isinstance(value, (int, float)) or isinstance(value, bool):
         return "n/a" if value is None else str(value)

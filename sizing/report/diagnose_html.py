@@ -9,7 +9,7 @@ import numpy as np
 import plotly.graph_objects as go
 from plotly.subplots import make_subplots
 
-from ..display import label, number, quantity
+from ..display import interval, label, number, quantity
 from .bundle import plotly_tag
 
 # the nominal parameters ``sizing diagnose --recalibrate`` re-fits, and their units
@@ -89,7 +89,7 @@ def _interval(key: str, ci) -> str:
     """A 95 % interval in the parameter's unit, or why there is none (not identifiable)."""
     if ci is None or not all(np.isfinite(ci)):
         return "[CI n/a: not identifiable from these runs]"
-    return f"[{quantity(key, ci[0])}, {quantity(key, ci[1])}]"
+    return f"({interval(ci[0], ci[1], lambda x: quantity(key, x))})"
 
 
 def render(diagnosis, title: str = "Sim-to-real gap diagnosis") -> str:
@@ -155,7 +155,7 @@ table{{border-collapse:collapse}} tr:nth-child(even){{background:#f4f4f4}}</styl
 noise floor (holdout) {diagnosis.noise_floor_holdout:.4f}. Input treatment: {html.escape(diagnosis.bench.input_treatment)}.</p>
 {recal}
 <h2>Effects</h2><table><tr><th>effect</th><th>NRMSE train</th><th>NRMSE holdout</th><th>shrink</th>
-<th>fitted parameters [95 % CI]</th></tr>{''.join(rows)}</table>
+<th>fitted parameters (95 % CI)</th></tr>{''.join(rows)}</table>
 {channels}
 <h2>Residual tests (baseline)</h2><table><tr><th>run</th><th>whiteness (max autocorrelation)</th>
 <th>cross-correlation with input</th><th>with velocity</th></tr>{tests}</table>

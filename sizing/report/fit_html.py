@@ -8,6 +8,7 @@ import numpy as np
 import plotly.graph_objects as go
 from plotly.subplots import make_subplots
 
+from ..display import interval, number
 from .bundle import plotly_tag
 
 MAX_POINTS = 4000
@@ -90,8 +91,8 @@ def _hysteresis_sections(result: dict) -> str:
     plain = bw.get("plain", bw["params"])
     plain_ci = bw.get("plain_ci95", bw["ci95"])
     share = (bw.get("prior") or {}).get("prior_share", {})
-    rows = [[n, f"{v:.5g}", f"[{bw['ci95'][n][0]:.4g}, {bw['ci95'][n][1]:.4g}]", f"{plain[n]:.5g}",
-             f"[{plain_ci[n][0]:.4g}, {plain_ci[n][1]:.4g}]", f"{share[n]:.2f}" if n in share else "-"]
+    rows = [[n, number(v), interval(*bw['ci95'][n]), number(plain[n]),
+             interval(*plain_ci[n]), f"{share[n]:.2f}" if n in share else "-"]
             for n, v in bw["params"].items()]
     parts.append("<h2>Bouc-Wen parameters (seed eq. 1-2, SI)</h2>" + _table(
         rows, ["parameter", "rig-ready ([stack])", "95 % interval", "plain least squares", "95 % interval",
@@ -100,7 +101,7 @@ def _hysteresis_sections(result: dict) -> str:
         parts.append(f"<p><b>Prior:</b> {html.escape(bw['prior']['source'])}; {html.escape(bw['prior']['weight'])}.</p>")
     combos = bw.get("combinations") or {}
     if combos:
-        rows = [[n, f"{c['value']:.5g}", f"[{c['ci95'][0]:.4g}, {c['ci95'][1]:.4g}]", f"{100 * c['relative_half_width']:.2f} %"]
+        rows = [[n, number(c['value']), interval(*c['ci95']), f"{100 * c['relative_half_width']:.2f} %"]
                 for n, c in combos.items()]
         parts.append("<h2>What the data determine</h2>" + _table(rows, ["combination", "value", "95 % interval", "+/- relative"]))
     pi = result["prandtl_ishlinskii"]
@@ -127,7 +128,7 @@ def render(result: dict, kind: str, toml: str) -> str:
     if kind == "hysteresis":
         parts.append(_hysteresis_sections(result))
     else:
-        rows = [[n, f"{v:.6g}", f"[{result['ci95'][n][0]:.6g}, {result['ci95'][n][1]:.6g}]"]
+        rows = [[n, number(v), interval(*result['ci95'][n])]
                 for n, v in result["params"].items()]
         parts.append("<h2>Parameters (seed eq. 13-14, closed loop)</h2>" + _table(rows, ["parameter", "value", "95 % interval"]))
     warns = result["fit"].get("warnings") or []

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import plotly.graph_objects as go
 
+from ..display import interval
 from .page import esc, figure_div, page, table
 
 
@@ -39,7 +40,7 @@ def render(data: dict) -> str:
     ds = data["designs"]
     rows = [[d["rank"], d.get("name", d["id"]), f"{d['metrics'].get('mass_kg', float('nan')):.1f}",
              f"{d['metrics'].get('cost_usd', float('nan')):.0f}", f"{d['p_compliance']:.3f}",
-             f"[{d['p_ci95'][0]:.3f}, {d['p_ci95'][1]:.3f}]",
+             interval(*d["p_ci95"], lambda p: f"{p:.3f}"),
              ", ".join(f"{k} {d['p_requirement'][k]:.3f}" for k in d["failing_requirements"]) or "none",
              d["driving_tolerance"] or "-", "yes" if d.get("robust_pareto") else ""] for d in ds]
     tol = ", ".join(f"{k} {v:.3g}" for k, v in data["tolerances"].items())

@@ -1,7 +1,7 @@
 """Plain-text summaries for the terminal."""
 from __future__ import annotations
 
-from ..display import label, number, of_kind, quantity
+from ..display import interval, label, number, of_kind, quantity
 from ..io.catalog import Catalog, Entry
 
 
@@ -16,7 +16,8 @@ def _label(key: str) -> str:
 
 def evaluation_summary(result: dict) -> str:
     lines = [f"{result['technology']} design: " + ", ".join(
-        f"{k}={v}" for k, v in result["design"].items() if not isinstance(v, dict) and v is not None)]
+        f"{k}={number(v) if isinstance(v, float) else v}" for k, v in result["design"].items()
+        if not isinstance(v, dict) and v is not None)]
     lines.append("static:")
     lines += [f"  {_label(k):<28} {_fmt(k, v)}" for k, v in result["static"].items()]
     if result.get("controller"):
@@ -102,7 +103,7 @@ def _parameter_rows(params: dict, ci95: dict, plain: dict | None = None) -> list
     for name, value in params.items():
         lo, hi = ci95.get(name) or (None, None)
         unit = FIT_UNITS.get(name, "")
-        text = f"  {name:<6} {number(value):>10} {unit:<12} 95 % interval [{number(lo)}, {number(hi)}]"
+        text = f"  {name:<6} {number(value):>10} {unit:<12} 95 % interval {interval(lo, hi)}"
         if plain is not None and name in plain:
             text += f"; plain least squares {number(plain[name])}"
         rows.append(text.rstrip())

@@ -6,6 +6,7 @@ from __future__ import annotations
 import plotly.graph_objects as go
 
 from ..display import requirement
+from .layout import no_overprint
 from .page import esc, figure_div, page, table
 from .words import tech_label, varied_text
 
@@ -24,8 +25,8 @@ def _counts(data: dict) -> go.Figure:
     techs = sorted({t for g in grid for t in g["feasible"]})
     fig = go.Figure([go.Bar(name=tech_label(t), x=labels, y=[g["feasible"][t] for g in grid]) for t in techs])
     fig.update_layout(barmode="group", title="Feasible designs per technology at each grid point",
-                      yaxis_title="feasible candidates", height=460, xaxis_tickangle=-30)
-    return fig
+                      yaxis_title="feasible candidates", height=460, xaxis_tickangle=-90)
+    return no_overprint(fig)
 
 
 def _fronts(data: dict) -> go.Figure:
@@ -39,7 +40,7 @@ def _fronts(data: dict) -> go.Figure:
                                  hovertemplate="%{text}<br>%{x:.1f} kg, %{y:.0f} USD<extra></extra>"))
     fig.update_layout(title="Pareto front (feasible designs) at each grid point", xaxis_title="mass, kg",
                       yaxis_title="cost, USD", height=480)
-    return fig
+    return no_overprint(fig)
 
 
 def render(data: dict) -> str:

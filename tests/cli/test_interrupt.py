@@ -34,3 +34,28 @@ def test_ctrl_c_gives_one_line_exit_130_and_writes_nothing(tmp_path, after_s):
     assert len(lines) == 1 and "interrupted by SIGINT" in lines[0], err
     assert stdout == ""
     assert sorted(p.name for p in tmp_path.iterdir()) == [], "something was written"
+
+
+def test_ctrl_c_while_the_outputs_are_swapped_in_exits_130_with_them_complete(tmp_path, monkeypatch):
+    """Signals are held back for the renames; the one that arrives then is
+    delivered right after, so the run still ends interrupted (it exited 0),
+    and the outputs are the new ones, whole."""
+    import os
+
+    from sizing.io import atomic
+
+    from ..conftest import FAST_REQUIREMENTS, run_cli
+    req = tmp_path / "req.toml"
+    req.write_text(FAST_REQUIREMENTS)
+    out = tmp_path / "out"
+    real = os.replace
+
+    def replace_under_a_signal(src, dst):
+        if signal.SIGINT in signal.pthread_sigmask(signal.SIG_BLOCK, []):      # inside the held-back renames
+            os.kill(os.getpid(), signal.SIGINT)
+        return real(src, dst)
+    monkeypatch.setattr(atomic.os, "replace", replace_under_a_signal)
+    code, _, err = run_cli("solve", req, "--out", out, "--quiet")
+    assert code == 130 and len(err.strip().splitlines()) == 1 and "SIGINT" in err, err
+    assert {p.name for p in out.iterdir()} >= {"results.json", "report.html", "candidates.csv"}
+    assert [p.name for p in tmp_path.iterdir() if p.name.startswith(".")] == []

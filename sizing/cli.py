@@ -10,7 +10,7 @@ import signal
 import sys
 import threading
 
-from .errors import RECEIVED_SIGNALS
+from .errors import HOLDING_SIGNALS, RECEIVED_SIGNALS
 
 
 def _record_interrupt(signum, frame):
@@ -306,8 +306,7 @@ class _LazyProgress:
 
 def _fit_output(result, out: Optional[Path]) -> None:
     """The result first (on stderr when stdout carries the TOML), then the warnings."""
-    from .report.text import fit_summary
-    typer.echo(fit_summary(result.kind, result.result), err=out is None)
+    typer.echo(result.summary(), err=out is None)
     for warning in result.warnings:
         typer.echo(f"warning: {warning}", err=True)
     if out is None:
@@ -460,14 +459,15 @@ def sweep(requirements: Path = typer.Argument(..., help="requirements.toml (docs
     """A full solve at every point of a grid over requirement fields."""
     data = _run_study(api.sweep, quiet, workers, requirements, vary, out, catalog, scheduler=scheduler)
     if not quiet:
-        from .report.words import sweep_point_line
-        for g in data["grid"]:
-            typer.echo(sweep_point_line(g))
+        for line in data.point_lines():
+            typer.echo(line)
         typer.echo(f"{out}/sweep.json, sweep.html written ({data['where']})")
 
 
 def _interrupt(signum, frame):
     RECEIVED_SIGNALS.append(signum)
+    if HOLDING_SIGNALS:             # outputs being swapped in: the writer raises once they are whole
+        return
     raise Interrupted(signum)
 
 

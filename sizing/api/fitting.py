@@ -51,6 +51,12 @@ class FitResult(Payload):
         return {"toml": self.toml, "warnings": list(self.warnings), "result": self.result,
                 "written": list(self.written)}
 
+    def summary(self) -> str:
+        """What the fit found, as the terminal shows it before any warning:
+        the model carried, its held-out NRMSE, the parameters with intervals."""
+        from ..report.text import fit_summary
+        return fit_summary(self.kind, self.result)
+
     def files(self) -> dict:
         """{path: content}: the TOML, the report with the plotly bundle beside it, the extra files."""
         from ..report.fit_html import render

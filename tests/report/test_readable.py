@@ -131,6 +131,12 @@ def test_terminal_and_pages_read_as_words_and_units(outputs, name):
         assert not found, (page.name, found[:5])
 
 
+def test_the_fit_page_of_the_shipped_record_stays_under_1_5_mb(outputs):
+    runs, _ = outputs
+    [page] = runs["fit hysteresis"][1]
+    assert page.stat().st_size < 1_500_000, page.stat().st_size     # three runs, each plotted in six traces
+
+
 def test_the_scan_finds_what_it_looks_for():
     ids = {"ph-pi-p-056.90-n11-silicone-pmx200-10cst-fkm-o-ring-pi-e-481-steel-4340"}
     assert problems("recalibrated {'d33': 7.951615392113761e-07}", set())

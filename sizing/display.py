@@ -48,6 +48,7 @@ REQUIREMENT_KINDS = {"stroke": "length", "blocked_force": "force", "speed": "spe
                      "max_diameter": "length", "max_width": "length", "max_mass": "mass", "wide_gap": "length",
                      "min_natural_frequency": "frequency", "compensator_mass": "mass", "supply_voltage": "voltage",
                      "electronics_bay_temperature": "temperature", "drift_reference_temperature": "temperature"}
+SHARES = {"overshoot", "compliance_force_fraction", "efficiency"}     # results keys that are fractions: read in %
 FRACTIONS = {"design_margin", "max_overshoot", "max_drift_fraction", "min_compliance"}
 REQUIREMENT_UNITS = {"dynamic_pressure": (1e-3, "kPa"), "stiffness": (1e-6, "MN/m"), "min_stiffness": (1e-6, "MN/m")}
 
@@ -95,7 +96,7 @@ def quantity(key: str, value) -> str:
     """A value under a results.json key with a unit suffix ("stroke_m", 0.04 -> "40 mm")."""
     suffix = _suffix(key)
     if suffix is None:
-        return number(value)
+        return f"{number(100 * value)} %" if key in SHARES and isinstance(value, (int, float)) else number(value)
     return _with(value, *SUFFIXES[suffix])
 
 

@@ -6,21 +6,54 @@ option is checked here (``number_option``): finite, in range, an integer
 where it counts something."""
 from __future__ import annotations
 
-from .threads import single_threaded_blas
+import signal
+import sys
+import threading
+
+from .errors import HOLDING_SIGNALS, RECEIVED_SIGNALS
+
+
+def _record_interrupt(signum, frame):
+    """Until ``main`` takes over: note the signal, then interrupt as Python
+    would (the imports below take seconds; a library that turns the
+    interrupt into an ImportError still leaves the note)."""
+    RECEIVED_SIGNALS.append(signum)
+    raise KeyboardInterrupt
+
+
+def _one_line_on_interrupt(kind, value, tb, _default=sys.excepthook):
+    """An interrupt that arrives outside ``main`` (while the command line
+    loads, or as it exits): one line and exit 128 + signal, not a traceback."""
+    if RECEIVED_SIGNALS or issubclass(kind, KeyboardInterrupt):
+        import os
+        signum = RECEIVED_SIGNALS[0] if RECEIVED_SIGNALS else signal.SIGINT
+        sys.stderr.write(f"error: interrupted by {signal.Signals(signum).name}; {INTERRUPTED_OUTPUTS}\n")
+        sys.stderr.flush()
+        os._exit(128 + signum)
+    _default(kind, value, tb)
+
+
+INTERRUPTED_OUTPUTS = "outputs are complete or untouched"
+if signal.getsignal(signal.SIGINT) is signal.default_int_handler and \
+        threading.current_thread() is threading.main_thread():      # not when a host program set its own
+    signal.signal(signal.SIGINT, _record_interrupt)
+    signal.signal(signal.SIGTERM, _record_interrupt)
+    if sys.excepthook is sys.__excepthook__:
+        sys.excepthook = _one_line_on_interrupt
+
+from .threads import single_threaded_blas  # noqa: E402
 
 single_threaded_blas()   # before numpy loads (sizing/threads.py)
 
 import json  # noqa: E402
 import math  # noqa: E402
-import signal  # noqa: E402
-import sys  # noqa: E402
 from pathlib import Path  # noqa: E402
 from typing import List, Optional  # noqa: E402
 
 import typer  # noqa: E402
 
 from . import __version__, api  # noqa: E402
-from .errors import RECEIVED_SIGNALS, FitError, InputError, Interrupted, raise_if_interrupted  # noqa: E402
+from .errors import FitError, InputError, Interrupted, raise_if_interrupted  # noqa: E402
 from .limits import use_limits  # noqa: E402
 
 app = typer.Typer(help="Size smart-material actuators for glide-body control surfaces, "
@@ -269,8 +302,9 @@ class _LazyProgress:
                 return
             from rich.console import Console
             from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+            console = Console(stderr=True)
             self.bar = Progress(TextColumn("{task.description}"), BarColumn(), TimeElapsedColumn(),
-                                console=Console(stderr=True), transient=True)
+                                console=console, transient=True, disable=not console.is_terminal)
             self.bar.start()
             self.task = self.bar.add_task(self.label, total=1.0)
         self.bar.update(self.task, completed=fraction, description=f"{self.label}: {message}")
@@ -281,6 +315,8 @@ class _LazyProgress:
 
 
 def _fit_output(result, out: Optional[Path]) -> None:
+    """The result first (on stderr when stdout carries the TOML), then the warnings."""
+    typer.echo(result.summary(), err=out is None)
     for warning in result.warnings:
         typer.echo(f"warning: {warning}", err=True)
     if out is None:
@@ -354,8 +390,9 @@ class _StageBars:
         before any work print their one line and nothing else."""
         from rich.console import Console
         from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+        console = Console(stderr=True)      # bars only on a terminal: a log file gets no blank line
         self.bar = Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(),
-                            TimeElapsedColumn(), console=Console(stderr=True), transient=True)
+                            TimeElapsedColumn(), console=console, transient=True, disable=not console.is_terminal)
         self.bar.start()
 
     def __call__(self, stage: str, done: int, total: int) -> None:
@@ -416,7 +453,7 @@ def robust(requirements: Path = typer.Argument(..., help="requirements.toml (doc
     if not quiet:
         for d in data["designs"]:
             lo, hi = d["p_ci95"]
-            typer.echo(f"{d['id']}: P(compliance) {d['p_compliance']:.3f} [{lo:.3f}, {hi:.3f}], "
+            typer.echo(f"{d.get('name') or d['id']}: P(compliance) {d['p_compliance']:.3f} (95 % interval {lo:.3f} to {hi:.3f}), "
                        f"driven by {d['driving_tolerance'] or '-'}")
         typer.echo(f"{out}/robust.json, robust.html written ({data['where']})")
 
@@ -432,21 +469,21 @@ def sweep(requirements: Path = typer.Argument(..., help="requirements.toml (docs
     """A full solve at every point of a grid over requirement fields."""
     data = _run_study(api.sweep, quiet, workers, requirements, vary, out, catalog, scheduler=scheduler)
     if not quiet:
-        for g in data["grid"]:
-            b = g["best"]
-            typer.echo(f"{g['varied']}: feasible {g['feasible']}, best {b['id'] if b else 'none'}")
+        for line in data.point_lines():
+            typer.echo(line)
         typer.echo(f"{out}/sweep.json, sweep.html written ({data['where']})")
 
 
 def _interrupt(signum, frame):
     RECEIVED_SIGNALS.append(signum)
+    if HOLDING_SIGNALS:             # outputs being swapped in: the writer raises once they are whole
+        return
     raise Interrupted(signum)
 
 
 def _handle_signals() -> dict:
     """SIGINT and SIGTERM raise Interrupted (main thread only); returns the
     previous handlers."""
-    import threading
     if threading.current_thread() is not threading.main_thread():
         return {}
     return {sig: signal.signal(sig, _interrupt) for sig in (signal.SIGINT, signal.SIGTERM)}
@@ -463,10 +500,11 @@ def main(argv: Optional[List[str]] = None) -> None:
 
     previous = _handle_signals()
     try:
+        raise_if_interrupted()        # one that arrived while the command line loaded
         code = app(args=argv, standalone_mode=False, prog_name="sizing")
         raise_if_interrupted()        # a signal some library swallowed still ends the run as interrupted
     except Interrupted as exc:
-        typer.echo(f"error: interrupted by {signal.Signals(exc.signum).name}; outputs are complete or untouched", err=True)
+        typer.echo(f"error: interrupted by {signal.Signals(exc.signum).name}; {INTERRUPTED_OUTPUTS}", err=True)
         sys.exit(128 + exc.signum)
     except (InputError, FitError) as exc:
         typer.echo(f"error: {_one_line(exc)}", err=True)

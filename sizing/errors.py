@@ -39,6 +39,12 @@ class Interrupted(BaseException):
 # Interrupted raised inside it (cvxpy's solver import catches everything), so
 # the output writer asks here again before it swaps any file in.
 RECEIVED_SIGNALS: list[int] = []
+# Non-empty while the output writer swaps files in: the handler then only
+# records the signal, and the writer raises once the swap is done. Blocking
+# the signal in the main thread is not enough: another thread (a BLAS or
+# Dask worker) takes it, and Python runs the handler in the main thread all
+# the same, between two renames.
+HOLDING_SIGNALS: list[int] = []
 
 
 def raise_if_interrupted() -> None:

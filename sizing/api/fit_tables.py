@@ -93,7 +93,7 @@ def hysteresis_fit_table(carried, requested, choice, summary, bw, pi, runs, stat
                                "input before the record; holdout runs get theirs with the model held"),
         "input_filter": _filter_note(cutoffs),
         "cutoff_Hz": cutoffs[0] if len(cutoffs) == 1 else cutoffs,
-        "warnings": list(bw.warnings_),
+        "warnings": plain_warnings(bw.warnings_),
         "nrmse_runs": summary[carried]["nrmse_runs"],
         "model_choice": choice,
         "ci95": {n: [float(th[i] - half[i]), float(th[i] + half[i])] for i, n in enumerate(PARAM_NAMES)},
@@ -151,3 +151,13 @@ def dc_tables(est, fit_table: dict) -> dict:
         tables["controller"] = gains
     tables["fit"] = fit_table
     return tables
+
+
+PLAIN = "plain least-squares fit (before the prior): "
+
+
+def plain_warnings(messages) -> list[str]:
+    """The plain fit's warnings, saying so: its values (beta = 1.7) are not
+    the [stack] values the TOML carries (beta = 7.3, with the prior)."""
+    return [m if m.startswith(PLAIN) else PLAIN + m for m in messages]
+

@@ -51,6 +51,12 @@ class FitResult(Payload):
         return {"toml": self.toml, "warnings": list(self.warnings), "result": self.result,
                 "written": list(self.written)}
 
+    def summary(self) -> str:
+        """What the fit found, as the terminal shows it before any warning:
+        the model carried, its held-out NRMSE, the parameters with intervals."""
+        from ..report.text import fit_summary
+        return fit_summary(self.kind, self.result)
+
     def files(self) -> dict:
         """{path: content}: the TOML, the report with the plotly bundle beside it, the extra files."""
         from ..report.fit_html import render
@@ -121,7 +127,9 @@ def fit_hysteresis(paths, holdout=None, model: str = "auto", out=None, report=No
     extra = {} if catalog_entry is None else _catalog_entry(catalog_entry, base_raw, base_named, bw, paths,
                                                             prior_text, out)
     result = _hysteresis_result(carried, summary, traces, fit_table, bw, pi, choice, paths)
-    return _finish(FitResult("hysteresis", toml, result, _unique(log), out, report, extra, tuple(paths)))
+    plain = set(bw.warnings_)
+    said = tuple(tables.plain_warnings([w])[0] if w in plain else w for w in _unique(log))
+    return _finish(FitResult("hysteresis", toml, result, said, out, report, extra, tuple(paths)))
 
 
 def _unique(log) -> tuple[str, ...]:

@@ -30,6 +30,12 @@ class StudyResult(Payload):
     def _payload(self) -> dict:
         return self.data
 
+    def point_lines(self) -> list[str]:
+        """A sweep's grid points as the terminal shows them: the varied values
+        with units, the feasible count per technology, the best by name."""
+        from ..report.words import sweep_point_line
+        return [sweep_point_line(g) for g in self.data.get("grid", [])]
+
     def files(self) -> dict:
         if self.kind == "robust":
             from ..report.robust_html import render

@@ -95,3 +95,36 @@ def of_candidate(catalog, c: dict) -> list[dict]:
     if isinstance(given, list) and all(isinstance(x, dict) for x in given) and given:
         return given
     return rests_on_components(catalog, c.get("components", {}), c.get("driver"))
+
+
+def in_words(catalog, record: dict) -> str:
+    """An assumed value as people read it, naming the part by maker and
+    model rather than by catalog key: "the motor's max temperature, 100 degC
+    (Allied Motion MF0127008_48V)". The key where the catalog
+    does not hold the part."""
+    from ..display import of_kind
+    from ..io.catalog_diff import quantity_kind
+    part, field = record["part"], record["field"]
+    try:
+        kind, entry = catalog.get(part)
+    except (KeyError, AttributeError):
+        return f"{part} {field}"
+    value = getattr(entry, field, None)
+    shown = f", {of_kind(value, quantity_kind(type(entry), field), field)}" if isinstance(value, (int, float)) else ""
+    return f"the {kind.replace('_', ' ')}'s {field.replace('_', ' ')}{shown} ({_model(entry.name)})"
+
+
+def _model(name: str) -> str:
+    """A catalog name cut after its model number ("PI E-481 PICA high-power
+    ..." -> "PI E-481"); up to its first comma when it has none."""
+    words = name.split(",")[0].split(" (")[0].split()
+    for i, word in enumerate(words):
+        if any(ch.isdigit() for ch in word):
+            return " ".join(words[: i + 1])
+    return " ".join(words)
+
+
+def assumed_clause(words: list[str], limit: int = 3) -> str:
+    """ "one assumed value, the motor's ..." / "3 assumed values: ...; ...". """
+    shown = "; ".join(words[:limit]) + (f" and {len(words) - limit} more" if len(words) > limit else "")
+    return f"one assumed value, {shown}" if len(words) == 1 else f"{len(words)} assumed values: {shown}"

@@ -14,6 +14,8 @@ from __future__ import annotations
 
 import math
 
+from ..display import field_name, number, quantity
+
 # order of the events in the list, most important first
 EVENTS = ("entered_feasible", "left_feasible", "entered_pareto", "left_pareto",
           "new_candidate", "dropped_candidate", "rank_up", "rank_down")
@@ -89,8 +91,8 @@ def _summary(cid: str, events: list[str], old_rank, new_rank, causes: list[dict]
         if c.get("field") is None:
             named.append(f"{c['entry']} {c.get('change', 'changed')}")
         elif isinstance(c.get("old"), (int, float)) and isinstance(c.get("new"), (int, float)):
-            unit = f" {c['unit']}" if c.get("unit") else ""
-            named.append(f"{c['entry']}.{c['field']} {c['old']:.4g} -> {c['new']:.4g}{unit}")
+            named.append(f"{c['entry']}.{c['field']} {_with_unit(c['field'], c['old'], c.get('unit'))} -> "
+                         f"{_with_unit(c['field'], c['new'], c.get('unit'))}")
         else:
             named.append(f"{c['entry']}.{c['field']}")
     if named:
@@ -154,6 +156,7 @@ def rank_changes(baseline: dict, results: dict, catalog_diff=None) -> list[dict]
         events.sort(key=EVENTS.index)
         changes.append({
             "id": cid,
+            "name": (new or old).get("name", cid),
             "technology": (new or old).get("technology"),
             "events": events,
             "feasible": [old.get("feasible") if old else None, new.get("feasible") if new else None],
@@ -212,7 +215,8 @@ def change_causes(baseline: dict, results: dict, changes: list[dict], catalog_di
     versions = [baseline.get("tool_version"), results.get("tool_version")]
     parts = []
     if reqs:
-        shown = ", ".join(f"{r['field']} {_value(r['old'])} -> {_value(r['new'])}" for r in reqs[:3])
+        shown = ", ".join(f"{field_name(r['field'])} {_value(r['old'], r['field'])} -> {_value(r['new'], r['field'])}"
+                          for r in reqs[:3])
         parts.append(f"{len(reqs)} requirement value{'s' if len(reqs) > 1 else ''} changed ({shown}"
                      + (f" and {len(reqs) - 3} more" if len(reqs) > 3 else "") + ")")
     if catalog and any(catalog.values()):
@@ -225,8 +229,16 @@ def change_causes(baseline: dict, results: dict, changes: list[dict], catalog_di
             "designs_moved": moved, "text": text}
 
 
-def _value(v) -> str:
-    return f"{v:.4g}" if isinstance(v, float) else str(v)
+def _value(v, key: str = "") -> str:
+    """A requirement value under its results.json key ("stroke_m": 0.04 -> 40 mm)."""
+    return quantity(key, v) if isinstance(v, (int, float)) and not isinstance(v, bool) else str(v)
+
+
+def _with_unit(field: str, v, unit: str | None) -> str:
+    """A catalog value in the unit given (SI), else the unit its key's suffix names."""
+    if not isinstance(v, (int, float)) or isinstance(v, bool):
+        return str(v)
+    return f"{number(v)} {unit}" if unit else quantity(field, v)
 
 
 def _importance(change: dict):

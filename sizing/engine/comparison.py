@@ -6,6 +6,8 @@ from __future__ import annotations
 
 import math
 
+from .assumed import assumed_clause, in_words
+from .describe import describe
 from .flip import flip
 
 LABELS = {"piezohydraulic": "piezohydraulic actuator", "dc_motor": "DC motor actuator",
@@ -58,6 +60,8 @@ def technology_comparison(req, candidates: list[dict], catalog=None) -> dict:
         rests = best.get("rests_on_assumed") or []
         out[tech]["rests_on_assumed"] = rests
         out[tech]["deciding_assumed"] = [f"{r['part']}.{r['field']}" for r in rests if r.get("decides")]
+        out[tech]["deciding_assumed_words"] = [in_words(catalog, r) for r in rests if r.get("decides")]
+        out[tech]["description"] = describe(best, catalog)
         near = None if ok else _one_miss(members, keys)
         if near is not None:
             out[tech]["one_miss"] = {"id": near["id"], "misses": near["driver"],
@@ -68,7 +72,7 @@ def technology_comparison(req, candidates: list[dict], catalog=None) -> dict:
                          f"(margin {m:+.1%})")
         else:
             lines.append(f"{label}: no feasible design; the closest, {best.get('name', best['id'])} ({figures}), "
-                         f"misses {best['driver']} by {_miss(m)}")
+                         f"misses {best['driver']} {_miss(m)}")
             if near is not None:
                 lines.append(f"the best {label} design that misses only one check, {near.get('name', near['id'])} "
                              f"({', '.join(format_metric(k, near['metrics'].get(k)) for k in keys)}), misses "
@@ -146,9 +150,9 @@ def _recommendation(out: dict, keys: list[str], pick: tuple | None = None, claus
             ratio = rival["metrics"][key] / best["metrics"][key]
             text += (f", {ratio:.3g} x lighter than the best {LABELS.get(other, other)} design" if key == "mass_kg"
                      else f", {ratio:.3g} x better in {key.split('_')[0]} than the best {LABELS.get(other, other)} design")
-    deciding = best.get("deciding_assumed") or []
+    deciding = best.get("deciding_assumed_words") or best.get("deciding_assumed") or []
     if deciding:
-        text += f"; its binding check rests on assumed {', '.join(deciding[:3])}"
+        text += f"; its binding check rests on {assumed_clause(deciding)}"
     return text + clause + _pump_clause(out) + "."
 
 
@@ -158,12 +162,12 @@ def _pump_clause(out: dict) -> str:
 
 
 def _rests_text(entry) -> str:
-    rests, deciding = entry["rests_on_assumed"], entry["deciding_assumed"]
+    rests, deciding = entry["rests_on_assumed"], entry.get("deciding_assumed_words") or entry["deciding_assumed"]
     if not rests:
         return "its best design rests on no assumed catalog value"
     text = f"its best design rests on {len(rests)} assumed catalog values"
     if deciding:
-        shown = ", ".join(deciding[:4]) + (" ..." if len(deciding) > 4 else "")
+        shown = "; ".join(deciding[:4]) + (" ..." if len(deciding) > 4 else "")
         text += f", {len(deciding)} of them in its binding margin ({shown})"
     return text
 
@@ -185,4 +189,6 @@ def format_metric(key, value) -> str:
 
 
 def _miss(m) -> str:
-    return "an unbounded amount" if m is None or not math.isfinite(m) else f"{-m:.0%}"
+    """How far a check is missed: "by 35%"; "entirely" when the margin has no
+    finite value (nothing of the requirement achieved, or no figure for it)."""
+    return "entirely" if m is None or not math.isfinite(m) else f"by {-m:.0%}"

@@ -5,6 +5,8 @@ on. Best: lowest mass among the feasible, then cost (the ranking's first
 objective; the seed's objectives are mass and cost)."""
 from __future__ import annotations
 
+from .assumed import assumed_clause, in_words
+
 REAL = ("sourced", "datasheet", "measured")
 
 
@@ -65,7 +67,7 @@ def dc_sourced(catalog, candidates: list[dict]) -> dict:
            "best_on_any_parts": _brief(best_any) if best_any else None,
            "best_on_sourced_parts_binding_on_no_assumed_value": _brief(best_firm) if best_firm else None,
            "closest_on_sourced_parts_binding_on_no_assumed_value": _brief(closest) if closest else None}
-    out["text"] = _text(out)
+    out["text"] = _text(out, catalog)
     return out
 
 
@@ -74,14 +76,14 @@ def _label(entry: dict) -> str:
     return entry.get("name") or entry["id"]
 
 
-def _text(out: dict) -> str:
+def _text(out: dict, catalog=None) -> str:
     a, r = out["best_on_any_parts"], out["best_on_sourced_parts"]
     if a is None:
         return "No feasible DC design from parts."
-    deciding = [f"{x['part']} {x['field']}" for x in a["rests_on_assumed"] if x["decides"]]
+    deciding = [in_words(catalog, x) for x in a["rests_on_assumed"] if x["decides"]]
     line = (f"Best DC design on any parts: {_label(a)} ({a['mass_kg']:.2f} kg, binding {a['driver']} "
             f"{a['binding_margin']:+.1%}); its binding margin rests on "
-            + (f"the assumed {', '.join(deciding)}." if deciding else "no assumed value."))
+            + (f"{assumed_clause(deciding)}." if deciding else "no assumed value."))
     if r is None:
         return line + " No feasible DC design on sourced parts."
     if r["id"] == a["id"]:
@@ -96,5 +98,5 @@ def _text(out: dict) -> str:
     c = out["closest_on_sourced_parts_binding_on_no_assumed_value"]
     if f is None and c is not None:
         line += (f" No feasible design on sourced parts has a binding margin free of assumed values; the closest, "
-                 f"{_label(c)} ({c['mass_kg']:.2f} kg), misses {c['driver']} by {c['binding_margin']:+.1%}.")
+                 f"{_label(c)} ({c['mass_kg']:.2f} kg), misses {c['driver']} by {-c['binding_margin']:.1%}.")
     return line

@@ -108,7 +108,8 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
     candidates = [dict(c, rests_on_assumed=assumed.of_candidate(catalog, c), name=n)
                   for c, n in zip(ranked, names.unique(ranked))]
     stages = Stages.of(verified, dc_records, pumps)
-    results = _results(req, requirements_sha256, catalog, cases, candidates, outcomes, _disagreements(verified))
+    results = _results(req, requirements_sha256, catalog, cases, candidates, outcomes,
+                       _disagreements(verified, {c["id"]: c["name"] for c in candidates}))
     traces = _traces(req, candidates, stages, loads)
     if detail != "full":
         results = _keep_verified(results)
@@ -325,9 +326,10 @@ def _dc_counts(parts: DCPartsOutcome) -> dict:
             "simulated": stages.count("simulated")}
 
 
-def _disagreements(verified: list[VerifiedDesign]) -> list[dict]:
+def _disagreements(verified: list[VerifiedDesign], names: dict | None = None) -> list[dict]:
     """Where the static screen and the simulation disagree on a requirement's
-    verdict (one margin >= 0, the other < 0), or differ by more than 10 %."""
+    verdict (one margin >= 0, the other < 0), or differ by more than 10 %;
+    each with the design's short name (``names``: id -> name)."""
     out = []
     for v in verified:
         d, sim = v.design, v.simulation
@@ -341,7 +343,7 @@ def _disagreements(verified: list[VerifiedDesign]) -> list[dict]:
             m_sim = b / req_value - 1
             flip = (sm[key] >= 0) != (m_sim >= 0)
             if flip or abs(b / a - 1) > 0.10:
-                out.append({"id": d.id, "requirement": key, "static": a, "simulated": b,
+                out.append({"id": d.id, "name": (names or {}).get(d.id, d.id), "requirement": key, "static": a, "simulated": b,
                             "static_margin": sm[key], "simulated_margin": m_sim, "verdict_changes": flip})
     return out
 

@@ -134,7 +134,7 @@ def _summary(req: RequirementsFile, candidates: list[dict], catalog, piezo_prune
             entry["blocking"] = furthest["driver"]
             entry["closest"] = furthest["id"]
             entry["text"] = (f"no feasible design: blocked by {furthest['driver']} - the candidate that gets furthest, "
-                             f"{_label(furthest)} ({furthest['stage']}), misses it by {_pct(m)}")
+                             f"{_label(furthest)} ({furthest['stage']}), misses it {_pct(m)}")
         groups.append(entry)
     return {"groups": groups, "thermal": _thermal_statement(req, candidates),
             "comparison": technology_comparison(req, candidates, catalog),
@@ -175,9 +175,10 @@ def _label(c: dict) -> str:
 
 
 def _pct(margin) -> str:
+    """"by 35%", or "entirely" when the margin has no finite value."""
     if margin is None or not math.isfinite(margin):
-        return "an unbounded amount"
-    return f"{-margin:.0%}" if margin < 0 else f"{margin:.0%}"
+        return "entirely"
+    return f"by {-margin:.0%}" if margin < 0 else f"by {margin:.0%}"
 
 
 def _thermal_statement(req, candidates) -> str:

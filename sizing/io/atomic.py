@@ -41,7 +41,7 @@ import threading
 from pathlib import Path
 from typing import Callable, Iterable, Mapping, Union
 
-from ..errors import InputError, raise_if_interrupted
+from ..errors import HOLDING_SIGNALS, InputError, raise_if_interrupted
 
 Content = Union[str, bytes, Callable[[], Union[str, bytes]]]
 MAX_CARRIED = 200     # entries of an existing --out folder carried over; more means a wrong folder
@@ -161,11 +161,14 @@ def signals_deferred():
     if not hasattr(signal, "pthread_sigmask") or threading.current_thread() is not threading.main_thread():
         yield
         return
+    HOLDING_SIGNALS.append(1)
     old = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})
     try:
         yield
     finally:
         signal.pthread_sigmask(signal.SIG_SETMASK, old)
+        HOLDING_SIGNALS.pop()
+    raise_if_interrupted()          # one that came during the swap: the outputs are whole, the run was interrupted
 
 
 def _render(content: Content) -> bytes:

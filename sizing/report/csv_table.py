@@ -13,7 +13,7 @@ METRICS = ("mass_kg", "cost_usd", "volume_m3", "power_W")
 
 def candidates_csv(results: dict) -> str:
     margin_keys = sorted({k for c in results["candidates"] for k in c["margins"]})
-    header = (["rank", "id", "technology", "variant", "stage", "feasible", "driver", "pareto"]
+    header = (["rank", "id", "technology", "name", "variant", "stage", "feasible", "driver", "pareto"]
               + list(COMPONENTS) + [f"static_{k}" for k in STATIC] + [f"simulated_{k}" for k in SIMULATED]
               + [f"margin_{k}" for k in margin_keys] + list(METRICS))
     out = io.StringIO()
@@ -21,7 +21,7 @@ def candidates_csv(results: dict) -> str:
     w.writerow(header)
     for c in results["candidates"]:
         comp, st, sim, m = c["components"], c.get("static", {}), c.get("simulated", {}), c.get("metrics", {})
-        row = [c["rank"], c["id"], c["technology"], c.get("variant", ""), c.get("stage", ""), c["feasible"],
+        row = [c["rank"], c["id"], c["technology"], c.get("name", ""), c.get("variant", ""), c.get("stage", ""), c["feasible"],
                c["driver"], c["pareto"]]
         row += [comp.get(k, "") for k in COMPONENTS]
         row += [st.get(k, "") for k in STATIC] + [sim.get(k, "") for k in SIMULATED]

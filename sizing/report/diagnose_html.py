@@ -9,7 +9,17 @@ import numpy as np
 import plotly.graph_objects as go
 from plotly.subplots import make_subplots
 
+from ..display import interval, label, number, quantity
 from .bundle import plotly_tag
+
+# the nominal parameters ``sizing diagnose --recalibrate`` re-fits, and their units
+# (docs/formats.md: d33 m/V; seal friction N; c1 1/s and c2 rad/(s^2 A), seed eq. 13)
+RECALIBRATED_UNITS = {"d33": "m/V", "wide_friction": "N", "narrow_friction": "N", "c1": "1/s", "c2": "rad/(s^2 A)"}
+
+
+def _per_run(nrmse: dict) -> str:
+    """NRMSE per run: "steps_a 0.0123, steps_b 0.0456"."""
+    return ", ".join(f"{run} {x:.4f}" for run, x in nrmse.items())
 
 
 def _traces(diagnosis) -> go.Figure:
@@ -75,11 +85,11 @@ def _ranking(diagnosis) -> go.Figure:
     return fig
 
 
-def _interval(ci) -> str:
-    """A 95 % interval, or why there is none (parameter not identifiable)."""
+def _interval(key: str, ci) -> str:
+    """A 95 % interval in the parameter's unit, or why there is none (not identifiable)."""
     if ci is None or not all(np.isfinite(ci)):
         return "[CI n/a: not identifiable from these runs]"
-    return f"[{ci[0]:.3g}, {ci[1]:.3g}]"
+    return f"({interval(ci[0], ci[1], lambda x: quantity(key, x))})"
 
 
 def render(diagnosis, title: str = "Sim-to-real gap diagnosis") -> str:
@@ -113,7 +123,8 @@ def render(diagnosis, title: str = "Sim-to-real gap diagnosis") -> str:
                 + "".join(f"<th>{ch}</th>" for ch in diagnosis.bench.channels) + "</tr>" + channels + "</table>")
     rows = []
     for c in data["candidates"][:12]:
-        params = ", ".join(f"{k} = {val:.3g} {_interval(c['params_ci95'].get(k))}" for k, val in c["params"].items())
+        params = ", ".join(f"{label(k)} = {quantity(k, val)} {_interval(k, c['params_ci95'].get(k))}"
+                           for k, val in c["params"].items())
         rows.append(f"<tr><td>{html.escape(c['effect'])}</td><td>{c['nrmse_train']:.4f}</td>"
                     f"<td>{c['nrmse_holdout']:.4f}</td><td>{100 * c['shrink_holdout']:.0f} %</td>"
                     f"<td>{html.escape(params) or '-'}</td></tr>")
@@ -130,9 +141,9 @@ def render(diagnosis, title: str = "Sim-to-real gap diagnosis") -> str:
     recal = ""
     if diagnosis.recalibration:
         r = diagnosis.recalibration
-        recal = (f"<p>Re-calibrated on the training runs: {html.escape(', '.join(r['params']))} "
-                 f"{html.escape(str(r['recalibrated']))}; NRMSE before {html.escape(str({k: round(x, 4) for k, x in r['nrmse_before'].items()}))}, "
-                 f"after {html.escape(str({k: round(x, 4) for k, x in r['nrmse_after'].items()}))}.</p>")
+        values = ", ".join(f"{k} = {number(v)} {RECALIBRATED_UNITS.get(k, '')}".strip() for k, v in r["recalibrated"].items())
+        recal = (f"<p>Re-calibrated on the training runs: {html.escape(values)}; NRMSE before "
+                 f"{html.escape(_per_run(r['nrmse_before']))}, after {html.escape(_per_run(r['nrmse_after']))}.</p>")
     return f"""<!DOCTYPE html><html><head><meta charset="utf-8"><title>{html.escape(title)}</title>
 <style>body{{font-family:sans-serif;margin:2em;max-width:1100px}} td,th{{padding:2px 8px;text-align:left}}
 table{{border-collapse:collapse}} tr:nth-child(even){{background:#f4f4f4}}</style>{plotly_tag()}</head><body>
@@ -144,7 +155,7 @@ table{{border-collapse:collapse}} tr:nth-child(even){{background:#f4f4f4}}</styl
 noise floor (holdout) {diagnosis.noise_floor_holdout:.4f}. Input treatment: {html.escape(diagnosis.bench.input_treatment)}.</p>
 {recal}
 <h2>Effects</h2><table><tr><th>effect</th><th>NRMSE train</th><th>NRMSE holdout</th><th>shrink</th>
-<th>fitted parameters [95 % CI]</th></tr>{''.join(rows)}</table>
+<th>fitted parameters (95 % CI)</th></tr>{''.join(rows)}</table>
 {channels}
 <h2>Residual tests (baseline)</h2><table><tr><th>run</th><th>whiteness (max autocorrelation)</th>
 <th>cross-correlation with input</th><th>with velocity</th></tr>{tests}</table>

@@ -5,6 +5,8 @@ from __future__ import annotations
 import plotly.graph_objects as go
 from plotly.subplots import make_subplots
 
+from .layout import no_overprint
+
 UNITS = {"mass": ("mass_kg", 1.0, "mass (kg)"), "cost": ("cost_usd", 1.0, "cost (USD)"),
          "volume": ("volume_m3", 1e3, "volume (L)"), "power": ("power_W", 1.0, "peak power (W)")}
 SHOWN_STAGES = ("simulated", "sized", "gp_infeasible")
@@ -117,9 +119,9 @@ def pareto_figure(results: dict) -> go.Figure:
                                  hoverinfo="skip"))
     fig.update_layout(title=f"Designs in objective space ({xo} vs {yo}); hover for the design",
                       xaxis_title=xl, yaxis_title=yl, xaxis_type="log", yaxis_type="log",
-                      template="plotly_white", height=520,
-                      legend=dict(orientation="h", y=-0.2))
-    return fig
+                      xaxis_dtick="D2", yaxis_dtick="D2",      # 1, 2, 5 per decade: the 7, 8, 9 labels crowd
+                      template="plotly_white", height=520)
+    return no_overprint(fig)
 
 
 def traces_figure(results: dict, traces: list[dict]) -> go.Figure:
@@ -147,22 +149,25 @@ def traces_figure(results: dict, traces: list[dict]) -> go.Figure:
         fig.update_xaxes(title_text="time (s)", row=1, col=i + 1)
     fig.update_yaxes(title_text="output position from loaded rest (mm)", row=1, col=1)
     fig.update_layout(title="Time traces of the top designs (dotted: required stroke and the time allowed for it)",
-                      template="plotly_white", height=480, legend=dict(orientation="h", y=-0.25))
-    return fig
+                      template="plotly_white", height=480)
+    return no_overprint(fig)
 
 
 def comparison_figure(results: dict, picks: list[dict]) -> go.Figure:
-    """Margins of the best piezohydraulic designs against the DC options."""
+    """Margins of the best piezohydraulic designs against the DC options, one
+    row per requirement (horizontal bars: the requirement names read level,
+    however many there are)."""
     fig = go.Figure()
     keys = [k for k in MARGIN_ORDER if any(k in c["margins"] for c in picks)]
     for c in picks:
-        y = [c["margins"].get(k) for k in keys]
-        fig.add_trace(go.Bar(x=keys, y=[v * 100 if v is not None else None for v in y], name=c.get("name", c["id"]),
+        x = [c["margins"].get(k) for k in keys]
+        fig.add_trace(go.Bar(y=keys, x=[v * 100 if v is not None else None for v in x], name=c.get("name", c["id"]),
+                             orientation="h",
                              hovertext=[f"{c.get('name', c['id'])}<br>{k}: {v:+.1%}" if v is not None else f"{k}: n/a"
-                                        for k, v in zip(keys, y)], hoverinfo="text"))
-    fig.add_hline(y=0, line=dict(color="black"))
-    fig.update_layout(barmode="group", title="Piezohydraulic against DC motor: margin per requirement "
-                      "(below zero: requirement missed)", yaxis_title="margin (%)", template="plotly_white",
-                      height=480, legend=dict(orientation="h", y=-0.3))
-    fig.update_yaxes(range=[-100, 200])
-    return fig
+                                        for k, v in zip(keys, x)], hoverinfo="text"))
+    fig.add_vline(x=0, line=dict(color="black"))
+    fig.update_layout(barmode="group", title="Margin per requirement, piezohydraulic against DC (left of zero: missed)", xaxis_title="margin (%)", template="plotly_white",
+                      height=160 + len(keys) * (6 * max(1, len(picks)) + 12))     # 6 px a bar, 12 px between rows
+    fig.update_xaxes(range=[-100, 200])
+    fig.update_yaxes(autorange="reversed")
+    return no_overprint(fig)

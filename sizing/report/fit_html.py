@@ -8,6 +8,7 @@ import numpy as np
 import plotly.graph_objects as go
 from plotly.subplots import make_subplots
 
+from ..display import interval, number
 from .bundle import plotly_tag
 
 MAX_POINTS = 4000
@@ -17,6 +18,12 @@ UM = 1e6
 
 def _thin(n: int) -> slice:
     return slice(None, None, max(1, int(np.ceil(n / MAX_POINTS))))
+
+
+def _f4(values) -> np.ndarray:
+    """Single precision for plotting: plotly embeds numpy arrays as binary,
+    and 4-byte floats (7 digits, far below a pixel) halve the page."""
+    return np.asarray(values, dtype=np.float32)
 
 
 def _table(rows: list[list], header: list[str]) -> str:
@@ -37,15 +44,15 @@ def _run_figure(trace: dict, kind: str) -> go.Figure:
         fig = make_subplots(rows=2, cols=2, column_widths=[0.62, 0.38], row_heights=[0.65, 0.35],
                             specs=[[{}, {"rowspan": 2}], [{}, None]],
                             subplot_titles=("displacement", "loop: voltage vs displacement", "residual (measured - fitted)"))
-        fig.add_trace(go.Scatter(x=t[s], y=x[s] * UM, name="measured", line=dict(color=COLORS["measured"])), 1, 1)
-        fig.add_trace(go.Scatter(x=trace["voltage"][s], y=x[s] * UM, name="measured loop", showlegend=False,
+        fig.add_trace(go.Scatter(x=_f4(t[s]), y=_f4(x[s] * UM), name="measured", line=dict(color=COLORS["measured"])), 1, 1)
+        fig.add_trace(go.Scatter(x=_f4(trace["voltage"][s]), y=_f4(x[s] * UM), name="measured loop", showlegend=False,
                                  line=dict(color=COLORS["measured"])), 1, 2)
         for model, y in trace["fitted"].items():
             c = COLORS[model]
-            fig.add_trace(go.Scatter(x=t[s], y=y[s] * UM, name=model, line=dict(color=c, dash="dash")), 1, 1)
-            fig.add_trace(go.Scatter(x=trace["voltage_filtered"][s], y=y[s] * UM, name=f"{model} loop",
+            fig.add_trace(go.Scatter(x=_f4(t[s]), y=_f4(y[s] * UM), name=model, line=dict(color=c, dash="dash")), 1, 1)
+            fig.add_trace(go.Scatter(x=_f4(trace["voltage_filtered"][s]), y=_f4(y[s] * UM), name=f"{model} loop",
                                      showlegend=False, line=dict(color=c, dash="dash")), 1, 2)
-            fig.add_trace(go.Scatter(x=t[s], y=(x - y)[s] * UM, name=f"residual {model}", showlegend=False,
+            fig.add_trace(go.Scatter(x=_f4(t[s]), y=_f4((x - y)[s] * UM), name=f"residual {model}", showlegend=False,
                                      line=dict(color=c)), 2, 1)
         fig.update_yaxes(title_text="um", row=1, col=1)
         fig.update_yaxes(title_text="um", row=2, col=1)
@@ -55,13 +62,13 @@ def _run_figure(trace: dict, kind: str) -> go.Figure:
     else:
         fig = make_subplots(rows=2, cols=1, row_heights=[0.65, 0.35], shared_xaxes=True,
                             subplot_titles=("position", "residual (measured - fitted)"))
-        fig.add_trace(go.Scatter(x=t[s], y=trace["reference"][s] * 1e3, name="reference",
+        fig.add_trace(go.Scatter(x=_f4(t[s]), y=_f4(trace["reference"][s] * 1e3), name="reference",
                                  line=dict(color="#999999")), 1, 1)
-        fig.add_trace(go.Scatter(x=t[s], y=x[s] * 1e3, name="measured", line=dict(color=COLORS["measured"])), 1, 1)
+        fig.add_trace(go.Scatter(x=_f4(t[s]), y=_f4(x[s] * 1e3), name="measured", line=dict(color=COLORS["measured"])), 1, 1)
         for model, y in trace["fitted"].items():
-            fig.add_trace(go.Scatter(x=t[s], y=y[s] * 1e3, name="fitted (eq. 14 closed loop)",
+            fig.add_trace(go.Scatter(x=_f4(t[s]), y=_f4(y[s] * 1e3), name="fitted (eq. 14 closed loop)",
                                      line=dict(color=COLORS[model], dash="dash")), 1, 1)
-            fig.add_trace(go.Scatter(x=t[s], y=(x - y)[s] * 1e3, name="residual", showlegend=False,
+            fig.add_trace(go.Scatter(x=_f4(t[s]), y=_f4((x - y)[s] * 1e3), name="residual", showlegend=False,
                                      line=dict(color=COLORS[model])), 2, 1)
         fig.update_yaxes(title_text="mm", row=1, col=1)
         fig.update_yaxes(title_text="mm", row=2, col=1)
@@ -84,8 +91,8 @@ def _hysteresis_sections(result: dict) -> str:
     plain = bw.get("plain", bw["params"])
     plain_ci = bw.get("plain_ci95", bw["ci95"])
     share = (bw.get("prior") or {}).get("prior_share", {})
-    rows = [[n, f"{v:.5g}", f"[{bw['ci95'][n][0]:.4g}, {bw['ci95'][n][1]:.4g}]", f"{plain[n]:.5g}",
-             f"[{plain_ci[n][0]:.4g}, {plain_ci[n][1]:.4g}]", f"{share[n]:.2f}" if n in share else "-"]
+    rows = [[n, number(v), interval(*bw['ci95'][n]), number(plain[n]),
+             interval(*plain_ci[n]), f"{share[n]:.2f}" if n in share else "-"]
             for n, v in bw["params"].items()]
     parts.append("<h2>Bouc-Wen parameters (seed eq. 1-2, SI)</h2>" + _table(
         rows, ["parameter", "rig-ready ([stack])", "95 % interval", "plain least squares", "95 % interval",
@@ -94,7 +101,7 @@ def _hysteresis_sections(result: dict) -> str:
         parts.append(f"<p><b>Prior:</b> {html.escape(bw['prior']['source'])}; {html.escape(bw['prior']['weight'])}.</p>")
     combos = bw.get("combinations") or {}
     if combos:
-        rows = [[n, f"{c['value']:.5g}", f"[{c['ci95'][0]:.4g}, {c['ci95'][1]:.4g}]", f"{100 * c['relative_half_width']:.2f} %"]
+        rows = [[n, number(c['value']), interval(*c['ci95']), f"{100 * c['relative_half_width']:.2f} %"]
                 for n, c in combos.items()]
         parts.append("<h2>What the data determine</h2>" + _table(rows, ["combination", "value", "95 % interval", "+/- relative"]))
     pi = result["prandtl_ishlinskii"]
@@ -121,7 +128,7 @@ def render(result: dict, kind: str, toml: str) -> str:
     if kind == "hysteresis":
         parts.append(_hysteresis_sections(result))
     else:
-        rows = [[n, f"{v:.6g}", f"[{result['ci95'][n][0]:.6g}, {result['ci95'][n][1]:.6g}]"]
+        rows = [[n, number(v), interval(*result['ci95'][n])]
                 for n, v in result["params"].items()]
         parts.append("<h2>Parameters (seed eq. 13-14, closed loop)</h2>" + _table(rows, ["parameter", "value", "95 % interval"]))
     warns = result["fit"].get("warnings") or []

@@ -7,6 +7,8 @@ import html
 
 import plotly.graph_objects as go
 
+from .layout import no_overprint
+
 MEMBER_COLORS = {"stacks": "#1f77b4", "spacer": "#aec7e8", "base_plate": "#ff7f0e", "frame": "#2ca02c",
                  "wide_piston": "#98df8a", "oil_column": "#9467bd", "compensator": "#c5b0d5",
                  "end_cap": "#d62728", "narrow_piston": "#8c564b"}
@@ -38,10 +40,10 @@ def force_path_figure(designs: list[dict]) -> go.Figure:
         share = [next((x["compliance_share"] for x in d["force_path"] if x["member"] == m), 0.0) for d in designs]
         fig.add_trace(go.Bar(y=names, x=share, name=m, orientation="h", marker_color=MEMBER_COLORS[m],
                              hovertemplate=m + ": %{x:.1%} of the compliance<extra></extra>"))
-    fig.update_layout(barmode="stack", height=120 + 40 * len(designs), margin=dict(l=10, r=10, t=30, b=30),
+    fig.update_layout(barmode="stack", height=max(300, 140 + 40 * len(designs)), margin=dict(l=10, r=10, b=30),
                       xaxis=dict(title="share of the force path's compliance (stacks alone = ideal)", tickformat=".0%"),
-                      yaxis=dict(autorange="reversed"), legend=dict(orientation="h"))
-    return fig
+                      yaxis=dict(autorange="reversed"))
+    return no_overprint(fig)
 
 
 def thermal_figure(design: dict) -> go.Figure:

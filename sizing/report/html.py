@@ -5,6 +5,7 @@ from __future__ import annotations
 import html
 from collections import Counter
 
+from ..display import requirement as display_requirement
 from ..engine.comparison import format_metric
 from .text import knife_edge_text
 from .bundle import plotly_tag
@@ -25,6 +26,7 @@ td.parts{text-align:left;min-width:30em}
 .box{border-left:6px solid #d62728;background:#fff4f4;padding:0.6em 1em;margin:1em 0}
 .ok{border-left-color:#2ca02c;background:#f3fbf3}
 .stamp{font-family:monospace;font-size:0.8em;color:#555}
+.words{font-size:0.9em;color:#444}
 ul.ruled details{display:inline;color:#555}ul.ruled summary{display:inline;cursor:pointer;font-size:0.9em}
 """
 
@@ -182,12 +184,17 @@ def _changes(results: dict, limit: int = 60) -> str:
     for ch in changes[:limit]:
         text = ch.get("summary") or ", ".join(f"{k}: {v}" for k, v in ch.items() if k != "id")
         cid = ch.get("id", "")
-        items.append(f"<li><b title='{_e(cid)}'>{_e(names.get(cid, cid))}</b>: {_e(text)}</li>")
+        items.append(f"<li><b title='{_e(cid)}'>{_e(names.get(cid) or ch.get('name') or cid)}</b>: {_e(text)}</li>")
     more = f"<p>... and {len(changes) - limit} more in results.json (\"changes\").</p>" if len(changes) > limit else ""
     cause = (results.get("changes_summary") or {}).get("text")
     lead = f"<div class='box'><b>{_e(cause)}</b></div>" if cause else ""
     return (f"<h2>What changed</h2>{lead}<p>{len(changes)} candidates changed standing against the baseline "
             f"(most important first):</p><ul>{''.join(items)}</ul>{more}")
+
+
+def _requirement_value(requirement: str, value) -> str:
+    """A figure compared with a requirement, in that requirement's unit."""
+    return display_requirement(requirement, value)
 
 
 def _pick_comparison(cands: list[dict]) -> list[dict]:
@@ -229,13 +236,14 @@ def _answer(summary: dict) -> str:
             interval = f" [{lo:.0%}, {hi:.0%}]" if lo is not None else ""
             binding += f"<br>complies in {t['p_compliance']:.0%}{interval} of robust samples"
         binding += _compliance_cell(t)
-        deciding = t.get("deciding_assumed") or []
+        deciding = t.get("deciding_assumed_words") or t.get("deciding_assumed") or []
         rests = (f"{len(t.get('rests_on_assumed') or [])} assumed values; in its binding margin: "
-                 + (_e(", ".join(deciding)) if deciding else "none"))
+                 + (_e("; ".join(deciding)) if deciding else "none"))
         f = t.get("flip")
         flip = _e(f["text"]) if f else "none known"
         rows.append(f"<tr><td class='l'><b>{_e(TECH_LABELS.get(tech, tech))}</b></td><td class='l'>{'feasible' if t.get('feasible') else 'infeasible'}"
-                    f"</td><td class='l' title='{_e(t.get('best'))}'>{_e(t.get('name') or t.get('best'))}<br>{_e(metrics)}</td>"
+                    f"</td><td class='l' title='{_e(t.get('best'))}'><b>{_e(t.get('name') or t.get('best'))}</b>"
+                    f"{_description(t)}<br>{_e(metrics)}</td>"
                     f"<td class='l'>{binding}</td>"
                     f"<td class='l'>{rests}</td><td class='l'>{flip}</td></tr>")
     by_tech = summary.get("ruled_out_by_technology") or {"": summary.get("ruled_out") or {}}
@@ -269,6 +277,11 @@ def _compliance_cell(t: dict) -> str:
     return out
 
 
+def _description(t: dict) -> str:
+    """The best design in words (parts by maker and model, key dimensions)."""
+    return f"<br><span class='words'>{_e(t['description'])}</span>" if t.get("description") else ""
+
+
 def _ruled_out_text(by_tech: dict) -> str:
     """Per technology, how many designs were left out and the three checks
     that left out most; the whole count by check one click away."""
@@ -285,6 +298,10 @@ def _ruled_out_text(by_tech: dict) -> str:
         return ""
     return ("Left out before ranking, by the check each misses most:</p><ul class='ruled'>" + "".join(lines)
             + "</ul><p>")
+
+
+def _count(n: int, noun: str) -> str:
+    return f"{n} {noun}{'' if n == 1 else 's'}"
 
 
 def _names(cands: list[dict], ids: list[str]) -> list[str]:
@@ -325,8 +342,9 @@ def render(results: dict, traces: list[dict]) -> str:
                 "simulated design, and never disagree on a verdict.</p>" if not dis else
                 "<table><tr><th class='l'>design</th><th class='l'>requirement</th><th>static</th><th>simulated</th>"
                 "<th>static margin</th><th>simulated margin</th><th>verdict changes</th></tr>" + "".join(
-                    f"<tr>{design_cell(dict(d, name=short.get(d['id'])))}<td class='l'>{_e(d['requirement'])}</td>"
-                    f"<td>{d['static']:.4g}</td><td>{d['simulated']:.4g}</td><td>{d['static_margin']:+.1%}</td>"
+                    f"<tr>{design_cell(dict(d, name=d.get('name') or short.get(d['id'])))}<td class='l'>{_e(d['requirement'])}</td>"
+                    f"<td>{_e(_requirement_value(d['requirement'], d['static']))}</td>"
+                    f"<td>{_e(_requirement_value(d['requirement'], d['simulated']))}</td><td>{d['static_margin']:+.1%}</td>"
                     f"<td>{d['simulated_margin']:+.1%}</td><td>{'yes' if d['verdict_changes'] else 'no'}</td></tr>"
                     for d in dis[:50]) + "</table>")
     loads = ", ".join(f"{c['load_N']:.0f} N" + (f" ({c['dynamic_pressure_Pa'] / 1e3:g} kPa)" if "dynamic_pressure_Pa" in c else "")
@@ -343,7 +361,7 @@ speed {req['speed_m_s'] * 1e3:g} mm/s (stroke within {req['stroke_time_s']:g} s)
 {req['max_temperature_degC']:g} degC. Load cases: {_e(loads)}. Objectives: minimise {_e(', '.join(results['objectives']))}.
 {counts['combinations']} piezohydraulic combinations ({counts['pruned']} ruled out before sizing,
 {counts['sized']} sized by geometric programs, {counts['simulated']} verified by simulation) and
-{sum(1 for c in dc if 'actuator' in c['components'])} catalog DC actuators;
+{_count(sum(1 for c in dc if 'actuator' in c['components']), 'catalog DC actuator')};
 {_dc_parts_line(counts)}.</p>
 {headline}
 <h2>Verdict per technology</h2><ul>{verdicts}</ul>

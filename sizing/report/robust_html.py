@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import plotly.graph_objects as go
 
+from ..display import interval
+from .layout import no_overprint
 from .page import esc, figure_div, page, table
 
 
@@ -18,11 +20,12 @@ def _front(data: dict) -> go.Figure:
             error_y=dict(type="data", symmetric=False, array=[d["p_ci95"][1] - d["p_compliance"] for d in sel],
                          arrayminus=[d["p_compliance"] - d["p_ci95"][0] for d in sel]),
             marker=dict(symbol=symbol, size=11, color=[d["metrics"].get("cost_usd") for d in sel],
-                        colorscale="Viridis", showscale=front, colorbar=dict(title="cost, USD")),
+                        colorscale="Viridis", showscale=front,
+                        colorbar=dict(title=dict(text="cost, USD", side="right"), x=1.02, xanchor="left")),
             hovertemplate="%{text}<br>mass %{x:.1f} kg<br>P %{y:.3f}<br>cost %{marker.color:.0f} USD<extra></extra>"))
     fig.update_layout(title="Robust front: mass, cost (colour) and probability of compliance (95 % interval)",
                       xaxis_title="mass, kg", yaxis_title="P(compliance)", height=480)
-    return fig
+    return no_overprint(fig, legend="top")     # the colour bar has the right side
 
 
 def _sensitivity(data: dict) -> go.Figure:
@@ -31,15 +34,15 @@ def _sensitivity(data: dict) -> go.Figure:
     fig = go.Figure([go.Bar(name=k, x=[d.get("name", d["id"]) for d in ds], y=[d["sensitivity"].get(k, 0.0) for d in ds])
                      for k in keys])
     fig.update_layout(barmode="group", title="First-order sensitivity of the worst margin (RBD-FAST)",
-                      yaxis_title="S1", height=480, xaxis_tickangle=-30)
-    return fig
+                      yaxis_title="S1", height=480, xaxis_tickangle=-90)   # upright: a slanted first label runs into the y ticks
+    return no_overprint(fig)
 
 
 def render(data: dict) -> str:
     ds = data["designs"]
     rows = [[d["rank"], d.get("name", d["id"]), f"{d['metrics'].get('mass_kg', float('nan')):.1f}",
              f"{d['metrics'].get('cost_usd', float('nan')):.0f}", f"{d['p_compliance']:.3f}",
-             f"[{d['p_ci95'][0]:.3f}, {d['p_ci95'][1]:.3f}]",
+             interval(*d["p_ci95"], lambda p: f"{p:.3f}"),
              ", ".join(f"{k} {d['p_requirement'][k]:.3f}" for k in d["failing_requirements"]) or "none",
              d["driving_tolerance"] or "-", "yes" if d.get("robust_pareto") else ""] for d in ds]
     tol = ", ".join(f"{k} {v:.3g}" for k, v in data["tolerances"].items())

@@ -5,29 +5,28 @@ from __future__ import annotations
 
 import plotly.graph_objects as go
 
+from ..display import requirement
+from .layout import no_overprint
 from .page import esc, figure_div, page, table
+from .words import tech_label, varied_text
 
 
 def _label(g: dict) -> str:
-    return ", ".join(f"{k}={_fmt(k, v)}" for k, v in g["varied"].items())
+    return varied_text(g["varied"])
 
 
 def _fmt(field: str, v: float) -> str:
-    if field in ("stroke",):
-        return f"{v * 1e3:g} mm"
-    if "temperature" in field:
-        return f"{v:g} degC"
-    return f"{v:.4g}"
+    return requirement(field, v)
 
 
 def _counts(data: dict) -> go.Figure:
     grid = data["grid"]
     labels = [_label(g) for g in grid]
     techs = sorted({t for g in grid for t in g["feasible"]})
-    fig = go.Figure([go.Bar(name=t, x=labels, y=[g["feasible"][t] for g in grid]) for t in techs])
+    fig = go.Figure([go.Bar(name=tech_label(t), x=labels, y=[g["feasible"][t] for g in grid]) for t in techs])
     fig.update_layout(barmode="group", title="Feasible designs per technology at each grid point",
-                      yaxis_title="feasible candidates", height=460, xaxis_tickangle=-30)
-    return fig
+                      yaxis_title="feasible candidates", height=460, xaxis_tickangle=-90)
+    return no_overprint(fig)
 
 
 def _fronts(data: dict) -> go.Figure:
@@ -41,7 +40,7 @@ def _fronts(data: dict) -> go.Figure:
                                  hovertemplate="%{text}<br>%{x:.1f} kg, %{y:.0f} USD<extra></extra>"))
     fig.update_layout(title="Pareto front (feasible designs) at each grid point", xaxis_title="mass, kg",
                       yaxis_title="cost, USD", height=480)
-    return fig
+    return no_overprint(fig)
 
 
 def render(data: dict) -> str:
@@ -58,9 +57,9 @@ def render(data: dict) -> str:
     for t, per_field in data["limits"].items():
         for field, lines in per_field.items():
             for line in lines:
-                others = ", ".join(f"{k}={_fmt(k, v)}" for k, v in line["others"].items()) or "-"
+                others = varied_text(line["others"]) or "-"
                 last, bad = line["last_feasible"], line["first_infeasible"]
-                lim_rows.append([t, field, others, "feasible at every point" if line["feasible_everywhere"] else
+                lim_rows.append([tech_label(t), field, others, "feasible at every point" if line["feasible_everywhere"] else
                                  ("never feasible" if last is None else _fmt(field, last)),
                                  "-" if bad is None else _fmt(field, bad)])
     vary = "; ".join(f"{v['field']} over {len(v['values'])} values" for v in data["vary"])
@@ -69,7 +68,7 @@ def render(data: dict) -> str:
 {esc(data['catalog_sha256'])}.</p>
 {figure_div(_counts(data), 0)}
 <h2>Best design per point</h2>
-{table(['point', *(f'feasible {t}' for t in techs), 'best design', 'mass kg', 'cost USD'], rows)}
+{table(['point', *(f'feasible {tech_label(t)}' for t in techs), 'best design', 'mass kg', 'cost USD'], rows)}
 <h2>Where each technology stops being feasible</h2>
 {table(['technology', 'varied field', 'other fields at', 'last feasible value', 'first infeasible value'], lim_rows)}
 <h2>How the front moves</h2>

@@ -1,37 +1,23 @@
 """Plain-text summaries for the terminal."""
 from __future__ import annotations
 
+from ..display import interval, label, number, of_kind, quantity
 from ..io.catalog import Catalog, Entry
 
-_SCALES = {"_m": (1e3, "mm"), "_N": (1.0, "N"), "_Pa": (1e-6, "MPa"), "_Hz": (1.0, "Hz"),
-           "_A": (1.0, "A"), "_s": (1.0, "s"), "_m_s": (1e3, "mm/s"), "_J": (1.0, "J"),
-           "_kg": (1.0, "kg"), "_usd": (1.0, "USD"), "_m3": (1e6, "cm^3"), "_W": (1.0, "W"),
-           "_N_m": (1.0, "N/m"), "_V": (1.0, "V")}
 
 
 def _fmt(key: str, value) -> str:
-    if value is None:
-        return "n/a"
-    if not isinstance(value, (int, float)):
-        return str(value)
-    for suffix in sorted(_SCALES, key=len, reverse=True):
-        if key.endswith(suffix):
-            scale, unit = _SCALES[suffix]
-            return f"{value * scale:.4g} {unit}"
-    return f"{value:.4g}"
+    return quantity(key, value)
 
 
 def _label(key: str) -> str:
-    for suffix in sorted(_SCALES, key=len, reverse=True):
-        if key.endswith(suffix):
-            key = key[: -len(suffix)]
-            break
-    return key.replace("_", " ")
+    return label(key)
 
 
 def evaluation_summary(result: dict) -> str:
     lines = [f"{result['technology']} design: " + ", ".join(
-        f"{k}={v}" for k, v in result["design"].items() if not isinstance(v, dict) and v is not None)]
+        f"{k}={number(v) if isinstance(v, float) else v}" for k, v in result["design"].items()
+        if not isinstance(v, dict) and v is not None)]
     lines.append("static:")
     lines += [f"  {_label(k):<28} {_fmt(k, v)}" for k, v in result["static"].items()]
     if result.get("controller"):
@@ -73,20 +59,38 @@ def catalog_table(catalog: Catalog) -> str:
     return "\n".join([fmt.format(*header)] + [fmt.format(*r) for r in rows])
 
 
+# what the status in brackets after each value means (README, "The catalog")
+STATUS_WORDS = {"datasheet": "read from the vendor document named in source",
+                "seed": "from the seed report ARL-TR-10251",
+                "measured": "fitted to test data (sizing fit)",
+                "sourced": "from the makers' table named in source",
+                "rule": "derived by a stated rule from sourced values",
+                "assumed": "an engineering estimate, its reason given",
+                "default": "not given in the catalog file: the schema's default"}
+
+
 def entry_details(kind: str, entry: Entry) -> str:
+    """Every value of a catalog entry in the unit an engineer reads it, its
+    status in brackets and, at the end, what each status shown means."""
+    from ..io.catalog_diff import quantity_kind
     lines = [f"{entry.id} ({kind}): {entry.name}", f"  manufacturer: {entry.manufacturer}",
              f"  source: {entry.source}", f"  retrieved: {entry.retrieved.isoformat()}"]
+    shown = set()
     for name in entry.quantity_fields():
         value = getattr(entry, name)
         if value is None:
             continue
-        lines.append(f"  {name:<36} {value!r:<14} [{entry.status.get(name, '?')}]")
+        status = entry.status.get(name, "default")
+        shown.add(status.partition(":")[0].strip())
+        text = of_kind(value, quantity_kind(type(entry), name), name) if isinstance(value, (int, float)) else str(value)
+        lines.append(f"  {name:<36} {text:<14} [{status}]")
     for sub in ("bouc_wen", "pid"):
         table = getattr(entry, sub, None)
         if table is not None:
-            lines.append(f"  [{sub}] " + ", ".join(f"{k}={v}" for k, v in table.model_dump().items()))
+            lines.append(f"  [{sub}] " + ", ".join(f"{k} = {number(v)}" for k, v in table.model_dump().items()))
     if entry.notes:
         lines.append(f"  notes: {entry.notes}")
+    lines.append("status: " + "; ".join(f"{s} = {STATUS_WORDS[s]}" for s in STATUS_WORDS if s in shown))
     return "\n".join(lines)
 
 
@@ -103,3 +107,47 @@ def knife_edge_text(comparison: dict) -> str:
             named.add(name)
             parts.append(f"{name}: " + ", ".join(f"{k} {v:+.2%}" for k, v in edges.items()))
     return "knife edges (checks met by less than 1 %): " + "; ".join(parts) if parts else ""
+
+
+# units of the fitted parameters (seed eq. 1-2 and 13-14; docs/formats.md);
+# beta and gamma are in SI (1/m^(n-1)), n is a plain number
+FIT_UNITS = {"d33": "m/V", "alpha": "m/V", "delta": "m/V", "c1": "1/s", "c2": "rad/(s^2 A)",
+             "kp": "A/m", "ki": "A/(m s)", "kd": "A s/m"}
+
+
+def _percent(x) -> str:
+    return "n/a" if x is None else f"{100 * x:.2f} %"
+
+
+def _parameter_rows(params: dict, ci95: dict, plain: dict | None = None) -> list[str]:
+    rows = []
+    for name, value in params.items():
+        lo, hi = ci95.get(name) or (None, None)
+        unit = FIT_UNITS.get(name, "")
+        text = f"  {name:<6} {number(value):>10} {unit:<12} 95 % interval {interval(lo, hi)}"
+        if plain is not None and name in plain:
+            text += f"; plain least squares {number(plain[name])}"
+        rows.append(text.rstrip())
+    return rows
+
+
+def fit_summary(kind: str, result: dict) -> str:
+    """What ``sizing fit`` found, before any warning: the model carried, its
+    held-out NRMSE (share of the measured range) and the parameters with
+    their 95 % intervals."""
+    summary = result["summary"]
+    held = any(s.get("nrmse_holdout") is not None for s in summary.values())
+    which = "held-out" if held else "training"
+    score = ", ".join(f"{m} {_percent(s.get('nrmse_holdout') if held else s.get('nrmse_train'))}"
+                      for m, s in summary.items())
+    if kind != "hysteresis":
+        return "\n".join([f"fit dc-motor: {which} NRMSE {score} of the measured range",
+                          "parameters (seed eq. 13-14, through the closed loop):",
+                          *_parameter_rows(result["params"], result["ci95"])])
+    bw, pi = result["bouc_wen"], result.get("prandtl_ishlinskii") or {}
+    operators = (f"Prandtl-Ishlinskii: {len(pi.get('weights_m_V', []))} play operators, weights in the TOML's "
+                 "[prandtl_ishlinskii]") if pi else ""
+    return "\n".join([f"model carried: {result['model']} ({which} NRMSE, share of the measured range: {score})",
+                      *([operators] if operators else []),
+                      "Bouc-Wen [stack] for a rig.toml, regularised toward the prior (beta, gamma SI; n a number):",
+                      *_parameter_rows(bw["params"], bw["ci95"], bw.get("plain"))])

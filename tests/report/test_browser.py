@@ -242,3 +242,95 @@ def test_every_page_type_draws_without_errors_or_overflow(tmp_path):
             assert _screenshot(dt, session, kind).stat().st_size > 10_000, kind
     finally:
         dt.close()
+
+
+# Every pair of texts a plot draws whose boxes overlap (more than a pixel
+# each way), and the legend or colour bar over any text not its own: what a
+# reader sees as overprinting. Tick labels of one axis count as texts, so
+# rotated labels that collide are found too.
+OVERPRINT_JS = r"""
+(() => {
+  const found = [];
+  const box = e => e.getBoundingClientRect();
+  const hit = (a, b) => Math.min(a.right, b.right) - Math.max(a.left, b.left) > 1 &&
+                        Math.min(a.bottom, b.bottom) - Math.max(a.top, b.top) > 1;
+  document.querySelectorAll('.plotly-graph-div').forEach((div, i) => {
+    const texts = Array.from(div.querySelectorAll('text')).filter(t => t.textContent.trim() && box(t).width > 0
+        && !t.closest('.hoverlayer') && !t.closest('.modebar'));
+    const own = t => t.closest('g.legend') || t.closest('g.colorbar');
+    const free = texts.filter(t => !own(t));
+    for (let a = 0; a < free.length; a++)
+      for (let b = a + 1; b < free.length; b++)
+        if (hit(box(free[a]), box(free[b]))) found.push([i, free[a].textContent, free[b].textContent]);
+    div.querySelectorAll('g.legend rect.bg, g.colorbar, .modebar').forEach(g => {
+      free.forEach(t => { if (hit(box(g), box(t))) found.push([i, g.getAttribute('class'), t.textContent]); });
+    });
+    const legends = Array.from(div.querySelectorAll('g.legend rect.bg')), bars = Array.from(div.querySelectorAll('g.colorbar'));
+    legends.forEach(l => bars.forEach(c => { if (hit(box(l), box(c))) found.push([i, 'legend', 'colour bar']); }));
+  });
+  return found;
+})()
+"""
+
+
+def _shoot_plots(dt, session, name: str) -> list[Path]:
+    """Each plot of the page as a PNG (artefacts for people to look at)."""
+    count = dt.send("Runtime.evaluate", {"expression": "document.querySelectorAll('.plotly-graph-div').length",
+                                         "returnByValue": True}, session=session)["result"]["value"]
+    ARTIFACTS.mkdir(parents=True, exist_ok=True)
+    paths = []
+    for k in range(count):
+        x, y, w, h = dt.send("Runtime.evaluate", {"expression": f"(d => {{d.scrollIntoView(); const r = "
+                             f"d.getBoundingClientRect(); return [r.left + scrollX, r.top + scrollY, r.width, "
+                             f"Math.min(r.height, innerHeight)];}})(document.querySelectorAll('.plotly-graph-div')[{k}])",
+                             "returnByValue": True}, session=session)["result"]["value"]
+        shot = dt.send("Page.captureScreenshot", {"format": "png",
+                                                  "clip": {"x": x, "y": y, "width": w, "height": h, "scale": 1}},
+                       session=session)
+        path = ARTIFACTS / f"{name}-plot{k}.png"
+        path.write_bytes(base64.b64decode(shot["data"]))
+        paths.append(path)
+    return paths
+
+
+@pytest.mark.skipif(CHROMIUM is None, reason="chromium is not installed")
+@pytest.mark.parametrize("width", [1400, 1000])
+def test_no_text_overprints_in_the_report_and_robust_charts(report_file, tmp_path, width):
+    """The report (Pareto front, traces, piezohydraulic against DC, force path)
+    and robust.html (front with its colour bar, sensitivity), drawn in a window
+    of ``width`` px: no two texts overlap, nor the legend and the colour bar."""
+    from ..conftest import FAST_REQUIREMENTS, run_cli
+    req = tmp_path / "req.toml"
+    req.write_text(FAST_REQUIREMENTS.replace("max_stacks = 2", "max_stacks = 12").replace("max_simulated = 2", "max_simulated = 4"))
+    code, _, err = run_cli("robust", req, "--samples", "4", "--designs", "3", "--workers", "0", "--out",
+                           tmp_path / "robust", "--quiet")
+    assert code == 0, err
+    dt = DevTools(tmp_path / "profile")
+    try:
+        for name, page in (("solve", report_file), ("robust", tmp_path / "robust" / "robust.html")):
+            target = dt.send("Target.createTarget", {"url": "about:blank"})["targetId"]
+            session = dt.send("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
+            for domain in ("Page", "Runtime"):
+                dt.send(f"{domain}.enable", session=session)
+            dt.send("Emulation.setDeviceMetricsOverride", {"width": width, "height": 900, "deviceScaleFactor": 1,
+                                                           "mobile": False}, session=session)
+            dt.send("Page.navigate", {"url": page.as_uri()}, session=session)
+            deadline = time.monotonic() + 30
+            while not any(e.get("method") == "Page.loadEventFired" and e.get("sessionId") == session for e in dt.events):
+                dt.events.append(dt._read(deadline))
+            found = None
+            for _ in range(50):           # plotly draws right after load
+                drawn = dt.send("Runtime.evaluate", {"expression": "(d => d.length > 0 && d.every(x => x.querySelector("
+                                "'svg.main-svg')))(Array.from(document.querySelectorAll('.plotly-graph-div')))",
+                                "returnByValue": True}, session=session)["result"]["value"]
+                if drawn:
+                    time.sleep(0.3)
+                    found = dt.send("Runtime.evaluate", {"expression": OVERPRINT_JS, "returnByValue": True},
+                                    session=session)["result"]["value"]
+                    break
+                time.sleep(0.1)
+            shots = _shoot_plots(dt, session, f"{name}-{width}px")
+            assert found == [], (name, width, found[:8])
+            assert shots and all(p.stat().st_size > 2_000 for p in shots)
+    finally:
+        dt.close()

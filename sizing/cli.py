@@ -52,9 +52,22 @@ from typing import List, Optional  # noqa: E402
 
 import typer  # noqa: E402
 
-from . import __version__, api  # noqa: E402
+from . import __version__  # noqa: E402
 from .errors import FitError, InputError, Interrupted, raise_if_interrupted  # noqa: E402
 from .limits import use_limits  # noqa: E402
+
+
+class _DeferredApi:
+    """``sizing.api``, imported when a command first calls it: ``--help``,
+    ``--version`` and a mistyped option answer before numpy, scipy, numba,
+    cvxpy and plotly load (about 1.5 s of imports)."""
+
+    def __getattr__(self, name):
+        from . import api as loaded
+        return getattr(loaded, name)
+
+
+api = _DeferredApi()
 
 app = typer.Typer(help="Size smart-material actuators for glide-body control surfaces, "
                        "fit their models to test data and diagnose the sim-to-real gap.",

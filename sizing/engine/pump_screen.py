@@ -38,6 +38,14 @@ ALUMINIUM_MODULUS = 69e9       # Pa, the body's 6061-T6 (geometry.py's construct
 # convection to a liquid, the low end of Incropera's Table 1.1 range
 # (100-20000 W/(m^2 K))
 PUMP_FILM_COEFFICIENT = 200.0
+# the line from the pump to the cylinder (physics/pump.py, P6): assumed 0.2 m,
+# the pump beside the cylinder in the control-surface bay; its bore keeps the
+# mean oil velocity at the required speed below LINE_VELOCITY (hydraulic
+# pressure-line practice, 2-6 m/s; assumed: 5 m/s), at least LINE_MIN_DIAMETER
+# (a 1/4 in tube's 4 mm bore, assumed)
+LINE_LENGTH = 0.2
+LINE_VELOCITY = 5.0
+LINE_MIN_DIAMETER = 0.004
 DIRECTION_VALVE_MASS = 0.35    # kg, assumed: a pair of solenoid poppets switching the cylinder's sides
 DIRECTION_VALVE_COST = 600.0   # USD, assumed
 RESONANCE_FRACTION = 0.4       # the pumping frequency stays below this x the output's natural frequency
@@ -132,6 +140,7 @@ def rows(req, catalog, gs: list[Group]) -> dict[str, np.ndarray]:
         "square": part(lambda g: g.stack.section == "square"),
         "bulk_modulus": part(lambda g: fluid_props.bulk_modulus_at(g.fluid.bulk_modulus, g.fluid.bulk_modulus_temperature_coefficient, T)),
         "density": part(lambda g: fluid_props.density_at(g.fluid.density, g.fluid.thermal_expansion, T)),
+        "kinematic_viscosity": part(lambda g: fluid_props.kinematic_viscosity(g.fluid.viscosity_40C, g.fluid.viscosity_100C, T)),
         "bias_pressure": part(lambda g: g.accumulator.bias_pressure),
         "f0": part(lambda g: g.seal.friction_per_length), "cp": part(lambda g: g.seal.friction_pressure_coefficient),
     })
@@ -163,12 +172,16 @@ def figures(req, R: dict, loads: list[float]) -> dict[str, np.ndarray]:
     A_c = math.pi * D_c**2 / 4.0
     friction = lambda p: math.pi * D_c * (R["f0"] + R["cp"] * p)        # noqa: E731  (seal at gauge pressure p)
     blocked = A_c * net - friction(R["bias_pressure"] + stall)
+    line = line_of(R, A_c, r.speed)
     speeds = []
     for F in loads:
-        p_load = (F + friction(R["bias_pressure"] + F / A_c)) / A_c
-        avg = pump.cycle_averaged(swept, V_c, R["bulk_modulus"], AIR_FRACTION, wall, A_p, K_path, R["frequency"],
-                                  R["bias_pressure"], p_load, R["cracking_pressure"])
-        speeds.append(avg["flow_m3_s"] / A_c)
+        v = np.zeros_like(A_c)
+        for _ in range(2):                   # the line's viscous drop at the speed it carries
+            p_load = (F + friction(R["bias_pressure"] + F / A_c) + line["line_damping_N_s_m"] * v) / A_c
+            avg = pump.cycle_averaged(swept, V_c, R["bulk_modulus"], AIR_FRACTION, wall, A_p, K_path, R["frequency"],
+                                      R["bias_pressure"], p_load, R["cracking_pressure"])
+            v = avg["flow_m3_s"] / A_c
+        speeds.append(v)
     speeds = np.array(speeds).reshape(len(loads), -1)
     worst = int(np.argmax(loads)) if loads else 0
     mean_speed = speeds[worst] if loads else swept * R["frequency"] / A_c
@@ -180,7 +193,8 @@ def figures(req, R: dict, loads: list[float]) -> dict[str, np.ndarray]:
     p_h = R["bias_pressure"] + max(loads or [0.0]) / A_c
     m_out = surface_mass(req.load) + geometry.narrow_piston_mass(A_c, r.stroke)
     beta_h = pump.effective_bulk_modulus(R["bulk_modulus"], AIR_FRACTION, p_h + pump.P_ATM)
-    f_n = np.sqrt(beta_h * A_c / ((DEAD_LENGTH + r.stroke) * m_out)) / (2 * math.pi)
+    V_h = A_c * (DEAD_LENGTH + r.stroke) + line["line_volume_m3"]
+    f_n = np.sqrt(beta_h * A_c**2 / (V_h * (m_out + line["line_mass_kg"]))) / (2 * math.pi)
     return {
         "pump_area_m2": A_p, "cylinder_diameter_m": D_c, "cylinder_area_m2": A_c, "chamber_volume_m3": V_c,
         "chamber_gap_m": gap, "wall_compliance_1_Pa": wall, "chamber_bulk_modulus_Pa": beta,
@@ -195,10 +209,22 @@ def figures(req, R: dict, loads: list[float]) -> dict[str, np.ndarray]:
         "stack_heat_W": heat, "run_fraction": np.full_like(peak, run),
         "stack_temperature_rise_K": stack_phys.temperature_rise(heat, area, PUMP_FILM_COEFFICIENT),
         "output_natural_frequency_Hz": f_n, "output_mass_kg": m_out,
-        "oil_volume_m3": V_c + A_c * (2.0 * r.stroke + 2.0 * DEAD_LENGTH),
+        "oil_volume_m3": V_c + A_c * (2.0 * r.stroke + 2.0 * DEAD_LENGTH) + line["line_volume_m3"],
+        **line,
         "capacitance_large_F": C_L,
         "valve_peak_drop_Pa": pump.valve_drop(pump.peak_flow(swept, R["frequency"]), R["density"], **valve_of(R)),
     }
+
+
+def line_of(R, cylinder_area, speed) -> dict[str, np.ndarray]:
+    """The line from the pump to the cylinder (P6): its bore by the velocity
+    rule, the mass and damping it reflects on the piston, its oil volume."""
+    d = np.maximum(LINE_MIN_DIAMETER, np.sqrt(4.0 * cylinder_area * speed / (math.pi * LINE_VELOCITY)))
+    mu = R["kinematic_viscosity"] * R["density"]
+    return {"line_length_m": np.full_like(d, LINE_LENGTH), "line_diameter_m": d,
+            "line_mass_kg": pump.reflected_mass(R["density"], LINE_LENGTH, d, cylinder_area),
+            "line_damping_N_s_m": pump.reflected_damping(mu, LINE_LENGTH, d, cylinder_area),
+            "line_volume_m3": pump.line_area(d) * LINE_LENGTH}
 
 
 def _bore(net, g, force):

@@ -188,3 +188,66 @@ def cycle_averaged(swept, chamber_volume, bulk_modulus, air_fraction, wall, pump
 def peak_flow(swept, frequency):
     """Peak of A_p dx_f/dt under a sine drive, pi f A_p x_f, m^3/s."""
     return np.pi * np.asarray(frequency) * np.asarray(swept)
+
+
+# Lines and passages (P6). The oil in a line of length L and bore d moves
+# with the flow; between the pump's oil volume and the cylinder it moves
+# A_c / A_line times as fast as the piston, so the load feels it as a mass
+# rho L A_c^2 / A_line (the line's inertance rho L / A_line times A_c^2),
+# and the laminar (Hagen-Poiseuille) resistance 128 mu L / (pi d^4) as a
+# viscous force A_c^2 R u.
+def line_area(diameter):
+    return np.pi * np.asarray(diameter) ** 2 / 4.0
+
+
+def line_inertance(density, length, diameter):
+    """Fluid inertance rho L / A of a line, Pa s^2 / m^3."""
+    return np.asarray(density) * np.asarray(length) / line_area(diameter)
+
+
+def line_resistance(viscosity, length, diameter):
+    """Laminar (Hagen-Poiseuille) resistance 128 mu L / (pi d^4), Pa s / m^3;
+    ``viscosity`` dynamic, Pa s."""
+    return 128.0 * np.asarray(viscosity) * np.asarray(length) / (np.pi * np.asarray(diameter) ** 4)
+
+
+def reflected_mass(density, length, diameter, cylinder_area):
+    """The line's oil as a mass on the piston, rho L A_c^2 / A_line, kg."""
+    return line_inertance(density, length, diameter) * np.asarray(cylinder_area) ** 2
+
+
+def reflected_damping(viscosity, length, diameter, cylinder_area):
+    """The line's laminar resistance as a viscous coefficient on the piston, A_c^2 R, N s/m."""
+    return line_resistance(viscosity, length, diameter) * np.asarray(cylinder_area) ** 2
+
+
+# Leakage (P7): laminar flow through the concentric annulus of a piston of
+# diameter D with radial clearance c over a land of length L (plane
+# Poiseuille flow, valid for c << D): Q = pi D c^3 dp / (12 mu L).
+def annulus_leakage(diameter, clearance, land_length, viscosity):
+    """Leak conductance of a concentric clearance, m^3 / (s Pa)."""
+    return (np.pi * np.asarray(diameter) * np.asarray(clearance) ** 3
+            / (12.0 * np.asarray(viscosity) * np.asarray(land_length)))
+
+
+# Reed dynamics (P5). A reed moving in oil carries the oil it displaces:
+# potential flow gives a plate of width b moving normal to itself, oil on
+# both sides, an added mass (pi / 4) rho b^2 per unit length (a strip;
+# Lamb, Hydrodynamics, sec. 71; Blevins, Formulas for Natural Frequency and
+# Mode Shape, table 14-2), and a disc of radius a (8 / 3) rho a^3. A
+# cantilever reed's first mode moves this oil with the same modal weight as
+# its own mass (the modal factor of its effective mass, 0.24 for a uniform
+# cantilever). The wetted resonance is sqrt(k / (m + m_a)) / (2 pi).
+def added_mass_strip(density, width, length, modal_factor=1.0):
+    """Added mass of a strip (cantilever reed) of width b and length L in fluid, kg."""
+    return np.asarray(modal_factor) * np.pi / 4.0 * np.asarray(density) * np.asarray(width) ** 2 * np.asarray(length)
+
+
+def added_mass_disc(density, radius, modal_factor=1.0):
+    """Added mass of a disc of radius a moving normal to itself in fluid, (8 / 3) rho a^3, kg."""
+    return np.asarray(modal_factor) * 8.0 / 3.0 * np.asarray(density) * np.asarray(radius) ** 3
+
+
+def wetted_resonance(reed_stiffness, reed_mass, added_mass):
+    """A reed's resonance in the fluid, sqrt(k / (m + m_a)) / (2 pi), Hz."""
+    return valve_resonance(reed_stiffness, np.asarray(reed_mass) + np.asarray(added_mass))

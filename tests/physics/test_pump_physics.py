@@ -155,3 +155,44 @@ def test_bad_pump_parts_exit_2_with_one_line_and_write_nothing(tmp_path, catalog
     req.write_text((STUDIES / "seed-requirements.toml").read_text())
     one_line_exit_2(*run_cli("solve", req, "--catalog", catalog_copy, "--out", out, "--quiet")[::2], *words[:2])
     assert not out.exists()
+
+
+def test_line_inertance_and_reflected_mass_by_hand():
+    # 0.3 m of 5 mm line, rho 850: A = 1.9635e-5 m^2, rho L / A = 1.2987e7 Pa s^2/m^3;
+    # into a 20 mm bore (3.1416e-4 m^2): 1.2987e7 x 9.8696e-8 = 1.2818 kg on the load
+    assert float(pump.line_inertance(850.0, 0.3, 0.005)) == pytest.approx(1.2987e7, rel=1e-3)
+    assert float(pump.reflected_mass(850.0, 0.3, 0.005, math.pi * 0.01**2)) == pytest.approx(1.2818, rel=1e-3)
+    # the low end of the review's range: 0.2 m of 6 mm line into an 18 mm bore, 0.389 kg
+    assert float(pump.reflected_mass(850.0, 0.2, 0.006, math.pi * 0.009**2)) == pytest.approx(0.3894, rel=2e-3)
+    # Hagen-Poiseuille: 128 x 0.0128 x 0.3 / (pi x 0.005^4) = 2.5033e8 Pa s/m^3
+    assert float(pump.line_resistance(0.0128, 0.3, 0.005)) == pytest.approx(2.5033e8, rel=1e-3)
+
+
+def test_annulus_leakage_against_the_exact_concentric_annulus():
+    """pi D c^3 / (12 mu L): 10 mm piston, 5 um clearance, 10 mm land, 0.0128
+    Pa s: 2.5566e-15 m^3/(s Pa); the exact annulus flow (White, Viscous Fluid
+    Flow, eq. 3-49) pi / (8 mu L) [r_o^4 - r_i^4 - (r_o^2 - r_i^2)^2 / ln(r_o / r_i)]
+    agrees for a thin gap."""
+    G = float(pump.annulus_leakage(0.010, 5e-6, 0.010, 0.0128))
+    assert G == pytest.approx(2.5566e-15, rel=1e-3)
+    ri, ro, mu, L = 0.005, 0.005 + 5e-6, 0.0128, 0.010
+    exact = math.pi / (8 * mu * L) * (ro**4 - ri**4 - (ro**2 - ri**2) ** 2 / math.log(ro / ri))
+    assert G == pytest.approx(exact, rel=2e-3)
+    # the cube of the clearance: twice the gap, eight times the leak
+    assert float(pump.annulus_leakage(0.010, 10e-6, 0.010, 0.0128)) == pytest.approx(8 * G)
+
+
+def test_wetted_reed_resonance_against_the_strip_added_mass():
+    """The catalog's 0.15 x 4 x 6 mm steel reed (k 3.1e3 N/m, effective mass
+    6.8e-6 kg, 3.40 kHz in air) in oil (850 kg/m^3): a strip of width 4 mm
+    carries (pi / 4) rho b^2 per metre, 6.409e-5 kg over 6 mm, 1.538e-5 kg
+    with the cantilever's modal factor 0.24; wetted resonance
+    sqrt(3.1e3 / 2.218e-5) / 2 pi = 1882 Hz (the review's 'about 1.9 kHz')."""
+    ma = float(pump.added_mass_strip(850.0, 0.004, 0.006, 0.24))
+    assert ma == pytest.approx(1.538e-5, rel=1e-3)
+    assert float(pump.wetted_resonance(3.1e3, 6.8e-6, ma)) == pytest.approx(1881.6, rel=1e-3)
+    # Lamb's disc: (8 / 3) rho a^3, a 5 mm disc in oil 2.833e-4 kg
+    assert float(pump.added_mass_disc(850.0, 0.005)) == pytest.approx(2.8333e-4, rel=1e-3)
+    # in air (1.2 kg/m^3) the reed keeps its resonance within 0.1 %
+    air = float(pump.wetted_resonance(3.1e3, 6.8e-6, pump.added_mass_strip(1.2, 0.004, 0.006, 0.24)))
+    assert air == pytest.approx(float(pump.valve_resonance(3.1e3, 6.8e-6)), rel=2e-3)

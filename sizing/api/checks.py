@@ -23,7 +23,7 @@ def check_evaluate_steps(design, cat: Catalog, file: str) -> None:
     if isinstance(design, PiezoDesignFile):
         check_steps(piezo_steps(design.rise_time + SETTLE_TIME_S, n_loads(design.load)), file, "rise_time",
                     "simulation steps (rise time x 20 kHz x load cases)")
-    elif design.actuator in cat.dc_actuators:
+    elif getattr(design, "actuator", None) in cat.dc_actuators:
         rate = cat.dc_actuators[design.actuator].pid.rate
         check_steps(dc_steps(design.duration, rate, n_loads(design.load), OUTPUT_RATE_HZ), file, "duration",
                     f"simulation steps (duration x {max(rate, OUTPUT_RATE_HZ):g} Hz x load cases)")

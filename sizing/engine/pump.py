@@ -155,18 +155,24 @@ def _choose(req, R, met, worst, violation, valid) -> list[int]:
 
 def _simulate(req, ref, gs, R, st, chosen, loads, step_factor=1.0) -> list[dict]:
     """Simulate the chosen rows under each load case: a list per case of
-    {output: ndarray (n_chosen,)}. ``ref``: the catalog's reference Bouc-Wen
-    stack, the one the screen's strokes transfer (``pump_screen.rows``), so
-    both models drive the same free stroke."""
+    {output: ndarray (n_chosen,)}."""
     if not chosen:
         return []
-    idx = np.asarray(chosen)
+    model = simulation_model(req, ref, gs, R, st, np.asarray(chosen))
+    return [simulate(model.replace(load_force=F), step_factor) for F in loads]
+
+
+def simulation_model(req, ref, gs, R, st, idx) -> PumpModel:
+    """The cycle-resolved model of the screen's rows ``idx`` (no load force
+    yet). ``ref``: the catalog's reference Bouc-Wen stack, the one the
+    screen's strokes transfer (``pump_screen.rows``), so both models drive
+    the same free stroke."""
     r = req.requirements
     bws = [stack_bouc_wen(gs[R["group"][i]].stack, ref)[0] for i in idx]
     # the kernel runs the Bouc-Wen model and scales its output by the
     # temperature derating, as bouc_wen_stroke does for the screen
     derate = np.array([_derating(gs[R["group"][i]].stack, r.max_temperature) for i in idx])
-    args = dict(
+    return PumpModel(
         k_stacks=st["stack_stiffness_N_m"][idx], d33=np.array([b.d33 for b in bws]),
         alpha=np.array([b.alpha for b in bws]), beta=np.array([b.beta for b in bws]),
         gamma=np.array([b.gamma for b in bws]), delta=np.array([b.delta for b in bws]),
@@ -175,12 +181,12 @@ def _simulate(req, ref, gs, R, st, chosen, loads, step_factor=1.0) -> list[dict]
         chamber_volume=st["chamber_volume_m3"][idx], bulk_modulus=R["bulk_modulus"][idx],
         air_fraction=screen.AIR_FRACTION, wall_compliance=st["wall_compliance_1_Pa"][idx], density=R["density"][idx],
         bias_pressure=R["bias_pressure"][idx], cylinder_area=st["cylinder_area_m2"][idx],
-        dead_length=screen.DEAD_LENGTH, load_mass=st["output_mass_kg"][idx],
+        dead_length=screen.DEAD_LENGTH, load_mass=st["output_mass_kg"][idx], load_force=0.0,
         line_mass=st["line_mass_kg"][idx], line_damping=st["line_damping_N_s_m"][idx],
-        line_volume=st["line_volume_m3"][idx],
+        line_volume=st["line_volume_m3"][idx], reed_mass=R["reed_wetted_mass"][idx],
+        reed_damping_ratio=screen.REED_DAMPING_RATIO,
         friction=R["f0"][idx], friction_pressure=R["cp"][idx], target_stroke=r.stroke,
         t_end=2.0 * r.stroke / r.speed, **{k: R[k][idx] for k in screen.valve_of(R)})
-    return [simulate(PumpModel(load_force=F, **args), step_factor) for F in loads]
 
 
 def _derating(stack, temperature) -> float:

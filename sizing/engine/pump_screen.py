@@ -53,6 +53,9 @@ RESONANCE_FRACTION = 0.4       # the pumping frequency stays below this x the ou
 # pressure: then the chamber returns it within the cycle (the quasi-static
 # model's premise, checked by the simulation)
 VALVE_DROP_FRACTION = 0.2
+# assumed: a reed's damping in oil (viscous and squeeze film against its
+# seat), a fraction of critical; no maker states one for these reeds
+REED_DAMPING_RATIO = 0.15
 BW_CYCLES, BW_POINTS = 4, 200  # Bouc-Wen at the pumping frequency: cycles run, points a cycle
 
 
@@ -105,22 +108,26 @@ def bouc_wen_stroke(stack, reference, voltage: float, frequency: float, temperat
     return float(stack_phys.derated_stroke(x.max() - x.min(), stack.stroke_temperature_coefficient, temperature))
 
 
-def rows(req, catalog, gs: list[Group]) -> dict[str, np.ndarray]:
+def rows(req, catalog, gs: list[Group], frequencies=FREQUENCIES, diameters=PUMP_DIAMETERS, rated=True,
+         voltage=None) -> dict[str, np.ndarray]:
     """The grid of every group as flat arrays (n_rows,), SI, with the index
-    of each row's group in ``group``."""
+    of each row's group in ``group``: at most each valve's rated frequency
+    (``rated``), the stacks at their and the amplifier's voltage unless
+    ``voltage`` is given."""
     T = req.requirements.max_temperature
     ref = reference_bouc_wen(catalog.stacks)
     strokes: dict[tuple, float] = {}
     cols: dict[str, list] = {k: [] for k in ("group", "pump_diameter", "frequency", "stroke")}
+    volts = [voltage or min(g.stack.max_voltage, g.amplifier.max_voltage) for g in gs]
     for i, g in enumerate(gs):
-        V = min(g.stack.max_voltage, g.amplifier.max_voltage)
-        for f in FREQUENCIES:
-            if f > g.valve.max_frequency:
+        V = volts[i]
+        for f in frequencies:
+            if rated and f > g.valve.max_frequency:
                 continue
             key = (g.stack.id, V, f)
             if key not in strokes:
                 strokes[key] = bouc_wen_stroke(g.stack, ref, V, f, T)
-            for d in PUMP_DIAMETERS:
+            for d in diameters:
                 cols["group"].append(i)
                 cols["pump_diameter"].append(d)
                 cols["frequency"].append(f)
@@ -133,7 +140,7 @@ def rows(req, catalog, gs: list[Group]) -> dict[str, np.ndarray]:
 
     R.update({
         "n_stacks": part(lambda g: g.n), "stack_stiffness": part(lambda g: g.stack.stiffness),
-        "voltage": part(lambda g: min(g.stack.max_voltage, g.amplifier.max_voltage)),
+        "voltage": np.asarray(volts, float)[gi],
         "capacitance": part(lambda g: g.stack.capacitance), "loss_factor": part(lambda g: g.stack.loss_factor or stack_phys.DEFAULT_LOSS_FACTOR),
         "stack_mass": part(lambda g: g.stack.mass), "stack_cost": part(lambda g: g.stack.cost_usd),
         "stack_length": part(lambda g: g.stack.length), "stack_diameter": part(lambda g: g.stack.diameter),
@@ -144,8 +151,11 @@ def rows(req, catalog, gs: list[Group]) -> dict[str, np.ndarray]:
         "bias_pressure": part(lambda g: g.accumulator.bias_pressure),
         "f0": part(lambda g: g.seal.friction_per_length), "cp": part(lambda g: g.seal.friction_pressure_coefficient),
     })
-    for name in ("cracking_pressure", "port_area", "reed_stiffness", "max_lift", "discharge_coefficient"):
+    for name in ("cracking_pressure", "port_area", "reed_stiffness", "max_lift", "discharge_coefficient", "reed_mass"):
         R[name] = part(lambda g, name=name: getattr(g.valve, name))
+    R["reed_wetted_mass"] = R["reed_mass"] + np.array(
+        [pump.reed_added_mass(g.valve.reed_shape, fluid_props.density_at(g.fluid.density, g.fluid.thermal_expansion, T),
+                              g.valve.reed_width, g.valve.reed_length, g.valve.modal_factor) for g in gs])[gi]
     return R
 
 
@@ -168,11 +178,13 @@ def figures(req, R: dict, loads: list[float]) -> dict[str, np.ndarray]:
         beta = pump.effective_bulk_modulus(R["bulk_modulus"], AIR_FRACTION, R["bias_pressure"] + pump.P_ATM + stall / 2, wall)
         stall = pump.stall_pressure(swept, pump.chamber_compliance(V_c, beta, A_p, K_path))
     net = stall - 2.0 * R["cracking_pressure"]
-    D_c = _bore(net, R["f0"] + R["cp"] * (R["bias_pressure"] + stall), r.blocked_force * (1.0 + o.design_margin))
+    D_c = R.get("cylinder_diameter")                     # a stated bore (sizing evaluate), else sized
+    if D_c is None:
+        D_c = _bore(net, R["f0"] + R["cp"] * (R["bias_pressure"] + stall), r.blocked_force * (1.0 + o.design_margin))
     A_c = math.pi * D_c**2 / 4.0
     friction = lambda p: math.pi * D_c * (R["f0"] + R["cp"] * p)        # noqa: E731  (seal at gauge pressure p)
     blocked = A_c * net - friction(R["bias_pressure"] + stall)
-    line = line_of(R, A_c, r.speed)
+    line = line_of(R, A_c, r.speed, R.get("line_length", LINE_LENGTH), R.get("line_diameter"))
     speeds = []
     for F in loads:
         v = np.zeros_like(A_c)
@@ -212,19 +224,23 @@ def figures(req, R: dict, loads: list[float]) -> dict[str, np.ndarray]:
         "oil_volume_m3": V_c + A_c * (2.0 * r.stroke + 2.0 * DEAD_LENGTH) + line["line_volume_m3"],
         **line,
         "capacitance_large_F": C_L,
+        "valve_wetted_resonance_Hz": pump.valve_resonance(R["reed_stiffness"], R["reed_wetted_mass"]),
         "valve_peak_drop_Pa": pump.valve_drop(pump.peak_flow(swept, R["frequency"]), R["density"], **valve_of(R)),
     }
 
 
-def line_of(R, cylinder_area, speed) -> dict[str, np.ndarray]:
-    """The line from the pump to the cylinder (P6): its bore by the velocity
-    rule, the mass and damping it reflects on the piston, its oil volume."""
+def line_of(R, cylinder_area, speed, length=LINE_LENGTH, diameter=None) -> dict[str, np.ndarray]:
+    """The line from the pump to the cylinder (P6): its bore (given, or by
+    the velocity rule), the mass and damping it reflects on the piston, its
+    oil volume."""
     d = np.maximum(LINE_MIN_DIAMETER, np.sqrt(4.0 * cylinder_area * speed / (math.pi * LINE_VELOCITY)))
+    d = d if diameter is None else np.full_like(d, diameter)
+    L = np.full_like(d, length)
     mu = R["kinematic_viscosity"] * R["density"]
-    return {"line_length_m": np.full_like(d, LINE_LENGTH), "line_diameter_m": d,
-            "line_mass_kg": pump.reflected_mass(R["density"], LINE_LENGTH, d, cylinder_area),
-            "line_damping_N_s_m": pump.reflected_damping(mu, LINE_LENGTH, d, cylinder_area),
-            "line_volume_m3": pump.line_area(d) * LINE_LENGTH}
+    return {"line_length_m": L, "line_diameter_m": d,
+            "line_mass_kg": pump.reflected_mass(R["density"], L, d, cylinder_area),
+            "line_damping_N_s_m": pump.reflected_damping(mu, L, d, cylinder_area),
+            "line_volume_m3": pump.line_area(d) * L}
 
 
 def _bore(net, g, force):

@@ -251,3 +251,14 @@ def added_mass_disc(density, radius, modal_factor=1.0):
 def wetted_resonance(reed_stiffness, reed_mass, added_mass):
     """A reed's resonance in the fluid, sqrt(k / (m + m_a)) / (2 pi), Hz."""
     return valve_resonance(reed_stiffness, np.asarray(reed_mass) + np.asarray(added_mass))
+
+
+def reed_added_mass(shape, density, width, length, modal_factor):
+    """The added mass of a reed (kg, 0 without its geometry): a cantilever as
+    a strip of its width over its length, a disc of diameter ``width``, each
+    weighted by the mode's ``modal_factor``."""
+    if width is None or (shape == "cantilever" and length is None):
+        return 0.0
+    if shape == "disc":
+        return float(added_mass_disc(density, width / 2.0, modal_factor))
+    return float(added_mass_strip(density, width, length, modal_factor))

@@ -193,3 +193,17 @@ def test_seed_designs_converge_when_the_step_halves(seed_pumps):
     for d, h in zip(out.designs, half.designs):
         for a, b in zip(d.simulation.cases, h.simulation.cases):
             assert abs(a["mean_speed_m_s"] / b["mean_speed_m_s"] - 1) < 0.01, (d.id, d is closest)
+
+
+def test_the_closest_design_block_round_trips_through_evaluate(seed_pumps):
+    """The closest pump's results.json ``design`` block, evaluated on its
+    own (engine/pump_evaluate.py), reproduces its metrics and margins."""
+    from sizing.engine.pump_evaluate import evaluate_pump
+    from sizing.io.design import PumpDesignFile
+    req, (out, candidates) = seed_pumps
+    closest = max(candidates, key=lambda c: min(c["margins"].values()))
+    r = evaluate_pump(PumpDesignFile.model_validate(closest["design"]), load_catalog(), "design.toml")
+    for k, v in closest["metrics"].items():
+        assert r["metrics"][k] == pytest.approx(v, rel=5e-3), k
+    for k, v in closest["margins"].items():
+        assert r["margins"][k] == pytest.approx(v, rel=5e-3, abs=1e-9), k

@@ -77,7 +77,7 @@ class PumpModel(StackParameters):
     pressure; ``wall_compliance``: D / (E t) of the chamber and cylinder, 1/Pa.
     ``reed_mass``: a reed's wetted moving mass (kg, 0: quasi-static reeds),
     ``reed_damping_ratio`` its damping; ``line_mass`` (kg) and
-    ``line_damping`` (N s/m): the line's oil as seen by the load;
+    ``line_damping`` (N s/m): the line's oil as the load feels it;
     ``line_volume`` (m^3) joins the high side; ``piston_leakage`` and
     ``pump_leakage`` (m^3/(s Pa)): the cylinder's piston from the high to the
     low side, the pump piston from the chamber to the low side;

@@ -22,7 +22,8 @@ GEORGIA_TECH = dict(
 
 def test_published_build_converges_when_the_step_halves():
     """Mean speed at the automatic step, half and an eighth of it: within 1 %
-    (the explicit high side of the former model gave 6.00 / 5.00 / 5.45 cm/s)."""
+    (an explicit high side, counting the last cycle whole, gives 6.00 /
+    5.00 / 5.45 cm/s here)."""
     m = PumpModel(**GEORGIA_TECH)
     v = [float(simulate(m, k)["mean_speed_m_s"][0]) for k in (1.0, 0.5, 0.125)]
     assert v[0] > 0.01

@@ -90,11 +90,13 @@ def pump_designs(req, catalog, loads: list[float], progress=None, step_factor: f
         out["no bore gives the blocked force"] = int(no_bore.sum())
     names = list(M)
     rest = np.setdiff1d(np.flatnonzero(valid), chosen)
-    for i in rest:
-        if worst[i] >= 0:
-            out[NOT_SIMULATED] += 1
-        else:
-            out[min(names, key=lambda k: M[k][i] if np.isfinite(M[k][i]) else -np.inf)] += 1
+    out[NOT_SIMULATED] += int((worst[rest] >= 0).sum())
+    missing = rest[worst[rest] < 0]
+    if missing.size:                       # each counted by the check it misses most (the first of equals)
+        G_rest = np.vstack([np.where(np.isfinite(M[k][missing]), M[k][missing], -np.inf) for k in names])
+        out.update(Counter(names[j] for j in np.argmin(G_rest, axis=0)))
+    if not out[NOT_SIMULATED]:
+        del out[NOT_SIMULATED]
     return PumpOutcome(designs, frozen(out), tuple(records), frozen(
         {"combinations": int(len(R["group"])), "groups": len(gs), "simulated": len(chosen),
          "screen_feasible": int((worst >= 0).sum()), "parts_not_rated": ruled,

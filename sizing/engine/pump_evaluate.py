@@ -33,6 +33,41 @@ def pump_requirements(design) -> RequirementsFile:
         "load": design.load.model_dump(exclude_none=True), "duty": {"strokes_per_second": design.strokes_per_second}})
 
 
+def design_from_candidate(req, cand: dict):
+    """The pump design file a results.json pump candidate stands for, judged
+    against ``req``'s stroke, speed, blocked force, duty and load."""
+    from ..io.design import PumpDesignFile
+    r = req.requirements
+    return PumpDesignFile.model_validate({
+        **cand["design"], "stroke": r.stroke, "speed": r.speed, "blocked_force": r.blocked_force,
+        "strokes_per_second": req.duty.strokes_per_second, "load": req.load.model_dump(exclude_none=True)})
+
+
+def verify_samples(design, catalog, groups: list, loads: list[float]) -> list[dict]:
+    """The design's checks on each of ``groups`` (its parts, perturbed per
+    sample by ``sizing robust``), vectorised: per sample its ``margins`` (the
+    speed the simulated one) and ``feasible``."""
+    req = pump_requirements(design)
+    R = screen.rows(req, catalog, groups, (design.pump_frequency,), (design.pump_diameter,), rated=False,
+                    voltage=design.voltage)
+    n = len(groups)
+    R["cylinder_diameter"] = np.full(n, design.cylinder_diameter)
+    if design.bias_pressure is not None:
+        R["bias_pressure"] = np.full(n, design.bias_pressure)
+    st = screen.figures(req, R, loads)
+    st.update(screen.drive(req, groups, R, st))
+    M = screen.margins(req, groups, R, st, loads)
+    model = simulation_model(req, reference_bouc_wen(catalog.stacks), groups, R, st, np.arange(n))
+    if loads:
+        M["speed"] = np.min([simulate(model.replace(load_force=F))["mean_speed_m_s"] for F in loads], axis=0) \
+            / design.speed - 1.0
+    out = []
+    for i in range(n):
+        margins = {k: float(v[i]) for k, v in M.items()}
+        out.append({"margins": margins, "feasible": all(v >= 0 for v in margins.values())})
+    return out
+
+
 def evaluate_pump(design, catalog, file: str) -> dict:
     """Static figures, margins, metrics and simulated load cases of one pump design."""
     kinds = ("stack", "valve", "accumulator", "fluid", "seal", "amplifier")

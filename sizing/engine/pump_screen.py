@@ -124,7 +124,7 @@ def rows(req, catalog, gs: list[Group], frequencies=FREQUENCIES, diameters=PUMP_
         for f in frequencies:
             if rated and f > g.valve.max_frequency:
                 continue
-            key = (g.stack.id, V, f)
+            key = (id(g.stack), V, f)          # a perturbed stack (sizing robust) is its own object
             if key not in strokes:
                 strokes[key] = bouc_wen_stroke(g.stack, ref, V, f, T)
             for d in diameters:

@@ -62,7 +62,7 @@ OUTPUTS = ("stroke_m", "time_to_stroke_s", "mean_speed_m_s", "cycles", "pumped_v
            "quasi_static_bound_J")
 STEPS_PER_CYCLE = 100
 LOAD_STEP = 0.2          # x 1 / omega of the load on the high-side oil
-REED_STEP = 1.0 / 40.0   # x the reed's wetted period
+REED_STEP = 1.0 / 30.0   # x the reed's wetted period
 P_ATM = 101325.0
 POLYTROPIC = 1.4
 ROOT_TOLERANCE = 0.5     # Pa on the outlet's pressure difference

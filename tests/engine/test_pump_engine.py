@@ -207,3 +207,25 @@ def test_the_closest_design_block_round_trips_through_evaluate(seed_pumps):
         assert r["metrics"][k] == pytest.approx(v, rel=5e-3), k
     for k, v in closest["margins"].items():
         assert r["margins"][k] == pytest.approx(v, rel=5e-3, abs=1e-9), k
+
+
+def test_robust_studies_a_pump_design(seed_pumps):
+    """``sizing robust --technology piezo_pump``: the closest pump's parts
+    perturbed by the tolerances (stack stroke and stiffness, bulk modulus,
+    seal friction, air), each sample judged by the screen's checks and the
+    cycle simulation. With every spread 0 the samples are the nominal
+    design: its margins, the amplifier count missed in every sample."""
+    from sizing.studies.executor import Executor
+    from sizing.studies.robust import pick_designs, robust
+    req, (_, candidates) = seed_pumps
+    results = {"candidates": sorted(candidates, key=lambda c: -min(c["margins"].values()))}
+    assert pick_designs(results, 3) == []                     # pumps only when asked for
+    picked = pick_designs(results, 1, "piezo_pump")
+    zero = req.model_copy(update={"tolerances": {"stack.stroke": 0.0, "stack.stiffness": 0.0}})
+    out = robust(zero, load_catalog(), picked, samples=4, seed=1, executor=Executor(0))["designs"][0]
+    assert out["technology"] == "piezo_pump" and out["p_compliance"] == 0.0
+    assert out["failing_requirements"] == ["amplifier_units"]
+    for k, q in out["margin_quantiles"].items():
+        assert q["p50"] == pytest.approx(picked[0]["margins"][k], rel=5e-3, abs=1e-9), k
+    spread = robust(req, load_catalog(), picked, samples=8, seed=1, executor=Executor(0))["designs"][0]
+    assert len(set(round(spread["margin_quantiles"]["blocked_force"][q], 9) for q in ("p05", "p95"))) == 2

@@ -51,10 +51,15 @@ def test_flow_peaks_below_the_valves_wetted_resonance(sweeps):
 
 def test_the_peak_moves_up_with_a_stiffer_valve_and_down_with_a_longer_line(sweeps):
     """Four times the reed stiffness doubles its wetted resonance: the flow
-    peaks at a higher frequency and holds on further; three times the line's
-    length (its oil's reflected mass) brings the peak down."""
+    holds on to higher frequencies (its flow-weighted mean frequency rises;
+    the grid's argmax moves in 50-100 Hz steps); three times the line's
+    length (its oil's reflected mass) brings the peak down (to 100 Hz,
+    with a second hump near 300 Hz, the line's oil ringing on the high side)."""
+    def centre(v):
+        return float(np.sum(np.asarray(FREQUENCIES) * v) / np.sum(v))
+    assert centre(sweeps["stiff valve"]) > 1.1 * centre(sweeps["base"])
     peak = {name: FREQUENCIES[int(np.argmax(v))] for name, v in sweeps.items()}
-    assert peak["stiff valve"] > peak["base"] > peak["long line"], peak
+    assert peak["stiff valve"] >= peak["base"] > peak["long line"], peak
     # above the base's peak the stiffer reeds deliver more (they lag less)
     above = np.asarray(FREQUENCIES) > peak["base"]
     assert sweeps["stiff valve"][above].sum() > 1.2 * sweeps["base"][above].sum()

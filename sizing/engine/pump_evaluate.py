@@ -11,7 +11,8 @@ import numpy as np
 from ..errors import InputError
 from ..io.requirements import RequirementsFile
 from ..physics import pump as pump_phys
-from ..sim.pump import simulate
+from ..limits import check_steps
+from ..sim.pump import simulate, stable_step
 from . import pump_screen as screen
 from .loads import load_cases
 from .piezo import reference_bouc_wen
@@ -102,6 +103,8 @@ def evaluate_pump(design, catalog, file: str) -> dict:
     margins = {k: float(v[0]) for k, v in screen.margins(req, [group], R, st, loads).items()}
     metrics = {k: float(v[0]) for k, v in screen.metrics(req, [group], R, st).items()}
     model = simulation_model(req, reference_bouc_wen(catalog.stacks), [group], R, st, np.array([0]))
+    check_steps(float(model.t_end / stable_step(model.matrix())[0]) * max(len(loads), 1), file, "pump_frequency",
+                "simulation steps (twice the stroke time at the pump's step, x load cases)")
     sims = [simulate(model.replace(load_force=F)) for F in loads]
     simulated = [dict(case, **c) for case, c in zip(cases, _sim_cases(sims, 0, loads, st["speeds"], 0))]
     if simulated:

@@ -84,3 +84,11 @@ def test_evaluate_command_reads_a_pump_design(tmp_path):
     bad.write_text(path.read_text().replace('valve = "reed-steel-6mm"', 'valve = "no-such-valve"'))
     code, _, err = run_cli("evaluate", bad)
     assert code == 2 and "valve" in err and "no-such-valve" in err
+
+
+def test_a_design_too_long_to_simulate_is_refused_before_it_runs():
+    """A 0.01 mm/s requirement over 40 mm at 1 kHz: 8000 s of pumping at
+    10 us a step, 1.6e9 steps, beyond the 1e8 limit (exit 2 naming the field)."""
+    with pytest.raises(InputError, match="simulation steps"):
+        evaluate_pump(PumpDesignFile.model_validate(dict(CLOSEST, pump_frequency=1000.0, speed=1e-5)),
+                      load_catalog(), "design.toml")

@@ -147,6 +147,7 @@ def rows(req, catalog, gs: list[Group], frequencies=FREQUENCIES, diameters=PUMP_
         "square": part(lambda g: g.stack.section == "square"),
         "bulk_modulus": part(lambda g: fluid_props.bulk_modulus_at(g.fluid.bulk_modulus, g.fluid.bulk_modulus_temperature_coefficient, T)),
         "density": part(lambda g: fluid_props.density_at(g.fluid.density, g.fluid.thermal_expansion, T)),
+        "air_dissolution_pressure": part(lambda g: g.fluid.air_dissolution_pressure or math.inf),
         "kinematic_viscosity": part(lambda g: fluid_props.kinematic_viscosity(g.fluid.viscosity_40C, g.fluid.viscosity_100C, T)),
         "bias_pressure": part(lambda g: g.accumulator.bias_pressure),
         "f0": part(lambda g: g.seal.friction_per_length), "cp": part(lambda g: g.seal.friction_pressure_coefficient),
@@ -175,7 +176,8 @@ def figures(req, R: dict, loads: list[float]) -> dict[str, np.ndarray]:
     stall = np.zeros_like(swept)
     for _ in range(3):                       # the chamber's modulus at its mean pressure
         wall = pump.wall_compliance(R["pump_diameter"], geometry.wall_thickness(A_p, R["bias_pressure"] + stall), ALUMINIUM_MODULUS)
-        beta = pump.effective_bulk_modulus(R["bulk_modulus"], AIR_FRACTION, R["bias_pressure"] + pump.P_ATM + stall / 2, wall)
+        beta = pump.effective_bulk_modulus(R["bulk_modulus"], AIR_FRACTION, R["bias_pressure"] + pump.P_ATM + stall / 2, wall,
+                                           dissolution_pressure=R["air_dissolution_pressure"])
         stall = pump.stall_pressure(swept, pump.chamber_compliance(V_c, beta, A_p, K_path))
     net = stall - 2.0 * R["cracking_pressure"]
     D_c = R.get("cylinder_diameter")                     # a stated bore (sizing evaluate), else sized
@@ -191,7 +193,7 @@ def figures(req, R: dict, loads: list[float]) -> dict[str, np.ndarray]:
         for _ in range(2):                   # the line's viscous drop at the speed it carries
             p_load = (F + friction(R["bias_pressure"] + F / A_c) + line["line_damping_N_s_m"] * v) / A_c
             avg = pump.cycle_averaged(swept, V_c, R["bulk_modulus"], AIR_FRACTION, wall, A_p, K_path, R["frequency"],
-                                      R["bias_pressure"], p_load, R["cracking_pressure"])
+                                      R["bias_pressure"], p_load, R["cracking_pressure"], R["air_dissolution_pressure"])
             v = avg["flow_m3_s"] / A_c
         speeds.append(v)
     speeds = np.array(speeds).reshape(len(loads), -1)
@@ -204,7 +206,8 @@ def figures(req, R: dict, loads: list[float]) -> dict[str, np.ndarray]:
     area = stack_phys.side_area(R["stack_length"], R["stack_diameter"], R["square"] > 0)
     p_h = R["bias_pressure"] + max(loads or [0.0]) / A_c
     m_out = surface_mass(req.load) + geometry.narrow_piston_mass(A_c, r.stroke)
-    beta_h = pump.effective_bulk_modulus(R["bulk_modulus"], AIR_FRACTION, p_h + pump.P_ATM)
+    beta_h = pump.effective_bulk_modulus(R["bulk_modulus"], AIR_FRACTION, p_h + pump.P_ATM,
+                                         dissolution_pressure=R["air_dissolution_pressure"])
     V_h = A_c * (DEAD_LENGTH + r.stroke) + line["line_volume_m3"]
     f_n = np.sqrt(beta_h * A_c**2 / (V_h * (m_out + line["line_mass_kg"]))) / (2 * math.pi)
     return {

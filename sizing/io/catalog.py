@@ -115,6 +115,9 @@ class Fluid(Entry):
     viscosity_100C: Qty("kinematic_viscosity", positive=True)
     bulk_modulus: Qty("pressure", positive=True)
     bulk_modulus_temperature_coefficient: Qty("per_kelvin") = 0.0
+    # absolute pressure at which the entrained air has all dissolved (the
+    # piezo pump's eq. P8); None: the free air does not dissolve
+    air_dissolution_pressure: Optional[Qty("pressure", positive=True)] = None
     thermal_expansion: Qty("per_kelvin", positive=True)
     min_temperature: Qty("temperature")
     max_temperature: Qty("temperature")

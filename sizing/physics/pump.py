@@ -43,11 +43,26 @@ P_ATM = 101325.0          # Pa
 BISECTION_STEPS = 40
 
 
-def air_fraction_at(air_fraction, pressure, polytropic=1.4):
-    """Free-air volume fraction at absolute pressure p, from a0 at
-    atmospheric pressure (the air compresses as p V^kappa = const)."""
+def free_air(air_fraction, pressure, dissolution_pressure=np.inf):
+    """Eq. P8, the air the oil holds free at absolute pressure p, as a
+    fraction at atmospheric pressure: a0 up to atmospheric, falling linearly
+    to 0 at ``dissolution_pressure`` where all of it has dissolved, and
+    released again as the pressure falls (the equilibrium air-dissolution
+    model of Simscape's isothermal liquid, MathWorks, "Isothermal Liquid
+    Modeling Options"; inf: no dissolution)."""
     a0 = np.asarray(air_fraction, float)
-    v_air = a0 * (P_ATM / np.maximum(np.asarray(pressure, float), P_ATM * 1e-3)) ** (1.0 / polytropic)
+    p = np.asarray(pressure, float)
+    pd = np.asarray(dissolution_pressure, float)
+    share = np.where(np.isfinite(pd), np.clip((pd - p) / np.where(np.isfinite(pd), pd - P_ATM, 1.0), 0.0, 1.0), 1.0)
+    return a0 * share
+
+
+def air_fraction_at(air_fraction, pressure, polytropic=1.4, dissolution_pressure=np.inf):
+    """Free-air volume fraction at absolute pressure p, from a0 at
+    atmospheric pressure (the free air, eq. P8, compresses as p V^kappa = const)."""
+    a0 = np.asarray(air_fraction, float)
+    v_air = (free_air(a0, pressure, dissolution_pressure)
+             * (P_ATM / np.maximum(np.asarray(pressure, float), P_ATM * 1e-3)) ** (1.0 / polytropic))
     return v_air / (1.0 - a0 + v_air)
 
 
@@ -56,12 +71,21 @@ def wall_compliance(bore, wall_thickness, youngs_modulus):
     return np.asarray(bore) / (np.asarray(youngs_modulus) * np.asarray(wall_thickness))
 
 
-def effective_bulk_modulus(bulk_modulus, air_fraction, pressure, wall=0.0, polytropic=1.4):
+def effective_bulk_modulus(bulk_modulus, air_fraction, pressure, wall=0.0, polytropic=1.4,
+                           dissolution_pressure=np.inf):
     """Eq. P2: oil with entrained air at absolute pressure p (Pa) in a
-    compliant chamber (``wall``: D / (E t), 1/Pa), Pa."""
-    a = air_fraction_at(air_fraction, pressure, polytropic)
-    gas = polytropic * np.maximum(np.asarray(pressure, float), 1e3)
-    return 1.0 / ((1.0 - a) / np.asarray(bulk_modulus) + a / gas + np.asarray(wall))
+    compliant chamber (``wall``: D / (E t), 1/Pa), Pa. With dissolution
+    (P8) the air that goes into solution as the pressure rises is volume
+    lost too: the mixture's compliance -dV / (V dp) adds
+    a0 / (p_d - p_atm) (p_atm / p)^(1 / kappa) below p_d."""
+    a0 = np.asarray(air_fraction, float)
+    p = np.maximum(np.asarray(pressure, float), 1e3)
+    pd = np.asarray(dissolution_pressure, float)
+    r = (P_ATM / p) ** (1.0 / polytropic)
+    v_air = free_air(a0, p, pd) * r
+    dissolving = np.where(np.isfinite(pd) & (p > P_ATM) & (p < pd), a0 / np.where(np.isfinite(pd), pd - P_ATM, 1.0), 0.0)
+    compliance = ((1.0 - a0) / np.asarray(bulk_modulus) + dissolving * r + v_air / (polytropic * p)) / (1.0 - a0 + v_air)
+    return 1.0 / (compliance + np.asarray(wall))
 
 
 def chamber_stiffness(bulk_modulus, pump_area, chamber_volume):
@@ -166,7 +190,7 @@ def apparent_power(capacitance, voltage, frequency):
 
 
 def cycle_averaged(swept, chamber_volume, bulk_modulus, air_fraction, wall, pump_area, stack_stiffness,
-                   frequency, bias_pressure, load_pressure, cracking_pressure):
+                   frequency, bias_pressure, load_pressure, cracking_pressure, dissolution_pressure=np.inf):
     """Eq. P4, vectorised over candidates: the quasi-static model of Sirohi
     and Chopra (2003), who found the viscous losses through the valves and
     tubing negligible beside the chamber's compliance and the load's inertia.
@@ -179,7 +203,8 @@ def cycle_averaged(swept, chamber_volume, bulk_modulus, air_fraction, wall, pump
     Returns {"flow_m3_s", "delivered_m3", "drop_Pa", "compliance_m3_Pa"}.
     """
     dp = np.asarray(load_pressure, float) + 2.0 * np.asarray(cracking_pressure)
-    beta = effective_bulk_modulus(bulk_modulus, air_fraction, np.asarray(bias_pressure) + P_ATM + dp / 2.0, wall)
+    beta = effective_bulk_modulus(bulk_modulus, air_fraction, np.asarray(bias_pressure) + P_ATM + dp / 2.0, wall,
+                                  dissolution_pressure=dissolution_pressure)
     C = chamber_compliance(chamber_volume, beta, pump_area, stack_stiffness)
     V = delivered_volume(swept, C, dp)
     return {"flow_m3_s": V * np.asarray(frequency), "delivered_m3": V, "drop_Pa": dp, "compliance_m3_Pa": C}

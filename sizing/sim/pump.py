@@ -53,7 +53,7 @@ PARAMS = (
     "bias_pressure", "cylinder_area", "dead_length", "load_mass", "load_force", "friction", "friction_pressure",
     "target_stroke", "t_end", "dt",
     "reed_mass", "reed_damping_ratio", "line_mass", "line_damping", "line_volume",
-    "piston_leakage", "pump_leakage", "vapour_pressure",
+    "piston_leakage", "pump_leakage", "vapour_pressure", "air_dissolution_pressure",
 )
 IDX = {name: i for i, name in enumerate(PARAMS)}
 OUTPUTS = ("stroke_m", "time_to_stroke_s", "mean_speed_m_s", "cycles", "pumped_volume_m3", "delivered_volume_m3",
@@ -81,7 +81,8 @@ class PumpModel(StackParameters):
     ``line_volume`` (m^3) joins the high side; ``piston_leakage`` and
     ``pump_leakage`` (m^3/(s Pa)): the cylinder's piston from the high to the
     low side, the pump piston from the chamber to the low side;
-    ``vapour_pressure``: gauge, Pa."""
+    ``vapour_pressure``: gauge, Pa; ``air_dissolution_pressure``: absolute,
+    Pa, where the free air has all dissolved (P8)."""
 
     PARAMS = PARAMS
     stroke_scale: object
@@ -116,15 +117,23 @@ class PumpModel(StackParameters):
     piston_leakage: object = 0.0
     pump_leakage: object = 0.0
     vapour_pressure: object = 3e3 - P_ATM
+    air_dissolution_pressure: object = np.inf    # absolute, Pa: all free air dissolved (P8); inf: none
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _beta(p, bulk, a0, wall):
-    """Eq. P2 at gauge pressure p."""
+def _beta(p, bulk, a0, wall, pd):
+    """Eq. P2 with the air's dissolution (P8) at gauge pressure p."""
     pa = max(p + P_ATM, 1e3)
-    va = a0 * (P_ATM / pa) ** (1.0 / POLYTROPIC)
-    a = va / (1.0 - a0 + va)
-    return 1.0 / ((1.0 - a) / bulk + a / (POLYTROPIC * pa) + wall)
+    r = (P_ATM / pa) ** (1.0 / POLYTROPIC)
+    share = 1.0
+    dissolving = 0.0
+    if pd < 1e300 and pa > P_ATM:
+        share = max((pd - pa) / (pd - P_ATM), 0.0)
+        if pa < pd:
+            dissolving = a0 / (pd - P_ATM)
+    va = a0 * share * r
+    c = ((1.0 - a0) / bulk + dissolving * r + va / (POLYTROPIC * pa)) / (1.0 - a0 + va)
+    return 1.0 / (c + wall)
 
 
 @numba.njit(cache=True, error_model="numpy")
@@ -248,6 +257,7 @@ def _run(P, out):
         S, t_end, dt = row[28], row[29], row[30]
         mv, zv, m_line, c_line, V_line, G, Gp, pvap = (row[31], row[32], row[33], row[34], row[35], row[36],
                                                       row[37], row[38])
+        pdis = row[39]
         m = m0 + m_line
         cv = 2.0 * zv * np.sqrt(kv * mv) if mv > 0.0 else 0.0
         dport = np.sqrt(4.0 * Av / np.pi)
@@ -295,8 +305,8 @@ def _run(P, out):
                 ki = korif * min(np.pi * dport * xi, Av)
             else:                                 # quasi-static reeds: their lift at the step's end
                 ko, ki = -1.0, -1.0
-            C = Vc / _beta(p, bulk, a0, wall) + Ap * Ap / K
-            a = (Ac * (l0 + max(y, 0.0)) + V_line) / _beta(ph, bulk, a0, wall)
+            C = Vc / _beta(p, bulk, a0, wall, pdis) + Ap * Ap / K
+            a = (Ac * (l0 + max(y, 0.0)) + V_line) / _beta(ph, bulk, a0, wall, pdis)
             Ff = perim * (f0 + cp * abs(ph))
             # the load: sliding in the direction it moves (or would move), or stuck
             stuck = u == 0.0 and abs((ph - pb) * Ac - F) <= Ff

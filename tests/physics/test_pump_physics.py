@@ -198,3 +198,28 @@ def test_wetted_reed_resonance_against_the_strip_added_mass():
     # in air (1.2 kg/m^3) the reed keeps its resonance within 0.1 %
     air = float(pump.wetted_resonance(3.1e3, 6.8e-6, pump.added_mass_strip(1.2, 0.004, 0.006, 0.24)))
     assert air == pytest.approx(float(pump.valve_resonance(3.1e3, 6.8e-6)), rel=2e-3)
+
+
+def test_air_dissolution_by_hand_and_against_the_mixture_volume():
+    """P8: 0.5 % free air at atmospheric pressure, all dissolved at 3 MPa
+    (absolute). At 1 MPa gauge 65.50 % of it stays free, compressed to
+    0.18191 of its volume: 5.958e-4 of the mixture; the compliance
+    (0.995 / 1.5e9 + 0.005 / 2.8987e6 x 0.18191 + 5.958e-4 / (1.4 x 1.1013e6))
+    / 0.99560 = 1.3695e-9 1/Pa, beta 7.302e8 Pa; above 3 MPa the oil's own
+    1.5 GPa. Cross-check: -dV / (V dp) of the mixture's volume by finite
+    differences."""
+    p = 1e6 + pump.P_ATM
+    assert float(pump.free_air(0.005, p, 3e6)) == pytest.approx(0.005 * 0.65501, rel=1e-4)
+    beta = float(pump.effective_bulk_modulus(1.5e9, 0.005, p, dissolution_pressure=3e6))
+    assert beta == pytest.approx(7.3017e8, rel=1e-3)
+    assert float(pump.effective_bulk_modulus(1.5e9, 0.005, 4e6, dissolution_pressure=3e6)) == pytest.approx(1.5e9)
+    # below atmospheric pressure nothing more is released than the free air
+    assert float(pump.free_air(0.005, 5e4, 3e6)) == pytest.approx(0.005)
+
+    def volume(q):
+        return (1 - 0.005) * math.exp(-(q - pump.P_ATM) / 1.5e9) + float(pump.free_air(0.005, q, 3e6)) * (pump.P_ATM / q) ** (1 / 1.4)
+    h = 10.0
+    numeric = -(volume(p + h) - volume(p - h)) / (2 * h) / volume(p)
+    assert 1 / beta == pytest.approx(numeric, rel=2e-3)
+    # without dissolution (P2 alone) the chamber is stiffer: the dissolving air adds compliance below 3 MPa
+    assert float(pump.effective_bulk_modulus(1.5e9, 0.005, p)) > beta

@@ -187,7 +187,8 @@ def simulation_model(req, ref, gs, R, st, idx) -> PumpModel:
         dead_length=screen.DEAD_LENGTH, load_mass=st["output_mass_kg"][idx], load_force=0.0,
         line_mass=st["line_mass_kg"][idx], line_damping=st["line_damping_N_s_m"][idx],
         line_volume=st["line_volume_m3"][idx], reed_mass=R["reed_wetted_mass"][idx],
-        reed_damping_ratio=screen.REED_DAMPING_RATIO,
+        reed_damping_ratio=screen.REED_DAMPING_RATIO, seat_width=R["seat_width"][idx],
+        viscosity=R["kinematic_viscosity"][idx] * R["density"][idx],
         friction=R["f0"][idx], friction_pressure=R["cp"][idx], target_stroke=r.stroke,
         t_end=2.0 * r.stroke / r.speed, **{k: R[k][idx] for k in screen.valve_of(R)})
 

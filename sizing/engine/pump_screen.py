@@ -152,7 +152,8 @@ def rows(req, catalog, gs: list[Group], frequencies=FREQUENCIES, diameters=PUMP_
         "bias_pressure": part(lambda g: g.accumulator.bias_pressure),
         "f0": part(lambda g: g.seal.friction_per_length), "cp": part(lambda g: g.seal.friction_pressure_coefficient),
     })
-    for name in ("cracking_pressure", "port_area", "reed_stiffness", "max_lift", "discharge_coefficient", "reed_mass"):
+    for name in ("cracking_pressure", "port_area", "reed_stiffness", "max_lift", "discharge_coefficient", "reed_mass",
+                 "seat_width"):
         R[name] = part(lambda g, name=name: getattr(g.valve, name))
     R["reed_wetted_mass"] = R["reed_mass"] + np.array(
         [pump.reed_added_mass(g.valve.reed_shape, fluid_props.density_at(g.fluid.density, g.fluid.thermal_expansion, T),
@@ -228,7 +229,9 @@ def figures(req, R: dict, loads: list[float]) -> dict[str, np.ndarray]:
         **line,
         "capacitance_large_F": C_L,
         "valve_wetted_resonance_Hz": pump.valve_resonance(R["reed_stiffness"], R["reed_wetted_mass"]),
-        "valve_peak_drop_Pa": pump.valve_drop(pump.peak_flow(swept, R["frequency"]), R["density"], **valve_of(R)),
+        "valve_peak_drop_Pa": pump.valve_drop(pump.peak_flow(swept, R["frequency"]), R["density"], **valve_of(R),
+                                              viscosity=R["kinematic_viscosity"] * R["density"],
+                                              seat_width=R["seat_width"]),
     }
 
 

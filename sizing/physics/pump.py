@@ -122,25 +122,38 @@ def orifice_flow(area, dp, density, discharge_coefficient):
     return np.asarray(discharge_coefficient) * np.asarray(area) * np.sign(dp) * np.sqrt(2.0 * np.abs(dp) / np.asarray(density))
 
 
-def valve_flow(dp, density, cracking_pressure, port_area, reed_stiffness, max_lift, discharge_coefficient):
-    """Forward flow through a reed check valve at dp (Pa), m^3/s; 0 when dp <= p_cr."""
+def valve_flow(dp, density, cracking_pressure, port_area, reed_stiffness, max_lift, discharge_coefficient,
+               viscosity=0.0, seat_width=0.0):
+    """Forward flow through a reed check valve at dp (Pa), m^3/s; 0 when dp <= p_cr.
+    With ``viscosity`` (Pa s) and ``seat_width`` (m), eq. P9: the curtain's
+    laminar resistance 12 mu w / (pi d x^3) (plane Poiseuille flow across
+    the seat's land w in a gap x) in series with the orifice,
+    dp = R Q + Q^2 / (C_d A sqrt(2 / rho))^2."""
     dp = np.maximum(np.asarray(dp, float), 0.0)
-    area = valve_area(dp, cracking_pressure, port_area, reed_stiffness, max_lift)
-    return orifice_flow(area, dp, density, discharge_coefficient)
+    x = valve_lift(dp, cracking_pressure, port_area, reed_stiffness, max_lift)
+    d = np.sqrt(4.0 * np.asarray(port_area) / np.pi)
+    k = np.asarray(discharge_coefficient) * np.minimum(np.pi * d * x, np.asarray(port_area)) * np.sqrt(2.0 / np.asarray(density))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        rl = 12.0 * np.asarray(viscosity) * np.asarray(seat_width) / (np.pi * d * x**3)
+        q = 2.0 * dp / (rl + np.sqrt(rl**2 + 4.0 * dp / k**2))
+    return np.where(x > 0, np.nan_to_num(q), 0.0)
 
 
-def valve_drop(flow, density, cracking_pressure, port_area, reed_stiffness, max_lift, discharge_coefficient):
+def valve_drop(flow, density, cracking_pressure, port_area, reed_stiffness, max_lift, discharge_coefficient,
+               viscosity=0.0, seat_width=0.0):
     """The pressure difference (Pa) at which a reed valve passes ``flow``
     (m^3/s): the inverse of ``valve_flow`` (monotone), by bisection."""
     flow = np.asarray(flow, float)
     lo = np.broadcast_to(np.asarray(cracking_pressure, float), flow.shape).copy()
-    # at full lift over the cracking pressure and the orifice drop of the
-    # full-lift area, the valve passes at least the flow: an upper bound
+    # at full lift over the cracking pressure and the full-lift drops, the
+    # valve passes at least the flow: an upper bound
     d = np.sqrt(4.0 * np.asarray(port_area) / np.pi)
     full = np.minimum(np.pi * d * np.asarray(max_lift), np.asarray(port_area))
-    hi = (lo + np.asarray(reed_stiffness) * np.asarray(max_lift) / np.asarray(port_area)
+    laminar = 12.0 * np.asarray(viscosity) * np.asarray(seat_width) / (np.pi * d * np.asarray(max_lift) ** 3)
+    hi = (lo + np.asarray(reed_stiffness) * np.asarray(max_lift) / np.asarray(port_area) + laminar * flow
           + 0.5 * np.asarray(density) * (flow / (np.asarray(discharge_coefficient) * full)) ** 2)
-    args = (density, cracking_pressure, port_area, reed_stiffness, max_lift, discharge_coefficient)
+    args = (density, cracking_pressure, port_area, reed_stiffness, max_lift, discharge_coefficient, viscosity,
+            seat_width)
     for _ in range(BISECTION_STEPS):
         mid = 0.5 * (lo + hi)
         over = valve_flow(mid, *args) >= flow

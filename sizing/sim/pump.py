@@ -53,7 +53,7 @@ PARAMS = (
     "bias_pressure", "cylinder_area", "dead_length", "load_mass", "load_force", "friction", "friction_pressure",
     "target_stroke", "t_end", "dt",
     "reed_mass", "reed_damping_ratio", "line_mass", "line_damping", "line_volume",
-    "piston_leakage", "pump_leakage", "vapour_pressure", "air_dissolution_pressure",
+    "piston_leakage", "pump_leakage", "vapour_pressure", "air_dissolution_pressure", "viscosity", "seat_width",
 )
 IDX = {name: i for i, name in enumerate(PARAMS)}
 OUTPUTS = ("stroke_m", "time_to_stroke_s", "mean_speed_m_s", "cycles", "pumped_volume_m3", "delivered_volume_m3",
@@ -118,6 +118,8 @@ class PumpModel(StackParameters):
     pump_leakage: object = 0.0
     vapour_pressure: object = 3e3 - P_ATM
     air_dissolution_pressure: object = np.inf    # absolute, Pa: all free air dissolved (P8); inf: none
+    viscosity: object = 0.0      # dynamic, Pa s: the reeds' laminar resistance (P9); 0: orifice only
+    seat_width: object = 0.0     # m, the land the oil crosses under a reed
 
 
 @numba.njit(cache=True, error_model="numpy")
@@ -134,12 +136,6 @@ def _beta(p, bulk, a0, wall, pd):
     va = a0 * share * r
     c = ((1.0 - a0) / bulk + dissolving * r + va / (POLYTROPIC * pa)) / (1.0 - a0 + va)
     return 1.0 / (c + wall)
-
-
-@numba.njit(cache=True, error_model="numpy")
-def _orifice(k, dp):
-    """Flow k sign(dp) sqrt(|dp|) of an open area (k = C_d A sqrt(2 / rho)), m^3/s."""
-    return k * np.sqrt(dp) if dp >= 0.0 else -k * np.sqrt(-dp)
 
 
 @numba.njit(cache=True, error_model="numpy")
@@ -162,34 +158,41 @@ def _reed(x, w, dp, pcr, Av, kv, mv, cv, lift, dt):
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _open(k, dp, V):
-    """Orifice coefficient C_d A sqrt(2 / rho) of a valve at dp: ``k`` when
-    its reed moves by its own dynamics (k >= 0), else the quasi-static reed
-    at dp (V: korif, pcr, Av, kv, lift, dport)."""
-    if k >= 0.0:
-        return k
-    x = _quasi_static_lift(dp, V[1], V[2], V[3], V[4])
-    return V[0] * min(np.pi * V[5] * x, V[2])
+def _valve_q(x, dp, V):
+    """Flow through a reed valve at lift x (x < 0: the quasi-static reed's
+    lift at dp) under dp, either way (P3, P9): its curtain's laminar
+    resistance 12 mu w / (pi d x^3) in series with the orifice of area
+    min(pi d x, A_v), dp = R Q + Q |Q| / k^2 solved for Q.
+    V: korif, pcr, Av, kv, lift, dport, 12 mu w / (pi d)."""
+    if x < 0.0:
+        x = _quasi_static_lift(dp, V[1], V[2], V[3], V[4])
+    if x <= 0.0:
+        return 0.0
+    k = V[0] * min(np.pi * V[5] * x, V[2])
+    rl = V[6] / (x * x * x)
+    a = abs(dp)
+    q = 2.0 * a / (rl + np.sqrt(rl * rl + 4.0 * a / (k * k)))
+    return q if dp >= 0.0 else -q
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _residual(d, alpha, gamma, ko, ki, V, C, p, dVeff, dt, pb, Gp):
+def _residual(d, alpha, gamma, xo, xi, V, C, p, dVeff, dt, pb, Gp):
     """The chamber's volume balance at an outlet pressure difference d, with
     the high side at alpha + gamma Q_out: C (p1 - p) - dV + dt (Q_out - Q_in +
     Q_leak), increasing in d. Returns (residual, p1, Q_out, Q_in)."""
-    qo = _orifice(_open(ko, d, V), d)
+    qo = _valve_q(xo, d, V)
     p1 = d + alpha + gamma * qo
-    qi = _orifice(_open(ki, pb - p1, V), pb - p1)
+    qi = _valve_q(xi, pb - p1, V)
     return C * (p1 - p) - dVeff + dt * (qo - qi + Gp * (p1 - pb)), p1, qo, qi
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _solve_chamber(alpha, gamma, ko, ki, V, C, p, dVeff, dt, pb, Gp):
+def _solve_chamber(alpha, gamma, xo, xi, V, C, p, dVeff, dt, pb, Gp):
     """The root of ``_residual`` in d: bracketed, then Illinois regula falsi.
-    Returns (p1, Q_out, Q_in). ``ko``, ``ki``: the valves' orifice
-    coefficients over the step, or -1 for a quasi-static reed (``_open``)."""
+    Returns (p1, Q_out, Q_in). ``xo``, ``xi``: the reeds' lifts over the
+    step, or -1 for a quasi-static reed (``_valve_q``)."""
     d0 = p + dVeff / C - alpha                   # both valves shut, no leak
-    r0, p1, qo, qi = _residual(d0, alpha, gamma, ko, ki, V, C, p, dVeff, dt, pb, Gp)
+    r0, p1, qo, qi = _residual(d0, alpha, gamma, xo, xi, V, C, p, dVeff, dt, pb, Gp)
     if r0 == 0.0:
         return p1, qo, qi
     step = 1e3 + 1e-3 * abs(d0)
@@ -197,12 +200,12 @@ def _solve_chamber(alpha, gamma, ko, ki, V, C, p, dVeff, dt, pb, Gp):
     for _ in range(200):
         if r0 > 0.0:
             lo = lo - step
-            rlo = _residual(lo, alpha, gamma, ko, ki, V, C, p, dVeff, dt, pb, Gp)[0]
+            rlo = _residual(lo, alpha, gamma, xo, xi, V, C, p, dVeff, dt, pb, Gp)[0]
             if rlo <= 0.0:
                 break
         else:
             hi = hi + step
-            rhi = _residual(hi, alpha, gamma, ko, ki, V, C, p, dVeff, dt, pb, Gp)[0]
+            rhi = _residual(hi, alpha, gamma, xo, xi, V, C, p, dVeff, dt, pb, Gp)[0]
             if rhi >= 0.0:
                 break
         step *= 4.0
@@ -213,7 +216,7 @@ def _solve_chamber(alpha, gamma, ko, ki, V, C, p, dVeff, dt, pb, Gp):
         mid = (lo * rhi - hi * rlo) / (rhi - rlo)
         if not (lo < mid < hi):
             mid = 0.5 * (lo + hi)
-        r = _residual(mid, alpha, gamma, ko, ki, V, C, p, dVeff, dt, pb, Gp)[0]
+        r = _residual(mid, alpha, gamma, xo, xi, V, C, p, dVeff, dt, pb, Gp)[0]
         if r == 0.0:
             lo = hi = mid
             break
@@ -227,7 +230,7 @@ def _solve_chamber(alpha, gamma, ko, ki, V, C, p, dVeff, dt, pb, Gp):
             if side == -1:
                 rhi *= 0.5
             side = -1
-    _, p1, qo, qi = _residual(0.5 * (lo + hi), alpha, gamma, ko, ki, V, C, p, dVeff, dt, pb, Gp)
+    _, p1, qo, qi = _residual(0.5 * (lo + hi), alpha, gamma, xo, xi, V, C, p, dVeff, dt, pb, Gp)
     return p1, qo, qi
 
 
@@ -257,12 +260,12 @@ def _run(P, out):
         S, t_end, dt = row[28], row[29], row[30]
         mv, zv, m_line, c_line, V_line, G, Gp, pvap = (row[31], row[32], row[33], row[34], row[35], row[36],
                                                       row[37], row[38])
-        pdis = row[39]
+        pdis, mu, seat = row[39], row[40], row[41]
         m = m0 + m_line
         cv = 2.0 * zv * np.sqrt(kv * mv) if mv > 0.0 else 0.0
         dport = np.sqrt(4.0 * Av / np.pi)
         korif = cd * np.sqrt(2.0 / rho)
-        Vq = np.array([korif, pcr, Av, kv, lift, dport])
+        Vq = np.array([korif, pcr, Av, kv, lift, dport, 12.0 * mu * seat / (np.pi * dport)])
         perim = 2.0 * np.sqrt(np.pi * Ac)
         n_steps = int(t_end / dt) + 1
         p = pb
@@ -301,10 +304,9 @@ def _run(P, out):
             if mv > 0.0:
                 xo, wo = _reed(xo, wo, p - ph, pcr, Av, kv, mv, cv, lift, dt)
                 xi, wi = _reed(xi, wi, pb - p, pcr, Av, kv, mv, cv, lift, dt)
-                ko = korif * min(np.pi * dport * xo, Av)
-                ki = korif * min(np.pi * dport * xi, Av)
+                so, si = xo, xi
             else:                                 # quasi-static reeds: their lift at the step's end
-                ko, ki = -1.0, -1.0
+                so, si = -1.0, -1.0
             C = Vc / _beta(p, bulk, a0, wall, pdis) + Ap * Ap / K
             a = (Ac * (l0 + max(y, 0.0)) + V_line) / _beta(ph, bulk, a0, wall, pdis)
             Ff = perim * (f0 + cp * abs(ph))
@@ -313,12 +315,15 @@ def _run(P, out):
             s = 1.0 if u > 0.0 else (-1.0 if u < 0.0 else (1.0 if (ph - pb) * Ac - F > 0.0 else -1.0))
             for attempt in range(2):
                 alpha, gamma, e, B = _high_side(a, ph, u, dt, Ac, m, c_line, G, pb, F, Ff, s, stuck)
-                p1, qo, qi = _solve_chamber(alpha, gamma, ko, ki, Vq, C, p, dV - vap, dt, pb, Gp)
+                p1, qo, qi = _solve_chamber(alpha, gamma, so, si, Vq, C, p, dV - vap, dt, pb, Gp)
                 vap1 = 0.0
                 if p1 < pvap:                     # the chamber cavitates: vapour takes the deficit
                     p1 = pvap
-                    qo = _outlet_at(_open(ko, 0.0, Vq), pvap - alpha, gamma)   # shut when quasi-static
-                    qi = _orifice(_open(ki, pb - pvap, Vq), pb - pvap)
+                    # the outlet at the cavitating chamber (shut when quasi-static): its
+                    # orifice's closed form with the high side's rise, then its full law once
+                    q0 = _outlet_at(korif * min(np.pi * dport * max(so, 0.0), Av), pvap - alpha, gamma)
+                    qo = _valve_q(max(so, 0.0), pvap - alpha - gamma * q0, Vq)
+                    qi = _valve_q(si, pb - pvap, Vq)
                     vap1 = C * (pvap - p) - (dV - vap) + dt * (qo - qi + Gp * (pvap - pb))
                 ph1 = alpha + gamma * qo
                 if stuck:

@@ -223,3 +223,18 @@ def test_air_dissolution_by_hand_and_against_the_mixture_volume():
     assert 1 / beta == pytest.approx(numeric, rel=2e-3)
     # without dissolution (P2 alone) the chamber is stiffer: the dissolving air adds compliance below 3 MPa
     assert float(pump.effective_bulk_modulus(1.5e9, 0.005, p)) > beta
+
+
+def test_viscous_loss_across_the_seat_by_hand():
+    """P9: the 3 mm reed at 30 kPa (lift 22.806 um, curtain 2.1497e-7 m^2,
+    orifice coefficient 6.2565e-9) in oil of 0.0128 Pa s over a 0.5 mm land:
+    12 mu w / (pi d x^3) = 6.869e11 Pa s/m^3 in series with the orifice,
+    Q = 4.360e-8 m^3/s (the orifice alone 1.084e-6): at small lifts the
+    laminar gap decides. The drop it takes back is the one given."""
+    args = (850.0, *REED.values(), 0.0128, 0.5e-3)
+    q = float(pump.valve_flow(30e3, *args))
+    assert q == pytest.approx(4.3604e-8, rel=2e-3)
+    # dp = R Q + Q^2 / k^2 by hand: 6.869e11 x 4.3604e-8 + (4.3604e-8 / 6.2565e-9)^2 = 30000 Pa
+    assert 6.869e11 * q + (q / 6.2565e-9) ** 2 == pytest.approx(30e3, rel=3e-3)
+    assert float(pump.valve_drop(q, *args)) == pytest.approx(30e3, rel=1e-6)
+    assert float(pump.valve_flow(30e3, *args[:-2])) == pytest.approx(1.084e-6, rel=5e-3)

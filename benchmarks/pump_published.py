@@ -296,7 +296,7 @@ def diaphragm() -> dict:
                       discharge_coefficient=valve.discharge_coefficient, bias_pressure=0.0, cylinder_area=A_c,
                       dead_length=pump_screen.DEAD_LENGTH, load_mass=narrow_piston_mass(A_c, 0.1), load_force=0.0,
                       target_stroke=0.05, t_end=0.5, reed_mass=valve.reed_mass + added,
-                      reed_damping_ratio=pump_screen.REED_DAMPING_RATIO, viscosity=mu, seat_width=valve.seat_width,
+                      reed_damping_ratio=pump_screen.REED_DAMPING_RATIO, viscosity=mu, seat_width=valve.seat_width, seat_gap=valve.seat_gap,
                       line_mass=float(pump.reflected_mass(rho, pump_screen.LINE_LENGTH, d_line, A_c)),
                       line_damping=float(pump.reflected_damping(mu, pump_screen.LINE_LENGTH, d_line, A_c)),
                       line_volume=float(pump.line_area(d_line)) * pump_screen.LINE_LENGTH)

@@ -37,9 +37,11 @@ SIMULATED = 32                 # up to this many in all
 # band on the simulated designs (tests/engine/test_pump_engine.py; docs/models.md):
 # the averaged model is conservative, for it omits the load and the line's
 # oil ringing on the high-side oil at each valve opening, whose momentum
-# draws oil from the accumulator through both valves (with a light load they
-# agree within 5 %, tests/physics/test_pump_physics.py)
-AGREEMENT_TOLERANCE = (-0.05, 0.50)
+# draws oil from the accumulator through both valves; below it by what leaks
+# back through the seated reeds' gaps, which the averaged model omits too
+# (with a light load and tight reeds they agree within 5 %,
+# tests/physics/test_pump_physics.py)
+AGREEMENT_TOLERANCE = (-0.10, 0.50)
 NOT_SIMULATED = "not simulated: passes the pump screen, dominated by the simulated designs"
 BEST_DEMONSTRATED_POWER_W = 46.0
 BEST_DEMONSTRATED_SOURCE = ("46 W at 1 kHz, 1 kV, 500 psi bias (Kinetic Ceramics / Lynch group, "
@@ -187,7 +189,7 @@ def simulation_model(req, ref, gs, R, st, idx) -> PumpModel:
         dead_length=screen.DEAD_LENGTH, load_mass=st["output_mass_kg"][idx], load_force=0.0,
         line_mass=st["line_mass_kg"][idx], line_damping=st["line_damping_N_s_m"][idx],
         line_volume=st["line_volume_m3"][idx], reed_mass=R["reed_wetted_mass"][idx],
-        reed_damping_ratio=screen.REED_DAMPING_RATIO, seat_width=R["seat_width"][idx],
+        reed_damping_ratio=screen.REED_DAMPING_RATIO, seat_width=R["seat_width"][idx], seat_gap=R["seat_gap"][idx],
         viscosity=R["kinematic_viscosity"][idx] * R["density"][idx],
         friction=R["f0"][idx], friction_pressure=R["cp"][idx], target_stroke=r.stroke,
         t_end=2.0 * r.stroke / r.speed, **{k: R[k][idx] for k in screen.valve_of(R)})

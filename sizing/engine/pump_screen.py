@@ -153,7 +153,7 @@ def rows(req, catalog, gs: list[Group], frequencies=FREQUENCIES, diameters=PUMP_
         "f0": part(lambda g: g.seal.friction_per_length), "cp": part(lambda g: g.seal.friction_pressure_coefficient),
     })
     for name in ("cracking_pressure", "port_area", "reed_stiffness", "max_lift", "discharge_coefficient", "reed_mass",
-                 "seat_width"):
+                 "seat_width", "seat_gap"):
         R[name] = part(lambda g, name=name: getattr(g.valve, name))
     R["reed_wetted_mass"] = R["reed_mass"] + np.array(
         [pump.reed_added_mass(g.valve.reed_shape, fluid_props.density_at(g.fluid.density, g.fluid.thermal_expansion, T),

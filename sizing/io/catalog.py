@@ -312,6 +312,7 @@ class Valve(Entry):
     reed_length: Optional[Qty("length", positive=True)] = None
     modal_factor: Qty("dimensionless", positive=True) = 0.24
     seat_width: Qty("length", nonnegative=True) = 0.0     # the land under the reed (laminar loss, P9)
+    seat_gap: Qty("length", nonnegative=True) = 0.0       # the gap a seated reed leaves (leakage, P7)
     max_frequency: Qty("frequency", positive=True)           # highest pumping frequency it is rated for
     max_temperature: Qty("temperature")
     mass: Qty("mass", positive=True)

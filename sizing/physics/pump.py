@@ -123,14 +123,15 @@ def orifice_flow(area, dp, density, discharge_coefficient):
 
 
 def valve_flow(dp, density, cracking_pressure, port_area, reed_stiffness, max_lift, discharge_coefficient,
-               viscosity=0.0, seat_width=0.0):
+               viscosity=0.0, seat_width=0.0, seat_gap=0.0):
     """Forward flow through a reed check valve at dp (Pa), m^3/s; 0 when dp <= p_cr.
     With ``viscosity`` (Pa s) and ``seat_width`` (m), eq. P9: the curtain's
     laminar resistance 12 mu w / (pi d x^3) (plane Poiseuille flow across
     the seat's land w in a gap x) in series with the orifice,
-    dp = R Q + Q^2 / (C_d A sqrt(2 / rho))^2."""
+    dp = R Q + Q^2 / (C_d A sqrt(2 / rho))^2. ``seat_gap`` (m): the gap a
+    seated reed leaves (P7), so a shut valve leaks through it."""
     dp = np.maximum(np.asarray(dp, float), 0.0)
-    x = valve_lift(dp, cracking_pressure, port_area, reed_stiffness, max_lift)
+    x = np.maximum(valve_lift(dp, cracking_pressure, port_area, reed_stiffness, max_lift), np.asarray(seat_gap))
     d = np.sqrt(4.0 * np.asarray(port_area) / np.pi)
     k = np.asarray(discharge_coefficient) * np.minimum(np.pi * d * x, np.asarray(port_area)) * np.sqrt(2.0 / np.asarray(density))
     with np.errstate(divide="ignore", invalid="ignore"):

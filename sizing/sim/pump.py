@@ -54,6 +54,7 @@ PARAMS = (
     "target_stroke", "t_end", "dt",
     "reed_mass", "reed_damping_ratio", "line_mass", "line_damping", "line_volume",
     "piston_leakage", "pump_leakage", "vapour_pressure", "air_dissolution_pressure", "viscosity", "seat_width",
+    "seat_gap",
 )
 IDX = {name: i for i, name in enumerate(PARAMS)}
 OUTPUTS = ("stroke_m", "time_to_stroke_s", "mean_speed_m_s", "cycles", "pumped_volume_m3", "delivered_volume_m3",
@@ -120,6 +121,7 @@ class PumpModel(StackParameters):
     air_dissolution_pressure: object = np.inf    # absolute, Pa: all free air dissolved (P8); inf: none
     viscosity: object = 0.0      # dynamic, Pa s: the reeds' laminar resistance (P9); 0: orifice only
     seat_width: object = 0.0     # m, the land the oil crosses under a reed
+    seat_gap: object = 0.0       # m, the gap a seated reed leaves (its leak, P7)
 
 
 @numba.njit(cache=True, error_model="numpy")
@@ -162,10 +164,12 @@ def _valve_q(x, dp, V):
     """Flow through a reed valve at lift x (x < 0: the quasi-static reed's
     lift at dp) under dp, either way (P3, P9): its curtain's laminar
     resistance 12 mu w / (pi d x^3) in series with the orifice of area
-    min(pi d x, A_v), dp = R Q + Q |Q| / k^2 solved for Q.
-    V: korif, pcr, Av, kv, lift, dport, 12 mu w / (pi d)."""
+    min(pi d x, A_v), dp = R Q + Q |Q| / k^2 solved for Q. A seated reed
+    leaves its seat's gap (P7). V: korif, pcr, Av, kv, lift, dport,
+    12 mu w / (pi d), seat gap."""
     if x < 0.0:
         x = _quasi_static_lift(dp, V[1], V[2], V[3], V[4])
+    x = max(x, V[7])
     if x <= 0.0:
         return 0.0
     k = V[0] * min(np.pi * V[5] * x, V[2])
@@ -265,7 +269,7 @@ def _run(P, out):
         cv = 2.0 * zv * np.sqrt(kv * mv) if mv > 0.0 else 0.0
         dport = np.sqrt(4.0 * Av / np.pi)
         korif = cd * np.sqrt(2.0 / rho)
-        Vq = np.array([korif, pcr, Av, kv, lift, dport, 12.0 * mu * seat / (np.pi * dport)])
+        Vq = np.array([korif, pcr, Av, kv, lift, dport, 12.0 * mu * seat / (np.pi * dport), row[42]])
         perim = 2.0 * np.sqrt(np.pi * Ac)
         n_steps = int(t_end / dt) + 1
         p = pb

@@ -238,3 +238,14 @@ def test_viscous_loss_across_the_seat_by_hand():
     assert 6.869e11 * q + (q / 6.2565e-9) ** 2 == pytest.approx(30e3, rel=3e-3)
     assert float(pump.valve_drop(q, *args)) == pytest.approx(30e3, rel=1e-6)
     assert float(pump.valve_flow(30e3, *args[:-2])) == pytest.approx(1.084e-6, rel=5e-3)
+
+
+def test_a_seated_reed_leaks_through_its_seat_gap():
+    """P7 through P9's law: the 3 mm reed shut (10 kPa, below its 20 kPa
+    cracking) on a 2 um gap in 0.0128 Pa s oil over a 0.5 mm land:
+    R = 12 x 0.0128 x 5e-4 / (pi x 3.0003e-3 x 8e-18) = 1.0185e15 Pa s/m^3,
+    the orifice of pi d h = 1.8851e-8 m^2 negligible beside it:
+    Q = 1e4 / 1.0185e15 = 9.82e-12 m^3/s; without a gap none."""
+    args = (850.0, *REED.values(), 0.0128, 0.5e-3)
+    assert float(pump.valve_flow(10e3, *args)) == 0.0
+    assert float(pump.valve_flow(10e3, *args, 2e-6)) == pytest.approx(1e4 / 1.0185e15, rel=2e-3)

@@ -6,9 +6,11 @@ and of the piezo pump.
     python benchmarks/solve_benchmark.py [--repeat 3] [--requirements studies/seed-requirements.toml]
 
 The whole seed solve (force path, every structure material and compensator,
-DC from parts, the piezo pump) stays under 15 s warm on this machine; this
-prints the best warm time, the DC part's and the pump's time and the load
-average (the 2 cores are shared), and exits 1 when the warm solve is slower.
+DC from parts, the piezo pump) stays under 15 s warm on this machine, the
+pump's share (screen, cycle-resolved simulation with reed and line
+dynamics, results records) under 3 s; this prints the best warm time, the
+DC part's and the pump's time and the load average (the 2 cores are
+shared), and exits 1 when the warm solve or the pump is slower.
 """
 from __future__ import annotations
 
@@ -29,6 +31,7 @@ from sizing.io.requirements import load_requirements
 from sizing.studies import compliance
 
 LIMIT_S = 15.0
+PUMP_LIMIT_S = 3.0
 ROOT = Path(__file__).resolve().parents[1]
 
 
@@ -65,14 +68,15 @@ def main() -> int:
     print(f"piezohydraulic: combinations {counts['combinations']}, sized {counts['sized']}, "
           f"simulated {counts['simulated']}; candidates {len(out.results['candidates'])}")
     pump = counts.get("piezo_pump", {})
-    print(f"piezo pump alone: warm {min(pump_times[1:]):.2f} s for {pump.get('combinations', 0)} designs screened, "
-          f"{pump.get('simulated', 0)} simulated")
+    pump_warm = min(pump_times[1:])
+    print(f"piezo pump alone: warm {pump_warm:.2f} s (limit {PUMP_LIMIT_S:g} s) for {pump.get('combinations', 0)} "
+          f"designs screened, {pump.get('simulated', 0)} simulated")
     rec = out.results["summary"]["comparison"]["recommended"] or {}
     print(f"probability of compliance (the default solve over --fast): warm best {min(compliance_times[1:]):.2f} s, "
           f"{len(rec.get('examined', []))} designs examined by the policy; solve with it {warm + min(compliance_times[1:]):.2f} s, "
           f"--fast {warm:.2f} s")
     print(f"load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores")
-    return 0 if warm <= LIMIT_S else 1
+    return 0 if warm <= LIMIT_S and pump_warm <= PUMP_LIMIT_S else 1
 
 
 if __name__ == "__main__":

@@ -458,7 +458,7 @@ def robust(requirements: Path = typer.Argument(..., help="requirements.toml (doc
            bouc_wen_fit: Optional[Path] = typer.Option(None, "--bouc-wen-fit", help="Output of sizing fit hysteresis: "
                                                        "its standard errors become tolerances of the stacks' Bouc-Wen parameters."),
            technology: Optional[str] = typer.Option(None, "--technology", help="Study only the best designs of this "
-                                                    "technology: piezohydraulic or dc_motor (default: the best of both)."),
+                                                    "technology: piezohydraulic, dc_motor or piezo_pump (default: the best of the first two)."),
            quiet: bool = typer.Option(False, "--quiet", help="No progress bar and no summary.")):
     """Probability of compliance of the best designs under part tolerances (Monte Carlo, full simulations)."""
     data = _run_study(api.robust, quiet, workers, requirements, out, catalog, samples=samples, seed=seed,

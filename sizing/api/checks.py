@@ -24,7 +24,7 @@ def check_evaluate_steps(design, cat: Catalog, file: str) -> None:
         ramp = design.ramp_time if design.ramp_time is not None else design.rise_time
         check_steps(piezo_steps(ramp + SETTLE_TIME_S, n_loads(design.load)), file, "rise_time",
                     "simulation steps (rise time x 20 kHz x load cases)")
-    elif design.actuator in cat.dc_actuators:
+    elif getattr(design, "actuator", None) in cat.dc_actuators:
         rate, out = cat.dc_actuators[design.actuator].pid.rate, output_rate(design.duration)
         check_steps(dc_steps(design.duration, rate, n_loads(design.load), out), file, "duration",
                     f"simulation steps (duration x {max(rate, out):g} Hz x load cases)")

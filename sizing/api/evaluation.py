@@ -9,7 +9,7 @@ from ..io.design import PiezoDesignFile, load_design
 from .checks import check_evaluate_steps, check_solve_steps
 from .output import Payload
 
-PART_KEYS = ("stack", "fluid", "seal", "amplifier", "actuator", "motor", "screw", "gear", "drive")
+PART_KEYS = ("stack", "fluid", "seal", "amplifier", "actuator", "motor", "screw", "gear", "drive", "valve", "accumulator")
 
 
 @dataclass(frozen=True)
@@ -41,6 +41,8 @@ def evaluate(design_path: str | Path, catalog_dir: str | Path | None = None,
     ``feasible``, ``driver`` and ``judged`` (the solve's metrics and
     static margins of the design, engine/judge.py)."""
     from ..engine.evaluate import evaluate_dc, evaluate_piezo
+    from ..engine.pump_evaluate import evaluate_pump
+    from ..io.design import PumpDesignFile
     from ..io.provenance import assumed_values
 
     design = load_design(design_path)
@@ -51,7 +53,8 @@ def evaluate(design_path: str | Path, catalog_dir: str | Path | None = None,
         from ..io.requirements import load_requirements
         req = load_requirements(requirements)[0]
         check_solve_steps(req, cat, str(requirements))
-    run = evaluate_piezo if isinstance(design, PiezoDesignFile) else evaluate_dc
+    run = (evaluate_pump if isinstance(design, PumpDesignFile)
+           else evaluate_piezo if isinstance(design, PiezoDesignFile) else evaluate_dc)
     figures = run(design, cat, str(design_path))
     parts = {k: v for k, v in figures["design"].items() if k in PART_KEYS}
     figures["assumed"] = assumed_values(cat, parts)     # the catalog values this result rests on that are assumed

@@ -32,15 +32,53 @@ def _best(members):
     return _closest(members), False
 
 
-def _one_miss(members, keys):
-    """The design that misses exactly one check and is best in the first
-    objective (then the next): the fair stand-in when a technology has no
-    feasible design, rather than the design whose smallest miss is smallest."""
-    def misses(c):
-        return sum(1 for v in c["margins"].values() if v is None or not (v >= 0))
-    ones = [c for c in members if c.get("stage") == "simulated" and misses(c) == 1
+# the one check a design can miss and still stand in for its technology:
+# more amplifier units buy it back, so the design with the units it needs
+# (their mass and cost added) is a like-for-like rival; a design that misses
+# a requirement (speed, force, stroke) delivers less and is not
+BOUGHT_CHECKS = ("amplifier_units",)
+
+
+def _misses(c) -> list[str]:
+    return [k for k, v in c["margins"].items() if v is None or not (v >= 0)]
+
+
+def _with_what_it_needs(c, req, catalog, keys) -> dict | None:
+    """A design missing only the amplifier count, with the units it needs:
+    {"units", "allowed", "metrics"} (the added units' mass and cost), or
+    None when its needs cannot be priced."""
+    needed = (c.get("static") or {}).get("amplifier_units_needed")
+    amp = (catalog.amplifiers.get((c.get("components") or {}).get("amplifier")) if catalog is not None else None)
+    if needed is None or amp is None:
+        return None
+    allowed = req.options.max_amplifier_units
+    extra = max(float(needed) - min(float(needed), allowed), 0.0)
+    metrics = dict(c["metrics"])
+    for key, per_unit in (("mass_kg", amp.mass), ("cost_usd", amp.cost_usd)):
+        if metrics.get(key) is not None:
+            metrics[key] = metrics[key] + extra * per_unit
+    return {"units": int(needed), "allowed": int(allowed), "metrics": {k: metrics.get(k) for k in keys}}
+
+
+def _one_miss(members, keys, req=None, catalog=None):
+    """The fair stand-in when a technology has no feasible design: the design
+    that misses only the amplifier count, with the units it needs, best in
+    the objectives (then the next); else the design that misses exactly one
+    check, best in the objectives, marked not comparable (it delivers less
+    than required, so no ratio is drawn from it)."""
+    ones = [c for c in members if c.get("stage") == "simulated" and len(_misses(c)) == 1
             and all(c["metrics"].get(k) is not None for k in keys)]
-    return min(ones, key=lambda c: tuple(c["metrics"][k] for k in keys)) if ones else None
+    bought = []
+    for c in ones:
+        needs = _with_what_it_needs(c, req, catalog, keys) if _misses(c)[0] in BOUGHT_CHECKS and req else None
+        if needs is not None:
+            bought.append((c, needs))
+    if bought:
+        c, needs = min(bought, key=lambda cn: tuple(cn[1]["metrics"][k] for k in keys))
+        return c, needs
+    if ones:
+        return min(ones, key=lambda c: tuple(c["metrics"][k] for k in keys)), None
+    return None, None
 
 
 def technology_comparison(req, candidates: list[dict], catalog=None) -> dict:
@@ -62,10 +100,14 @@ def technology_comparison(req, candidates: list[dict], catalog=None) -> dict:
         out[tech]["deciding_assumed"] = [f"{r['part']}.{r['field']}" for r in rests if r.get("decides")]
         out[tech]["deciding_assumed_words"] = [in_words(catalog, r) for r in rests if r.get("decides")]
         out[tech]["description"] = describe(best, catalog)
-        near = None if ok else _one_miss(members, keys)
+        near, needs = (None, None) if ok else _one_miss(members, keys, req, catalog)
         if near is not None:
-            out[tech]["one_miss"] = {"id": near["id"], "misses": near["driver"],
-                                     "metrics": {k: near["metrics"].get(k) for k in keys}}
+            out[tech]["one_miss"] = {"id": near["id"], "name": near.get("name", near["id"]), "misses": _misses(near)[0],
+                                     "comparable": needs is not None,
+                                     "metrics": needs["metrics"] if needs else {k: near["metrics"].get(k) for k in keys}}
+            if needs is not None:
+                out[tech]["one_miss"]["needs"] = {"amplifier_units": needs["units"], "allowed": needs["allowed"],
+                                                  "metrics_as_sized": {k: near["metrics"].get(k) for k in keys}}
         figures = ", ".join(format_metric(k, best["metrics"].get(k)) for k in keys)
         if ok:
             lines.append(f"{label}: best {best.get('name', best['id'])} ({figures}); binding check {best['driver']} "
@@ -74,9 +116,7 @@ def technology_comparison(req, candidates: list[dict], catalog=None) -> dict:
             lines.append(f"{label}: no feasible design; the closest, {best.get('name', best['id'])} ({figures}), "
                          f"misses {best['driver']} {_miss(m)}")
             if near is not None:
-                lines.append(f"the best {label} design that misses only one check, {near.get('name', near['id'])} "
-                             f"({', '.join(format_metric(k, near['metrics'].get(k)) for k in keys)}), misses "
-                             f"{near['driver']}")
+                lines.append(_one_miss_text(label, out[tech]["one_miss"], keys))
     for tech, label in TECHNOLOGIES:
         if tech in out:
             lines.append(f"{label}: " + _rests_text(out[tech]) + "; " + _flip_text(out[tech]["flip"]))
@@ -107,17 +147,42 @@ def _pump_power_text(entry) -> str:
             f"piezo pump, {best:.3g} W)")
 
 
+def _one_miss_text(label, entry, keys) -> str:
+    figures = ", ".join(format_metric(k, entry["metrics"].get(k)) for k in keys)
+    if entry.get("needs"):
+        n = entry["needs"]
+        return (f"the best {label} design that misses only the amplifier count, {entry['name']}, needs "
+                f"{n['amplifier_units']} amplifier units ({n['allowed']} allowed): {figures} with them")
+    return (f"the best {label} design that misses only one check, {entry['name']} ({figures}), misses "
+            f"{entry['misses']}: it delivers less than required, so it is not compared")
+
+
+def _rival(t):
+    """What a technology is compared by: its best feasible design, or its
+    one-miss design with what it needs; None when neither exists."""
+    if t["feasible"]:
+        return t
+    near = t.get("one_miss")
+    return near if near and near.get("comparable") else None
+
+
 def _ratio_line(a, b, keys, label) -> str:
-    """``label`` best over the DC best in every objective."""
-    ma, mb = (t.get("one_miss", t)["metrics"] for t in (a, b))   # an infeasible side: its one-miss design
+    """``label`` best over the DC best in every objective (like with like:
+    an infeasible side only through its one-miss design with what it needs)."""
+    sides = [(name, t, _rival(t)) for name, t in ((label, a), ("DC motor", b))]
+    missing = [name for name, _, r in sides if r is None]
+    if missing:
+        return f"{' and '.join(missing)}: no design to compare like with like (none meets every check but the amplifier count)"
+    ma, mb = (r["metrics"] for _, _, r in sides)
     ratios = []
     for k in keys:
         x, y = ma.get(k), mb.get(k)
         if x and y and math.isfinite(x) and math.isfinite(y) and y > 0:
             ratios.append(f"{k.split('_')[0]} x{x / y:.3g}")
-    sides = [f"{name} " + ("best" if t["feasible"] else "one-miss design" if "one_miss" in t else "closest design")
-             for name, t in ((label, a), ("DC motor", b))]
-    return " / ".join(sides) + ": " + (", ".join(ratios) or "not comparable")
+    names = [f"{name} " + ("best" if t["feasible"] else
+                           f"{r['name']} with {r['needs']['amplifier_units']} amplifier units")
+             for name, t, r in sides]
+    return " / ".join(names) + ": " + (", ".join(ratios) or "not comparable")
 
 
 def recommendation_sentence(out: dict, keys: list[str], pick: dict | None = None, clause: str = "") -> str:
@@ -145,11 +210,14 @@ def _recommendation(out: dict, keys: list[str], pick: tuple | None = None, claus
     for other, entry in out.items():
         if other == tech:
             continue
-        rival = entry if entry["feasible"] else entry.get("one_miss")
+        rival = _rival(entry)
         if rival and rival["metrics"].get(key) and best["metrics"].get(key):
             ratio = rival["metrics"][key] / best["metrics"][key]
-            text += (f", {ratio:.3g} x lighter than the best {LABELS.get(other, other)} design" if key == "mass_kg"
-                     else f", {ratio:.3g} x better in {key.split('_')[0]} than the best {LABELS.get(other, other)} design")
+            what = (f"the best {LABELS.get(other, other)} design" if entry["feasible"] else
+                    f"the {LABELS.get(other, other)} design {rival['name']} with the "
+                    f"{rival['needs']['amplifier_units']} amplifier units it needs")
+            text += (f", {ratio:.3g} x lighter than {what}" if key == "mass_kg"
+                     else f", {ratio:.3g} x better in {key.split('_')[0]} than {what}")
     deciding = best.get("deciding_assumed_words") or best.get("deciding_assumed") or []
     if deciding:
         text += f"; its binding check rests on {assumed_clause(deciding)}"

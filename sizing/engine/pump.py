@@ -35,10 +35,13 @@ MIN_CLOSEST_SIMULATED = 8      # and at least this many of the closest of those 
 SIMULATED = 32                 # up to this many in all
 # the simulated mean speed over the cycle-averaged one, less 1, lies in this
 # band on the simulated designs (tests/engine/test_pump_engine.py; docs/models.md):
-# the averaged model is conservative, for it omits the load ringing on the
-# high-side oil at each valve opening (with a light load they agree within
-# 5 %, tests/physics/test_pump_physics.py)
-AGREEMENT_TOLERANCE = (-0.05, 0.35)
+# the averaged model is conservative, for it omits the load and the line's
+# oil ringing on the high-side oil at each valve opening, whose momentum
+# draws oil from the accumulator through both valves; below it by what leaks
+# back through the seated reeds' gaps, which the averaged model omits too
+# (with a light load and tight reeds they agree within 5 %,
+# tests/physics/test_pump_physics.py)
+AGREEMENT_TOLERANCE = (-0.10, 0.50)
 NOT_SIMULATED = "not simulated: passes the pump screen, dominated by the simulated designs"
 BEST_DEMONSTRATED_POWER_W = 46.0
 BEST_DEMONSTRATED_SOURCE = ("46 W at 1 kHz, 1 kV, 500 psi bias (Kinetic Ceramics / Lynch group, "
@@ -50,10 +53,11 @@ def _progress(callback, stage, done, total):
         callback(stage, done, total)
 
 
-def pump_designs(req, catalog, loads: list[float], progress=None) -> PumpOutcome:
+def pump_designs(req, catalog, loads: list[float], progress=None, step_factor: float = 1.0) -> PumpOutcome:
     """Screen and simulate the pump designs: those simulated as records, the
     other rows counted by reason, the bodies outside the envelope as
-    one-line records."""
+    one-line records. ``step_factor`` scales the simulation's step (a
+    convergence check halves it)."""
     if not (catalog.valves and catalog.accumulators and catalog.stacks):
         return _nothing({})
     gs, ruled = screen.groups(req, catalog)
@@ -77,7 +81,7 @@ def pump_designs(req, catalog, loads: list[float], progress=None) -> PumpOutcome
     inside = valid & (M["valve_flow"] >= 0) & (M["output_resonance"] >= 0)
     chosen = _choose(req, R, met, worst, violation, inside)
     _progress(progress, "simulating pumps", 0, len(chosen))
-    sims = _simulate(req, gs, R, st, chosen, loads)
+    sims = _simulate(req, reference_bouc_wen(catalog.stacks), gs, R, st, chosen, loads, step_factor)
     _progress(progress, "simulating pumps", len(chosen), len(chosen))
     screened = _Screen(gs, R, st, M, met)
     designs = tuple(_design(req, screened, i, _sim_cases(sims, k, loads, st["speeds"], i))
@@ -88,11 +92,13 @@ def pump_designs(req, catalog, loads: list[float], progress=None) -> PumpOutcome
         out["no bore gives the blocked force"] = int(no_bore.sum())
     names = list(M)
     rest = np.setdiff1d(np.flatnonzero(valid), chosen)
-    for i in rest:
-        if worst[i] >= 0:
-            out[NOT_SIMULATED] += 1
-        else:
-            out[min(names, key=lambda k: M[k][i] if np.isfinite(M[k][i]) else -np.inf)] += 1
+    out[NOT_SIMULATED] += int((worst[rest] >= 0).sum())
+    missing = rest[worst[rest] < 0]
+    if missing.size:                       # each counted by the check it misses most (the first of equals)
+        G_rest = np.vstack([np.where(np.isfinite(M[k][missing]), M[k][missing], -np.inf) for k in names])
+        out.update(Counter(names[j] for j in np.argmin(G_rest, axis=0)))
+    if not out[NOT_SIMULATED]:
+        del out[NOT_SIMULATED]
     return PumpOutcome(designs, frozen(out), tuple(records), frozen(
         {"combinations": int(len(R["group"])), "groups": len(gs), "simulated": len(chosen),
          "screen_feasible": int((worst >= 0).sum()), "parts_not_rated": ruled,
@@ -151,31 +157,42 @@ def _choose(req, R, met, worst, violation, valid) -> list[int]:
     return chosen
 
 
-def _simulate(req, gs, R, st, chosen, loads) -> list[dict]:
+def _simulate(req, ref, gs, R, st, chosen, loads, step_factor=1.0) -> list[dict]:
     """Simulate the chosen rows under each load case: a list per case of
     {output: ndarray (n_chosen,)}."""
     if not chosen:
         return []
-    idx = np.asarray(chosen)
+    model = simulation_model(req, ref, gs, R, st, np.asarray(chosen))
+    return [simulate(model.replace(load_force=F), step_factor) for F in loads]
+
+
+def simulation_model(req, ref, gs, R, st, idx) -> PumpModel:
+    """The cycle-resolved model of the screen's rows ``idx`` (no load force
+    yet). ``ref``: the catalog's reference Bouc-Wen stack, the one the
+    screen's strokes transfer (``pump_screen.rows``), so both models drive
+    the same free stroke."""
     r = req.requirements
-    ref = reference_bouc_wen({g.stack.id: g.stack for g in gs})
     bws = [stack_bouc_wen(gs[R["group"][i]].stack, ref)[0] for i in idx]
     # the kernel runs the Bouc-Wen model and scales its output by the
     # temperature derating, as bouc_wen_stroke does for the screen
     derate = np.array([_derating(gs[R["group"][i]].stack, r.max_temperature) for i in idx])
-    args = dict(
+    return PumpModel(
         k_stacks=st["stack_stiffness_N_m"][idx], d33=np.array([b.d33 for b in bws]),
         alpha=np.array([b.alpha for b in bws]), beta=np.array([b.beta for b in bws]),
         gamma=np.array([b.gamma for b in bws]), delta=np.array([b.delta for b in bws]),
         n_bw=np.array([b.n for b in bws]), stroke_scale=derate,
         voltage=R["voltage"][idx], frequency=R["frequency"][idx], pump_area=st["pump_area_m2"][idx],
         chamber_volume=st["chamber_volume_m3"][idx], bulk_modulus=R["bulk_modulus"][idx],
-        air_fraction=screen.AIR_FRACTION, wall_compliance=st["wall_compliance_1_Pa"][idx], density=R["density"][idx],
+        air_fraction=screen.AIR_FRACTION, air_dissolution_pressure=R["air_dissolution_pressure"][idx],
+        wall_compliance=st["wall_compliance_1_Pa"][idx], density=R["density"][idx],
         bias_pressure=R["bias_pressure"][idx], cylinder_area=st["cylinder_area_m2"][idx],
-        dead_length=screen.DEAD_LENGTH, load_mass=st["output_mass_kg"][idx],
+        dead_length=screen.DEAD_LENGTH, load_mass=st["output_mass_kg"][idx], load_force=0.0,
+        line_mass=st["line_mass_kg"][idx], line_damping=st["line_damping_N_s_m"][idx],
+        line_volume=st["line_volume_m3"][idx], reed_mass=R["reed_wetted_mass"][idx],
+        reed_damping_ratio=screen.REED_DAMPING_RATIO, seat_width=R["seat_width"][idx], seat_gap=R["seat_gap"][idx],
+        viscosity=R["kinematic_viscosity"][idx] * R["density"][idx],
         friction=R["f0"][idx], friction_pressure=R["cp"][idx], target_stroke=r.stroke,
         t_end=2.0 * r.stroke / r.speed, **{k: R[k][idx] for k in screen.valve_of(R)})
-    return [simulate(PumpModel(load_force=F, **args)) for F in loads]
 
 
 def _derating(stack, temperature) -> float:
@@ -194,6 +211,9 @@ def _sim_cases(sims, k, loads, static_speeds, i) -> list[dict]:
                       "peak_chamber_pressure_Pa": float(s["peak_chamber_pressure_Pa"][k]),
                       "peak_cylinder_pressure_Pa": float(s["peak_cylinder_pressure_Pa"][k]),
                       "reached": bool(s["reached"][k] > 0), "overshoot": 0.0,
+                      "backflow_volume_m3": float(s["backflow_volume_m3"][k]),
+                      "stack_work_J": float(s["stack_work_J"][k]), "output_work_J": float(s["output_work_J"][k]),
+                      "quasi_static_bound_J": float(s["quasi_static_bound_J"][k]),
                       "cycle_averaged_speed_m_s": float(static_speeds[j][i]),
                       "agreement": v / float(static_speeds[j][i]) - 1.0 if static_speeds[j][i] > 0 else None})
     return cases

@@ -38,6 +38,14 @@ ALUMINIUM_MODULUS = 69e9       # Pa, the body's 6061-T6 (geometry.py's construct
 # convection to a liquid, the low end of Incropera's Table 1.1 range
 # (100-20000 W/(m^2 K))
 PUMP_FILM_COEFFICIENT = 200.0
+# the line from the pump to the cylinder (physics/pump.py, P6): assumed 0.2 m,
+# the pump beside the cylinder in the control-surface bay; its bore keeps the
+# mean oil velocity at the required speed below LINE_VELOCITY (hydraulic
+# pressure-line practice, 2-6 m/s; assumed: 5 m/s), at least LINE_MIN_DIAMETER
+# (a 1/4 in tube's 4 mm bore, assumed)
+LINE_LENGTH = 0.2
+LINE_VELOCITY = 5.0
+LINE_MIN_DIAMETER = 0.004
 DIRECTION_VALVE_MASS = 0.35    # kg, assumed: a pair of solenoid poppets switching the cylinder's sides
 DIRECTION_VALVE_COST = 600.0   # USD, assumed
 RESONANCE_FRACTION = 0.4       # the pumping frequency stays below this x the output's natural frequency
@@ -45,6 +53,9 @@ RESONANCE_FRACTION = 0.4       # the pumping frequency stays below this x the ou
 # pressure: then the chamber returns it within the cycle (the quasi-static
 # model's premise, checked by the simulation)
 VALVE_DROP_FRACTION = 0.2
+# assumed: a reed's damping in oil (viscous and squeeze film against its
+# seat), a fraction of critical; no maker states one for these reeds
+REED_DAMPING_RATIO = 0.15
 BW_CYCLES, BW_POINTS = 4, 200  # Bouc-Wen at the pumping frequency: cycles run, points a cycle
 
 
@@ -97,22 +108,26 @@ def bouc_wen_stroke(stack, reference, voltage: float, frequency: float, temperat
     return float(stack_phys.derated_stroke(x.max() - x.min(), stack.stroke_temperature_coefficient, temperature))
 
 
-def rows(req, catalog, gs: list[Group]) -> dict[str, np.ndarray]:
+def rows(req, catalog, gs: list[Group], frequencies=FREQUENCIES, diameters=PUMP_DIAMETERS, rated=True,
+         voltage=None) -> dict[str, np.ndarray]:
     """The grid of every group as flat arrays (n_rows,), SI, with the index
-    of each row's group in ``group``."""
+    of each row's group in ``group``: at most each valve's rated frequency
+    (``rated``), the stacks at their and the amplifier's voltage unless
+    ``voltage`` is given."""
     T = req.requirements.max_temperature
     ref = reference_bouc_wen(catalog.stacks)
     strokes: dict[tuple, float] = {}
     cols: dict[str, list] = {k: [] for k in ("group", "pump_diameter", "frequency", "stroke")}
+    volts = [voltage or min(g.stack.max_voltage, g.amplifier.max_voltage) for g in gs]
     for i, g in enumerate(gs):
-        V = min(g.stack.max_voltage, g.amplifier.max_voltage)
-        for f in FREQUENCIES:
-            if f > g.valve.max_frequency:
+        V = volts[i]
+        for f in frequencies:
+            if rated and f > g.valve.max_frequency:
                 continue
-            key = (g.stack.id, V, f)
+            key = (id(g.stack), V, f)          # a perturbed stack (sizing robust) is its own object
             if key not in strokes:
                 strokes[key] = bouc_wen_stroke(g.stack, ref, V, f, T)
-            for d in PUMP_DIAMETERS:
+            for d in diameters:
                 cols["group"].append(i)
                 cols["pump_diameter"].append(d)
                 cols["frequency"].append(f)
@@ -125,18 +140,24 @@ def rows(req, catalog, gs: list[Group]) -> dict[str, np.ndarray]:
 
     R.update({
         "n_stacks": part(lambda g: g.n), "stack_stiffness": part(lambda g: g.stack.stiffness),
-        "voltage": part(lambda g: min(g.stack.max_voltage, g.amplifier.max_voltage)),
+        "voltage": np.asarray(volts, float)[gi],
         "capacitance": part(lambda g: g.stack.capacitance), "loss_factor": part(lambda g: g.stack.loss_factor or stack_phys.DEFAULT_LOSS_FACTOR),
         "stack_mass": part(lambda g: g.stack.mass), "stack_cost": part(lambda g: g.stack.cost_usd),
         "stack_length": part(lambda g: g.stack.length), "stack_diameter": part(lambda g: g.stack.diameter),
         "square": part(lambda g: g.stack.section == "square"),
         "bulk_modulus": part(lambda g: fluid_props.bulk_modulus_at(g.fluid.bulk_modulus, g.fluid.bulk_modulus_temperature_coefficient, T)),
         "density": part(lambda g: fluid_props.density_at(g.fluid.density, g.fluid.thermal_expansion, T)),
+        "air_dissolution_pressure": part(lambda g: g.fluid.air_dissolution_pressure or math.inf),
+        "kinematic_viscosity": part(lambda g: fluid_props.kinematic_viscosity(g.fluid.viscosity_40C, g.fluid.viscosity_100C, T)),
         "bias_pressure": part(lambda g: g.accumulator.bias_pressure),
         "f0": part(lambda g: g.seal.friction_per_length), "cp": part(lambda g: g.seal.friction_pressure_coefficient),
     })
-    for name in ("cracking_pressure", "port_area", "reed_stiffness", "max_lift", "discharge_coefficient"):
+    for name in ("cracking_pressure", "port_area", "reed_stiffness", "max_lift", "discharge_coefficient", "reed_mass",
+                 "seat_width", "seat_gap"):
         R[name] = part(lambda g, name=name: getattr(g.valve, name))
+    R["reed_wetted_mass"] = R["reed_mass"] + np.array(
+        [pump.reed_added_mass(g.valve.reed_shape, fluid_props.density_at(g.fluid.density, g.fluid.thermal_expansion, T),
+                              g.valve.reed_width, g.valve.reed_length, g.valve.modal_factor) for g in gs])[gi]
     return R
 
 
@@ -156,19 +177,26 @@ def figures(req, R: dict, loads: list[float]) -> dict[str, np.ndarray]:
     stall = np.zeros_like(swept)
     for _ in range(3):                       # the chamber's modulus at its mean pressure
         wall = pump.wall_compliance(R["pump_diameter"], geometry.wall_thickness(A_p, R["bias_pressure"] + stall), ALUMINIUM_MODULUS)
-        beta = pump.effective_bulk_modulus(R["bulk_modulus"], AIR_FRACTION, R["bias_pressure"] + pump.P_ATM + stall / 2, wall)
+        beta = pump.effective_bulk_modulus(R["bulk_modulus"], AIR_FRACTION, R["bias_pressure"] + pump.P_ATM + stall / 2, wall,
+                                           dissolution_pressure=R["air_dissolution_pressure"])
         stall = pump.stall_pressure(swept, pump.chamber_compliance(V_c, beta, A_p, K_path))
     net = stall - 2.0 * R["cracking_pressure"]
-    D_c = _bore(net, R["f0"] + R["cp"] * (R["bias_pressure"] + stall), r.blocked_force * (1.0 + o.design_margin))
+    D_c = R.get("cylinder_diameter")                     # a stated bore (sizing evaluate), else sized
+    if D_c is None:
+        D_c = _bore(net, R["f0"] + R["cp"] * (R["bias_pressure"] + stall), r.blocked_force * (1.0 + o.design_margin))
     A_c = math.pi * D_c**2 / 4.0
     friction = lambda p: math.pi * D_c * (R["f0"] + R["cp"] * p)        # noqa: E731  (seal at gauge pressure p)
     blocked = A_c * net - friction(R["bias_pressure"] + stall)
+    line = line_of(R, A_c, r.speed, R.get("line_length", LINE_LENGTH), R.get("line_diameter"))
     speeds = []
     for F in loads:
-        p_load = (F + friction(R["bias_pressure"] + F / A_c)) / A_c
-        avg = pump.cycle_averaged(swept, V_c, R["bulk_modulus"], AIR_FRACTION, wall, A_p, K_path, R["frequency"],
-                                  R["bias_pressure"], p_load, R["cracking_pressure"])
-        speeds.append(avg["flow_m3_s"] / A_c)
+        v = np.zeros_like(A_c)
+        for _ in range(2):                   # the line's viscous drop at the speed it carries
+            p_load = (F + friction(R["bias_pressure"] + F / A_c) + line["line_damping_N_s_m"] * v) / A_c
+            avg = pump.cycle_averaged(swept, V_c, R["bulk_modulus"], AIR_FRACTION, wall, A_p, K_path, R["frequency"],
+                                      R["bias_pressure"], p_load, R["cracking_pressure"], R["air_dissolution_pressure"])
+            v = avg["flow_m3_s"] / A_c
+        speeds.append(v)
     speeds = np.array(speeds).reshape(len(loads), -1)
     worst = int(np.argmax(loads)) if loads else 0
     mean_speed = speeds[worst] if loads else swept * R["frequency"] / A_c
@@ -179,8 +207,10 @@ def figures(req, R: dict, loads: list[float]) -> dict[str, np.ndarray]:
     area = stack_phys.side_area(R["stack_length"], R["stack_diameter"], R["square"] > 0)
     p_h = R["bias_pressure"] + max(loads or [0.0]) / A_c
     m_out = surface_mass(req.load) + geometry.narrow_piston_mass(A_c, r.stroke)
-    beta_h = pump.effective_bulk_modulus(R["bulk_modulus"], AIR_FRACTION, p_h + pump.P_ATM)
-    f_n = np.sqrt(beta_h * A_c / ((DEAD_LENGTH + r.stroke) * m_out)) / (2 * math.pi)
+    beta_h = pump.effective_bulk_modulus(R["bulk_modulus"], AIR_FRACTION, p_h + pump.P_ATM,
+                                         dissolution_pressure=R["air_dissolution_pressure"])
+    V_h = A_c * (DEAD_LENGTH + r.stroke) + line["line_volume_m3"]
+    f_n = np.sqrt(beta_h * A_c**2 / (V_h * (m_out + line["line_mass_kg"]))) / (2 * math.pi)
     return {
         "pump_area_m2": A_p, "cylinder_diameter_m": D_c, "cylinder_area_m2": A_c, "chamber_volume_m3": V_c,
         "chamber_gap_m": gap, "wall_compliance_1_Pa": wall, "chamber_bulk_modulus_Pa": beta,
@@ -195,10 +225,28 @@ def figures(req, R: dict, loads: list[float]) -> dict[str, np.ndarray]:
         "stack_heat_W": heat, "run_fraction": np.full_like(peak, run),
         "stack_temperature_rise_K": stack_phys.temperature_rise(heat, area, PUMP_FILM_COEFFICIENT),
         "output_natural_frequency_Hz": f_n, "output_mass_kg": m_out,
-        "oil_volume_m3": V_c + A_c * (2.0 * r.stroke + 2.0 * DEAD_LENGTH),
+        "oil_volume_m3": V_c + A_c * (2.0 * r.stroke + 2.0 * DEAD_LENGTH) + line["line_volume_m3"],
+        **line,
         "capacitance_large_F": C_L,
-        "valve_peak_drop_Pa": pump.valve_drop(pump.peak_flow(swept, R["frequency"]), R["density"], **valve_of(R)),
+        "valve_wetted_resonance_Hz": pump.valve_resonance(R["reed_stiffness"], R["reed_wetted_mass"]),
+        "valve_peak_drop_Pa": pump.valve_drop(pump.peak_flow(swept, R["frequency"]), R["density"], **valve_of(R),
+                                              viscosity=R["kinematic_viscosity"] * R["density"],
+                                              seat_width=R["seat_width"]),
     }
+
+
+def line_of(R, cylinder_area, speed, length=LINE_LENGTH, diameter=None) -> dict[str, np.ndarray]:
+    """The line from the pump to the cylinder (P6): its bore (given, or by
+    the velocity rule), the mass and damping it reflects on the piston, its
+    oil volume."""
+    d = np.maximum(LINE_MIN_DIAMETER, np.sqrt(4.0 * cylinder_area * speed / (math.pi * LINE_VELOCITY)))
+    d = d if diameter is None else np.full_like(d, diameter)
+    L = np.full_like(d, length)
+    mu = R["kinematic_viscosity"] * R["density"]
+    return {"line_length_m": L, "line_diameter_m": d,
+            "line_mass_kg": pump.reflected_mass(R["density"], L, d, cylinder_area),
+            "line_damping_N_s_m": pump.reflected_damping(mu, L, d, cylinder_area),
+            "line_volume_m3": pump.line_area(d) * L}
 
 
 def _bore(net, g, force):

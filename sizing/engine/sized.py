@@ -122,14 +122,17 @@ def read_back(req: RequirementsFile, catalog: Catalog, cand: dict):
 
 def study_designs(req: RequirementsFile, catalog: Catalog, candidates: list[dict], stages=None) -> list:
     """What ``sizing robust`` perturbs, per candidate: a piezohydraulic
-    (Combo, Variant, SizingResult) triple or a ``DCPartsDesign``. A design
+    (Combo, Variant, SizingResult) triple, a ``DCPartsDesign`` or a pump's
+    design file (``io.design.PumpDesignFile``). A design
     the solve's own records hold (``stages``, ``records.Stages``: the
     piezohydraulic designs and the DC designs from parts) is taken from
     them as sized; any other is read back from its results.json record
     (``read_back``)."""
     by_id = stages.by_id if stages is not None else {}
     dc = stages.dc if stages is not None else {}
+    from .pump_evaluate import design_from_candidate
     return [by_id[c["id"]].sized if c["id"] in by_id
             else dc_parts_design(catalog, dc[c["id"]]) if isinstance(dc.get(c["id"]), DCDesign)
+            else design_from_candidate(req, c) if c.get("technology") == "piezo_pump"
             else read_back(req, catalog, c)
             for c in candidates]

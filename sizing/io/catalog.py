@@ -115,6 +115,9 @@ class Fluid(Entry):
     viscosity_100C: Qty("kinematic_viscosity", positive=True)
     bulk_modulus: Qty("pressure", positive=True)
     bulk_modulus_temperature_coefficient: Qty("per_kelvin") = 0.0
+    # absolute pressure at which the entrained air has all dissolved (the
+    # piezo pump's eq. P8); None: the free air does not dissolve
+    air_dissolution_pressure: Optional[Qty("pressure", positive=True)] = None
     thermal_expansion: Qty("per_kelvin", positive=True)
     min_temperature: Qty("temperature")
     max_temperature: Qty("temperature")
@@ -292,7 +295,11 @@ class Compensator(Entry):
 
 class Valve(Entry):
     """A reed check valve of the piezo pump (catalogs/valves.toml): a reed
-    over a circular port, preloaded to its cracking pressure."""
+    over a circular port, preloaded to its cracking pressure. With its
+    wetted geometry (``reed_shape``, ``reed_width``, ``reed_length``,
+    ``modal_factor``) the reed carries the oil it moves (physics/pump.py,
+    P5), and its rated frequency must lie below its resonance in the
+    reference oil (REFERENCE_OIL_DENSITY), not only in air."""
 
     reed_stiffness: Qty("stiffness", positive=True)
     reed_mass: Qty("mass", positive=True)
@@ -300,6 +307,12 @@ class Valve(Entry):
     port_area: Qty("area", positive=True)
     max_lift: Qty("length", positive=True)
     discharge_coefficient: Qty("dimensionless", positive=True)
+    reed_shape: Literal["cantilever", "disc"] = "cantilever"
+    reed_width: Optional[Qty("length", positive=True)] = None     # a disc's diameter
+    reed_length: Optional[Qty("length", positive=True)] = None
+    modal_factor: Qty("dimensionless", positive=True) = 0.24
+    seat_width: Qty("length", nonnegative=True) = 0.0     # the land under the reed (laminar loss, P9)
+    seat_gap: Qty("length", nonnegative=True) = 0.0       # the gap a seated reed leaves (leakage, P7)
     max_frequency: Qty("frequency", positive=True)           # highest pumping frequency it is rated for
     max_temperature: Qty("temperature")
     mass: Qty("mass", positive=True)
@@ -310,11 +323,20 @@ class Valve(Entry):
     def _below_resonance(cls, value: float, info: ValidationInfo) -> float:
         k, m = info.data.get("reed_stiffness"), info.data.get("reed_mass")
         if k and m:
-            resonance = (k / m) ** 0.5 / (2 * 3.141592653589793)
+            from ..physics.pump import reed_added_mass
+            added = reed_added_mass(info.data.get("reed_shape", "cantilever"), REFERENCE_OIL_DENSITY,
+                                    info.data.get("reed_width"), info.data.get("reed_length"),
+                                    info.data.get("modal_factor", 0.24))
+            resonance = (k / (m + added)) ** 0.5 / (2 * 3.141592653589793)
             if value >= resonance:
-                raise ValueError(f"expected a pumping frequency below the reed's resonance "
-                                 f"sqrt(reed_stiffness / reed_mass) / 2 pi = {resonance:.4g} Hz, got {value:.4g} Hz")
+                where = "in oil, with its added mass" if added > 0 else "sqrt(reed_stiffness / reed_mass) / 2 pi"
+                raise ValueError(f"expected a pumping frequency below the reed's resonance ({where}) "
+                                 f"= {resonance:.4g} Hz, got {value:.4g} Hz")
         return value
+
+
+# kg/m^3: the oil a valve's rating is checked in (ISO VG 15-32 mineral oils, 850-870)
+REFERENCE_OIL_DENSITY = 850.0
 
 
 class Accumulator(Entry):

@@ -6,6 +6,7 @@ from typing import Literal, Optional, Union
 
 from pydantic import Field, field_validator, model_validator
 
+from . import toml_text
 from .schema import Qty, Strict, parse_tagged
 
 
@@ -120,26 +121,51 @@ class DCDesignFile(Strict):
         return self
 
 
-DesignFile = Union[PiezoDesignFile, DCDesignFile]
+class PumpDesignFile(Strict):
+    """A piezo pump design, the ``design`` block ``sizing solve`` writes
+    for one (CONTRACTS: pump_frequency, pump_diameter, cylinder_diameter,
+    bias_pressure, valve, stack, n_stacks, voltage, fluid, seal, amplifier,
+    accumulator, temperature), with the requirements its margins are judged
+    against (``stroke``, ``speed``, ``blocked_force``) and, optionally, the
+    line from pump to cylinder. ``pump_frequency`` may be set anywhere
+    below the valve's wetted resonance: above its rating it is a warning."""
+    technology: Literal["piezo_pump"]
+    stack: str
+    n_stacks: int = Field(gt=0, le=100)
+    voltage: Optional[Qty("voltage", positive=True)] = None
+    pump_frequency: Qty("frequency", positive=True)
+    pump_diameter: Qty("length", positive=True)
+    cylinder_diameter: Qty("length", positive=True)
+    bias_pressure: Optional[Qty("pressure", nonnegative=True)] = None   # default: the accumulator's
+    valve: str
+    accumulator: str
+    fluid: str
+    seal: str
+    amplifier: str
+    temperature: Qty("temperature") = 25.0
+    line_length: Optional[Qty("length", positive=True)] = None
+    line_diameter: Optional[Qty("length", positive=True)] = None
+    stroke: Qty("length", positive=True) = 0.04
+    speed: Qty("speed", positive=True) = 0.1
+    blocked_force: Qty("force", positive=True) = 2500.0
+    strokes_per_second: float = Field(1.0, gt=0.0, allow_inf_nan=False)
+    load: LoadTable = Field(default_factory=LoadTable)
+    notes: Optional[str] = None
+
+
+DesignFile = Union[PiezoDesignFile, DCDesignFile, PumpDesignFile]
 
 
 def load_design(path: str | Path) -> DesignFile:
-    return parse_tagged(path, "technology", {"piezohydraulic": PiezoDesignFile, "dc_motor": DCDesignFile})
+    return parse_tagged(path, "technology", {"piezohydraulic": PiezoDesignFile, "dc_motor": DCDesignFile,
+                                             "piezo_pump": PumpDesignFile})
 
 
 def design_toml(block: dict) -> str:
     """A results.json ``design`` block as a design.toml that ``sizing
     evaluate`` reads back: floats at full precision (a margin of 1e-7 must
     not flip on rounding), None left out, a dict value as a table."""
-    def value(v) -> str:
-        if isinstance(v, bool):
-            return "true" if v else "false"
-        if isinstance(v, (int, float)):
-            return repr(v) if isinstance(v, int) or v == v and abs(v) != float("inf") else f"{v}"
-        if isinstance(v, str):
-            return '"' + v.replace("\\", "\\\\").replace('"', '\\"') + '"'
-        raise TypeError(f"cannot write {type(v).__name__} to design.toml")
-    top = [f"{k} = {value(v)}" for k, v in block.items() if v is not None and not isinstance(v, dict)]
-    tables = [f"\n[{k}]\n" + "\n".join(f"{kk} = {value(vv)}" for kk, vv in v.items() if vv is not None)
+    top = [toml_text.line(k, v) for k, v in block.items() if v is not None and not isinstance(v, dict)]
+    tables = [f"\n[{toml_text.key(k)}]\n" + "\n".join(toml_text.line(kk, vv) for kk, vv in v.items() if vv is not None)
               for k, v in block.items() if isinstance(v, dict)]
     return "\n".join(top) + "\n" + "".join(t + "\n" for t in tables)

@@ -35,6 +35,7 @@ from ..engine.dc_sizing import verify_parts
 from ..engine.sized import DCPartsDesign, study_designs
 from ..engine.solve import verify_sized
 from ..engine.verify import SETTLE_TIME_S
+from ..io.design import PumpDesignFile
 from .executor import Executor, task_seed
 from .stats import sensitivity, wilson
 from .tolerances import (BOUC_WEN_PREFIX, Tolerance, applicable, factors, operating_temperatures, perturbed_combo,
@@ -67,7 +68,8 @@ def run_batch(task: BatchTask) -> dict:
     f = factors(tols, z)
     r, o = task.req.requirements, task.req.options
     temps = operating_temperatures(tols, f, o.drift_reference_temperature, r.max_temperature)
-    verify = _verify_dc if isinstance(task.design, DCPartsDesign) else _verify_piezo
+    verify = (_verify_dc if isinstance(task.design, DCPartsDesign)
+              else _verify_pump if isinstance(task.design, PumpDesignFile) else _verify_piezo)
     picked, sim_s = verify(task, tols, f, temps)
     keys = sorted({k for c in picked for k in c["margins"]})
     margins = {k: np.array([_finite(c["margins"].get(k)) for c in picked]) for k in keys}
@@ -103,6 +105,23 @@ def _verify_dc(task: BatchTask, tols: list[Tolerance], f: np.ndarray, temps) -> 
     return picked, n * len(task.loads) * duration
 
 
+def _verify_pump(task: BatchTask, tols: list[Tolerance], f: np.ndarray, temps) -> tuple[list[dict], float]:
+    """The pump's screen checks and cycle simulation (``pump_evaluate.verify_samples``)
+    on each sample's perturbed parts, at the required maximum temperature;
+    (per sample its verdict, simulated seconds)."""
+    from ..engine import pump_screen
+    from ..engine.pump_evaluate import verify_samples
+    d, cat = task.design, task.catalog
+    group = pump_screen.Group(cat.stacks[d.stack], d.n_stacks, cat.amplifiers[d.amplifier], cat.valves[d.valve],
+                              cat.accumulators[d.accumulator], cat.fluids[d.fluid], cat.seals[d.seal])
+    bw = None
+    if any(t.key.startswith(BOUC_WEN_PREFIX) for t in tols):
+        bw = stack_bouc_wen(group.stack, reference_bouc_wen(cat.stacks))[0]
+    groups = [perturbed_combo(group, tols, row, bw) for row in f]
+    picked = verify_samples(d, cat, groups, task.loads)
+    return picked, f.shape[0] * len(task.loads) * 2.0 * d.stroke / d.speed
+
+
 def _pick(cands: list[dict], variant_id: str) -> dict:
     """The sample's candidate of the design under study. A passive design
     ("-pc") whose sample does not drift beyond the allowance needs no spacer:
@@ -117,10 +136,12 @@ def _finite(v) -> float:
 
 def pick_designs(results: dict, k: int, technology: str | None = None) -> list[dict]:
     """The K best candidates robust can perturb, in rank order: sized
-    piezohydraulic designs and DC designs from parts (not the catalog's
-    ready-made DC actuators); only ``technology``'s when given."""
+    piezohydraulic designs, DC designs from parts (not the catalog's
+    ready-made DC actuators); only ``technology``'s when given, and the
+    simulated pumps only when asked for (``technology`` "piezo_pump")."""
     out = [c for c in results["candidates"] if "design" in c and (
-        c["technology"] == "piezohydraulic" or (c["technology"] == "dc_motor" and c.get("variant") == "parts"))
+        c["technology"] == "piezohydraulic" or (c["technology"] == "dc_motor" and c.get("variant") == "parts")
+        or (c["technology"] == "piezo_pump" and technology == "piezo_pump" and c.get("stage") == "simulated"))
         and technology in (None, c["technology"])]
     return out[:k]
 

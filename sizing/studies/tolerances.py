@@ -78,7 +78,10 @@ def applicable(tols: list[Tolerance], design) -> list[Tolerance]:
     """The tolerances that move ``design``'s parts (``engine.sized``: a
     piezohydraulic triple or a DCPartsDesign), in the given order."""
     from ..engine.sized import DCPartsDesign
+    from ..io.design import PumpDesignFile
     from ..io.requirements import DC_PARTS, PIEZO_PARTS
+    if isinstance(design, PumpDesignFile):          # judged at the required maximum temperature
+        return [t for t in tols if t.part in PIEZO_PARTS]
     if isinstance(design, DCPartsDesign):
         parts = tuple(p for p in DC_PARTS if p != "gear" or design.has_gear)
     else:

@@ -14,21 +14,46 @@ def _cand(id_, tech, feasible, margins, mass, rank, stage="simulated"):
             "metrics": {"mass_kg": mass, "cost_usd": 10 * mass}, "rank": rank, "stage": stage}
 
 
-def test_infeasible_side_is_counted_by_its_lightest_one_miss_design():
+def test_infeasible_side_is_counted_by_its_lightest_one_miss_design_with_what_it_needs():
+    """Like with like: an infeasible technology is compared through its
+    design that misses only the amplifier count, with the units it needs;
+    a design that misses a requirement (it delivers less) is named, never
+    compared."""
+    from sizing.io.catalog import load_catalog
     req, _ = load_requirements(STUDIES / "seed-requirements.toml")
+    cat = load_catalog()
+    amp = cat.amplifiers["pi-e-481"]                     # 10 kg, 15000 USD a unit
+
+    def needs(c, units):
+        return dict(c, static={"amplifier_units_needed": units}, components={"amplifier": "pi-e-481"})
+
     cands = [
         _cand("dc", "dc_motor", True, {"speed": 0.1}, 2.0, 1),
         # smallest miss, but heavy: the "closest" by margin
-        _cand("ph-heavy", "piezohydraulic", False, {"amp": -0.1, "force": 0.2}, 900.0, 2),
+        _cand("ph-heavy", "piezohydraulic", False, {"amplifier_units": -0.1, "force": 0.2}, 900.0, 2),
         # misses two checks: never the stand-in
-        _cand("ph-two", "piezohydraulic", False, {"amp": -0.5, "force": -0.1}, 50.0, 3),
-        _cand("ph-light", "piezohydraulic", False, {"amp": -0.8, "force": 0.05}, 150.0, 4),
+        _cand("ph-two", "piezohydraulic", False, {"amplifier_units": -0.5, "force": -0.1}, 50.0, 3),
+        # 150 kg as sized with 16 units; needs 30: 150 + 14 x 10 = 290 kg
+        needs(_cand("ph-light", "piezohydraulic", False, {"amplifier_units": -0.47, "force": 0.05}, 150.0, 4), 30),
+        # 200 kg, needs 18: 220 kg, lighter with what it needs than ph-light
+        needs(_cand("ph-mid", "piezohydraulic", False, {"amplifier_units": -0.11, "force": 0.05}, 200.0, 5), 18),
+        # the lightest, but short of speed: not a rival
+        _cand("ph-slow", "piezohydraulic", False, {"speed": -0.3, "force": 0.05}, 4.0, 6),
     ]
-    out = technology_comparison(req, cands)
+    out = technology_comparison(req, cands, cat)
     ph = out["technologies"]["piezohydraulic"]
-    assert ph["best"] == "ph-heavy" and ph["one_miss"]["id"] == "ph-light"
-    # by hand: 150 kg / 2 kg = 75, 1500 USD / 20 USD = 75
-    assert "mass x75" in out["text"] and "cost x75" in out["text"]
+    assert ph["best"] == "ph-heavy" and ph["one_miss"]["id"] == "ph-mid"
+    assert ph["one_miss"]["needs"]["amplifier_units"] == 18 and ph["one_miss"]["comparable"]
+    assert ph["one_miss"]["metrics"]["mass_kg"] == pytest.approx(200.0 + 2 * amp.mass)
+    # by hand: 220 kg / 2 kg = 110; (2000 + 2 x 15000) USD / 20 USD = 1600
+    assert "mass x110" in out["text"] and "cost x1.6e+03" in out["text"]
+    assert "needs 18 amplifier units (16 allowed)" in out["text"]
+    # without a design that more units would rescue: named, not compared
+    slow = technology_comparison(req, [c for c in cands if c["id"] not in ("ph-light", "ph-mid")], cat)
+    assert slow["technologies"]["piezohydraulic"]["one_miss"]["id"] == "ph-slow"
+    assert not slow["technologies"]["piezohydraulic"]["one_miss"]["comparable"]
+    assert "no design to compare like with like" in slow["text"] and "mass x" not in slow["text"]
+    assert "lighter than" not in slow["recommendation"]
 
 
 def test_what_would_flip_each_verdict():

@@ -140,7 +140,9 @@ def test_blocked_pump_holds_still():
 
 
 @pytest.mark.parametrize("file, edit, words", [
-    ("valves.toml", ('max_frequency = "1000 Hz"', 'max_frequency = "4000 Hz"'), ("valves.toml", "max_frequency", "resonance")),
+    ("valves.toml", ('max_frequency = "600 Hz"', 'max_frequency = "4000 Hz"'), ("valves.toml", "max_frequency", "resonance")),
+    # below the reed's 3.4 kHz in air, above its 1.88 kHz in oil
+    ("valves.toml", ('max_frequency = "600 Hz"', 'max_frequency = "2000 Hz"'), ("valves.toml", "max_frequency", "in oil")),
     ("valves.toml", ('port_area = "7.07 mm^2"\n', ''), ("valves.toml", "port_area")),
     ("accumulators.toml", ('bias_pressure = "0.5 MPa"', 'bias_pressure = "-0.5 MPa"'), ("accumulators.toml", "bias_pressure", "non-negative")),
 ])
@@ -155,3 +157,95 @@ def test_bad_pump_parts_exit_2_with_one_line_and_write_nothing(tmp_path, catalog
     req.write_text((STUDIES / "seed-requirements.toml").read_text())
     one_line_exit_2(*run_cli("solve", req, "--catalog", catalog_copy, "--out", out, "--quiet")[::2], *words[:2])
     assert not out.exists()
+
+
+def test_line_inertance_and_reflected_mass_by_hand():
+    # 0.3 m of 5 mm line, rho 850: A = 1.9635e-5 m^2, rho L / A = 1.2987e7 Pa s^2/m^3;
+    # into a 20 mm bore (3.1416e-4 m^2): 1.2987e7 x 9.8696e-8 = 1.2818 kg on the load
+    assert float(pump.line_inertance(850.0, 0.3, 0.005)) == pytest.approx(1.2987e7, rel=1e-3)
+    assert float(pump.reflected_mass(850.0, 0.3, 0.005, math.pi * 0.01**2)) == pytest.approx(1.2818, rel=1e-3)
+    # the low end of the review's range: 0.2 m of 6 mm line into an 18 mm bore, 0.389 kg
+    assert float(pump.reflected_mass(850.0, 0.2, 0.006, math.pi * 0.009**2)) == pytest.approx(0.3894, rel=2e-3)
+    # Hagen-Poiseuille: 128 x 0.0128 x 0.3 / (pi x 0.005^4) = 2.5033e8 Pa s/m^3
+    assert float(pump.line_resistance(0.0128, 0.3, 0.005)) == pytest.approx(2.5033e8, rel=1e-3)
+
+
+def test_annulus_leakage_against_the_exact_concentric_annulus():
+    """pi D c^3 / (12 mu L): 10 mm piston, 5 um clearance, 10 mm land, 0.0128
+    Pa s: 2.5566e-15 m^3/(s Pa); the exact annulus flow (White, Viscous Fluid
+    Flow, eq. 3-49) pi / (8 mu L) [r_o^4 - r_i^4 - (r_o^2 - r_i^2)^2 / ln(r_o / r_i)]
+    agrees for a thin gap."""
+    G = float(pump.annulus_leakage(0.010, 5e-6, 0.010, 0.0128))
+    assert G == pytest.approx(2.5566e-15, rel=1e-3)
+    ri, ro, mu, L = 0.005, 0.005 + 5e-6, 0.0128, 0.010
+    exact = math.pi / (8 * mu * L) * (ro**4 - ri**4 - (ro**2 - ri**2) ** 2 / math.log(ro / ri))
+    assert G == pytest.approx(exact, rel=2e-3)
+    # the cube of the clearance: twice the gap, eight times the leak
+    assert float(pump.annulus_leakage(0.010, 10e-6, 0.010, 0.0128)) == pytest.approx(8 * G)
+
+
+def test_wetted_reed_resonance_against_the_strip_added_mass():
+    """The catalog's 0.15 x 4 x 6 mm steel reed (k 3.1e3 N/m, effective mass
+    6.8e-6 kg, 3.40 kHz in air) in oil (850 kg/m^3): a strip of width 4 mm
+    carries (pi / 4) rho b^2 per metre, 6.409e-5 kg over 6 mm, 1.538e-5 kg
+    with the cantilever's modal factor 0.24; wetted resonance
+    sqrt(3.1e3 / 2.218e-5) / 2 pi = 1882 Hz (the review's 'about 1.9 kHz')."""
+    ma = float(pump.added_mass_strip(850.0, 0.004, 0.006, 0.24))
+    assert ma == pytest.approx(1.538e-5, rel=1e-3)
+    assert float(pump.wetted_resonance(3.1e3, 6.8e-6, ma)) == pytest.approx(1881.6, rel=1e-3)
+    # Lamb's disc: (8 / 3) rho a^3, a 5 mm disc in oil 2.833e-4 kg
+    assert float(pump.added_mass_disc(850.0, 0.005)) == pytest.approx(2.8333e-4, rel=1e-3)
+    # in air (1.2 kg/m^3) the reed keeps its resonance within 0.1 %
+    air = float(pump.wetted_resonance(3.1e3, 6.8e-6, pump.added_mass_strip(1.2, 0.004, 0.006, 0.24)))
+    assert air == pytest.approx(float(pump.valve_resonance(3.1e3, 6.8e-6)), rel=2e-3)
+
+
+def test_air_dissolution_by_hand_and_against_the_mixture_volume():
+    """P8: 0.5 % free air at atmospheric pressure, all dissolved at 3 MPa
+    (absolute). At 1 MPa gauge 65.50 % of it stays free, compressed to
+    0.18191 of its volume: 5.958e-4 of the mixture; the compliance
+    (0.995 / 1.5e9 + 0.005 / 2.8987e6 x 0.18191 + 5.958e-4 / (1.4 x 1.1013e6))
+    / 0.99560 = 1.3695e-9 1/Pa, beta 7.302e8 Pa; above 3 MPa the oil's own
+    1.5 GPa. Cross-check: -dV / (V dp) of the mixture's volume by finite
+    differences."""
+    p = 1e6 + pump.P_ATM
+    assert float(pump.free_air(0.005, p, 3e6)) == pytest.approx(0.005 * 0.65501, rel=1e-4)
+    beta = float(pump.effective_bulk_modulus(1.5e9, 0.005, p, dissolution_pressure=3e6))
+    assert beta == pytest.approx(7.3017e8, rel=1e-3)
+    assert float(pump.effective_bulk_modulus(1.5e9, 0.005, 4e6, dissolution_pressure=3e6)) == pytest.approx(1.5e9)
+    # below atmospheric pressure nothing more is released than the free air
+    assert float(pump.free_air(0.005, 5e4, 3e6)) == pytest.approx(0.005)
+
+    def volume(q):
+        return (1 - 0.005) * math.exp(-(q - pump.P_ATM) / 1.5e9) + float(pump.free_air(0.005, q, 3e6)) * (pump.P_ATM / q) ** (1 / 1.4)
+    h = 10.0
+    numeric = -(volume(p + h) - volume(p - h)) / (2 * h) / volume(p)
+    assert 1 / beta == pytest.approx(numeric, rel=2e-3)
+    # without dissolution (P2 alone) the chamber is stiffer: the dissolving air adds compliance below 3 MPa
+    assert float(pump.effective_bulk_modulus(1.5e9, 0.005, p)) > beta
+
+
+def test_viscous_loss_across_the_seat_by_hand():
+    """P9: the 3 mm reed at 30 kPa (lift 22.806 um, curtain 2.1497e-7 m^2,
+    orifice coefficient 6.2565e-9) in oil of 0.0128 Pa s over a 0.5 mm land:
+    12 mu w / (pi d x^3) = 6.869e11 Pa s/m^3 in series with the orifice,
+    Q = 4.360e-8 m^3/s (the orifice alone 1.084e-6): at small lifts the
+    laminar gap decides. The drop it takes back is the one given."""
+    args = (850.0, *REED.values(), 0.0128, 0.5e-3)
+    q = float(pump.valve_flow(30e3, *args))
+    assert q == pytest.approx(4.3604e-8, rel=2e-3)
+    # dp = R Q + Q^2 / k^2 by hand: 6.869e11 x 4.3604e-8 + (4.3604e-8 / 6.2565e-9)^2 = 30000 Pa
+    assert 6.869e11 * q + (q / 6.2565e-9) ** 2 == pytest.approx(30e3, rel=3e-3)
+    assert float(pump.valve_drop(q, *args)) == pytest.approx(30e3, rel=1e-6)
+    assert float(pump.valve_flow(30e3, *args[:-2])) == pytest.approx(1.084e-6, rel=5e-3)
+
+
+def test_a_seated_reed_leaks_through_its_seat_gap():
+    """P7 through P9's law: the 3 mm reed shut (10 kPa, below its 20 kPa
+    cracking) on a 2 um gap in 0.0128 Pa s oil over a 0.5 mm land:
+    R = 12 x 0.0128 x 5e-4 / (pi x 3.0003e-3 x 8e-18) = 1.0185e15 Pa s/m^3,
+    the orifice of pi d h = 1.8851e-8 m^2 negligible beside it:
+    Q = 1e4 / 1.0185e15 = 9.82e-12 m^3/s; without a gap none."""
+    args = (850.0, *REED.values(), 0.0128, 0.5e-3)
+    assert float(pump.valve_flow(10e3, *args)) == 0.0
+    assert float(pump.valve_flow(10e3, *args, 2e-6)) == pytest.approx(1e4 / 1.0185e15, rel=2e-3)

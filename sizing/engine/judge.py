@@ -16,7 +16,9 @@ as a solved one would be:
   drive limits (``controller``), else ``dc_parts_designs`` on a catalog of
   these parts alone (the solve's controller rule);
 - catalog DC actuator: the solve's margins of that actuator;
-- piezo pump: not judged here yet (``JUDGES`` takes one per kind of design).
+- piezo pump: ``pump_evaluate.evaluate_pump`` on the file's parts and
+  settings with the requirements' stroke, speed, blocked force, duty and
+  load.
 """
 from __future__ import annotations
 
@@ -129,8 +131,14 @@ def _dc_parts(req, catalog: Catalog, design: DCDesignFile, file: str, loads) -> 
 
 
 def _piezo_pump(req, catalog, design, file, loads) -> dict:
-    """The hook for the pump's design file (technology "piezo_pump")."""
-    raise InputError(file, "technology", "piezo pump designs are not judged against requirements yet")
+    """A pump design file judged against ``req``: its parts and settings
+    with the requirements' stroke, speed, blocked force, duty and load in
+    place of the file's own (``pump_evaluate.design_from_candidate``)."""
+    from .pump_evaluate import design_from_candidate, evaluate_pump
+    judged = design_from_candidate(req, {"design": design.model_dump(exclude={"stroke", "speed", "blocked_force",
+                                                                              "strokes_per_second", "load"})})
+    figures = evaluate_pump(judged, catalog, file)
+    return {"margins": figures["margins"], "metrics": figures["metrics"]}
 
 
 JUDGES = {"dc_actuator": _dc_actuator, "dc_parts": _dc_parts, "piezo_pump": _piezo_pump}

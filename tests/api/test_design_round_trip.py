@@ -1,5 +1,5 @@
 """Designs that evaluate to themselves: the ``design`` block of every ranked
-piezohydraulic and DC candidate of a solve, written as a design.toml and
+piezohydraulic, DC and piezo pump candidate of a solve, written as a design.toml and
 judged with the same requirements (``sizing evaluate --requirements``),
 reproduces the candidate's mass, feasibility and every margin within 0.5 %.
 The solve's figures are the reference; the evaluation rebuilds the design
@@ -19,7 +19,7 @@ from ..conftest import run_cli
 
 REPO = Path(__file__).resolve().parents[2]
 TOLERANCE = 0.005
-TECHNOLOGIES = ("piezohydraulic", "dc_motor")     # the piezo pump's design file: its own engineer's hook
+TECHNOLOGIES = ("piezohydraulic", "dc_motor", "piezo_pump")
 
 
 def _close(a, b) -> bool:

@@ -181,17 +181,3 @@ def design_structure(n_stiffness, stack_force, wide_area, stack_length, wide_gap
                              material.poisson, material.yield_strength, stiffness_ratio)
     return (float(t) if cap_thickness is None else cap_thickness,
             float(area) if frame_area is None else frame_area)
-
-
-def resize_for_material(cap_thickness, frame_area, wide_area, frame_len, stack_force, old, new):
-    """The same end cap / base plate and frame stiffness in another material
-    (a cheap screen: the force path, and so blocked force and natural
-    frequency, stay as sized), thickened where the new material's stress
-    limit needs it. Returns (cap_thickness, frame_area), m and m^2."""
-    a = math.sqrt(wide_area / math.pi)
-    k_plate = float(structure.plate_stiffness(a, cap_thickness, old.youngs_modulus, old.poisson))
-    k_frame = float(structure.rod_stiffness(old.youngs_modulus, frame_area, frame_len))
-    t, area = size_structure(1.0, stack_force, wide_area, frame_len, new.youngs_modulus, new.poisson,
-                             new.yield_strength, 0.0)
-    t_k = float(structure.plate_thickness_for_stiffness(k_plate, a, new.youngs_modulus, new.poisson))
-    return max(float(t), t_k), max(float(area), k_frame * frame_len / new.youngs_modulus)

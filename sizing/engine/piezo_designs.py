@@ -22,7 +22,7 @@ from .rank import ceiling_margin, floor_margin
 from .records import PiezoBrief, PiezoDesign, Variant, frozen
 from .search import Combo, temperature_margin
 from .convex import DEFAULT_MAX_MASS, NO_LIMIT
-from .verify import (GAP_CLEARANCE_M, GAP_TOLERANCE_M, STACK_SPACING_M, drive_figures, metrics, ramp_time,
+from .verify import (GAP_CLEARANCE_M, GAP_TOLERANCE_M, STACK_SPACING_M, metrics, ramp_time,
                      seal_friction_at, static_figures)
 
 MAX_SPACER_M = 0.5          # longest passive-compensation spacer considered
@@ -59,7 +59,8 @@ def sizing_input(b: PiezoBrief, c: Combo, material=None, compensator=None) -> Si
         margin=b.design_margin,
         fixed_mass=c.n * st.mass + (compensator.mass if compensator else 0.0),
         amp_unit_mass=c.amplifier.mass, amp_unit_cost=c.amplifier.cost_usd,
-        amp_unit_current=_unit_current(b, c.amplifier),
+        amp_unit_current=_unit_current(b, c.amplifier), amp_unit_continuous=c.amplifier.continuous_current,
+        strokes_per_second=b.strokes_per_second,
         fixed_cost=(c.n * st.cost_usd + 2 * s.cost_usd + geometry.FIXED_HYDRAULIC_USD
                     + (compensator.cost_usd if compensator else 0.0)),
         fixed_volume=1.5 * c.n * stack_volume,
@@ -75,10 +76,11 @@ def sizing_input(b: PiezoBrief, c: Combo, material=None, compensator=None) -> Si
 
 
 def _unit_current(b: PiezoBrief, amp) -> float:
-    """What one amplifier unit holds over the planned ramp (half the stroke
-    time), A: its peak within the rated pulse, else its continuous rating."""
+    """What one amplifier unit holds over a ramp at the required speed (at
+    least the stroke time, the free stroke exceeding the stroke), A: its
+    peak within the rated pulse, else its continuous rating."""
     return float(amplifier.usable_ramp_current(amp.max_current, amp.continuous_current, amp.peak_duration,
-                                               b.stroke_time / 2))
+                                               b.stroke_time))
 
 
 def variants(b: PiezoBrief, catalog: Catalog) -> list[Variant]:
@@ -91,41 +93,19 @@ def variants(b: PiezoBrief, catalog: Catalog) -> list[Variant]:
 
 
 def size(b: PiezoBrief, catalog, combos, progress=None):
-    """One geometric program per combination, as built and with each open
-    accumulator, in the default structure material; the other materials
-    get the same member stiffnesses re-sized in closed form (a cheap,
-    vectorisable screen: the force path is unchanged, mass and cost and
-    the thermal budget follow the material). An orifice reservoir adds no
-    stiffness, so it reuses the as-built sizing."""
+    """One geometric program per combination and variant: each structure
+    material, as built and with each catalog compensator, gets its own
+    bore, plates, frame, gap, ratio, voltage and drive (an open
+    accumulator adds its compliance to the force path; every compensator
+    its mass and cost to the objective)."""
     sizer = GPSizer(list(b.objectives))
     out = []
     vs = variants(b, catalog)
-    base = force_path.default_material(catalog.materials)
-    if base.id not in {v.material.id for v in vs}:
-        base = vs[0].material
     for i, c in enumerate(combos):
-        solved = {}
-        for v in vs:
-            key = v.compensator.id if v.compensator is not None and v.compensator.kind == "accumulator" else None
-            if key not in solved:
-                solved[key] = sizer.solve(sizing_input(b, c, base, v.compensator if key else None))
-            res = solved[key]
-            if v.material.id != base.id and math.isfinite(res.cap_thickness):
-                res = _resized(c, res, base, v.material)
-            out.append((c, v, res))
+        out.extend((c, v, sizer.solve(sizing_input(b, c, v.material, v.compensator))) for v in vs)
         if i % 8 == 0 or i == len(combos) - 1:
             _progress(progress, "sizing", i + 1, len(combos))
     return out
-
-
-def _resized(c: Combo, res, old, new):
-    v = min(res.voltage_fraction, c.voltage_fraction_max)
-    x = c.stack_stroke * v
-    t_p = float(geometry.plate_thickness(res.wide_area, c.seal.pressure_rating))
-    L_f = float(force_path.frame_length(c.stack.length, t_p, res.wide_gap))
-    t, area = force_path.resize_for_material(res.cap_thickness, res.frame_area, res.wide_area, L_f,
-                                             c.n * c.stack.stiffness * x, old, new)
-    return replace(res, cap_thickness=t, frame_area=area)
 
 
 def designs(b: PiezoBrief, catalog, sized) -> list[PiezoDesign]:
@@ -174,13 +154,11 @@ def _build(b: PiezoBrief, pending: list[PiezoDesign], spacer) -> list[PiezoDesig
     path and static margins, in the order given (new records)."""
     if not pending:
         return []
-    T, S = b.temperature, b.stroke
-    rows, rise = [], []
+    T = b.temperature
+    rows = []
     for d in pending:
         combo, res, var = d.combo, d.gp, d.variant
         v = min(res.voltage_fraction, combo.voltage_fraction_max)
-        free = res.ratio * combo.stack_stroke * v
-        rise.append(0.5 * b.stroke_time * free / S)          # reach the stroke in half the time allowed
         struct = structure_row(var.material, res.cap_thickness, res.frame_area, spacer, d.spacer,
                                var.compensator, b.surface_mass, b.delta_T)
         rows.append(part_row(combo.stack, combo.n, res.ratio, res.wide_area, v * combo.stack.max_voltage,
@@ -188,10 +166,9 @@ def _build(b: PiezoBrief, pending: list[PiezoDesign], spacer) -> list[PiezoDesig
                              max(res.wide_gap, effective_gap(b, combo.stack_stroke * v) * (1 + 1e-9)),
                              combo.fluid, combo.seal, combo.amplifier, structure=struct))
     c = Candidates.from_rows(rows)
-    rise = np.array(rise)
-    needed = drive_figures(c, rise, b.strokes_per_second)["amplifier_units_needed"]
-    c.amp_units = np.minimum(needed, b.max_amplifier_units).astype(float)
-    ramp = ramp_time(c, rise)
+    drive = sized_drive(b, c)
+    c.amp_units = drive["units"]
+    ramp = ramp_time(c, drive["ramp"])
     static = static_figures(c, ramp, b.strokes_per_second)
     met = metrics(c, ramp)
     members = force_path.members(c)
@@ -204,14 +181,29 @@ def _build(b: PiezoBrief, pending: list[PiezoDesign], spacer) -> list[PiezoDesig
                     "at_pressure_Pa": float(p_load[i])}
         figures = {k: float(np.asarray(v)[i]) for k, v in static.items()}
         figures.update(_derived_figures(b, d, figures, float(ramp[i]), friction))
+        figures.update(amplifier_units_needed=float(drive["needed"][i]), amplifier_units_max=b.max_amplifier_units)
         mets = {k: float(np.asarray(v)[i]) for k, v in met.items()}
         out.append(replace(
-            d, cand=c.take([i]), ramp=float(ramp[i]), static=frozen(figures), metrics=frozen(mets),
+            d, cand=c.take([i]), ramp=float(ramp[i]), amplifier_units=float(c.amp_units[i]), static=frozen(figures), metrics=frozen(mets),
             force_path=tuple(force_path.as_list(members, i, d.variant.material.id, comp.id if comp else None,
                                                 spacer.id if d.spacer > 0 else None)),
             seal_friction=frozen(friction), static_margins=frozen(_static_margins(b, d, figures)),
             ruled_out=ruled_out(b, figures, mets)))
     return out
+
+
+def sized_drive(b: PiezoBrief, c: Candidates) -> dict:
+    """Amplifier units and voltage ramp of built candidates, sized against
+    the speed and the duty (``amplifier.drive_for_speed``): the longest ramp
+    that still reaches the free stroke at the required speed sets the
+    fewest units; the ramp is then the shortest those units drive. The
+    count is capped at the options' ``max_amplifier_units`` (a design held
+    at the cap ramps slower and misses the speed, and its
+    ``amplifier_units`` margin says how many it needs)."""
+    capacitance = c.n_stacks * c.capacitance * stack_phys.LARGE_SIGNAL_CAPACITANCE_FACTOR
+    return amplifier.drive_for_speed(capacitance, c.voltage, c.free_stroke / b.speed, b.strokes_per_second,
+                                     c.amp_max_current, c.amp_continuous, c.amp_peak_duration,
+                                     b.max_amplifier_units)
 
 
 def ruled_out(b: PiezoBrief, st: dict, met: dict) -> dict | None:

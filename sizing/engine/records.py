@@ -74,7 +74,8 @@ class PiezoDesign:
     spacer: float = 0.0             # m, passive-compensation spacer (0: none)
     bouc_wen: tuple | None = None   # (BoucWen, source) of its stack; None: not buildable
     cand: object = None             # piezo.Candidates, one row
-    ramp: float = math.nan          # s, the planned drive ramp
+    ramp: float = math.nan          # s, the drive's voltage ramp (sized with the units)
+    amplifier_units: float = math.nan   # amplifier units in parallel (sized against the speed and the duty)
     static: Mapping = field(default_factory=lambda: EMPTY)  # static figures, SI (verify.static_figures and the derived ones)
     metrics: Mapping = field(default_factory=lambda: EMPTY)  # mass_kg, cost_usd, volume_m3, power_W
     force_path: tuple = ()          # members in series (force_path.as_list rows)
@@ -85,6 +86,11 @@ class PiezoDesign:
     @property
     def built(self) -> bool:
         return self.cand is not None
+
+    @property
+    def ramp_time(self) -> float:
+        """s, the voltage ramp the drive is sized for (``ramp``)."""
+        return self.ramp
 
     @property
     def sized(self) -> tuple:

@@ -8,12 +8,17 @@ narrow bore over the stroke) and the fluid spring beta A_w / (g + x) in
 series with the stacks (docs/models.md), every static requirement is a
 posynomial <= 1 (m: the design margin):
 
-    stroke             S (1+m) / (R x)                                   <= 1
+    stroke             (S + F_L R^2 C) (1+m) / (R x)                     <= 1
     blocked force      F (1+m) R (1/(n k_s) + (g + x)/(beta A_w)) / x    <= 1
     pressure           n k_s x / (A_w p_rating)                          <= 1
     drive              U / U_max                                         <= 1
     natural frequency  w^2 (m_w + R^2 m_n) (1/(n k_s) + (g + x)/(beta A_w)) <= 1
     voltage            v / v_max                                         <= 1
+    stiffness          k_min R^2 C                                       <= 1
+
+(C the force path's compliance at the wide piston, so R^2 C is the output's
+at rest; F_L the largest load when the stroke is counted from neutral, else
+0; k_min the requirements' ``min_stiffness``, else 0.)
 
 (C_L the large-signal capacitance; w = 2 pi f_min.) The drive is sized with
 the rest: the voltage ramp reaches the free stroke R x0 v at the required
@@ -50,7 +55,7 @@ import numpy as np
 from ..physics import geometry, structure
 from ..physics.stack import LARGE_SIGNAL_CAPACITANCE_FACTOR
 
-CONSTRAINTS = ("stroke", "blocked_force", "pressure", "drive_current", "natural_frequency",
+CONSTRAINTS = ("stroke", "blocked_force", "pressure", "drive_current", "natural_frequency", "stiffness",
                "structure_out_of_range", "envelope_length", "envelope_diameter", "envelope_mass")
 # what a binding constraint rules a design out as (never ranked): the rest are missed requirements
 RULED_OUT_BY = {"structure_out_of_range": "structure_out_of_range", "envelope_length": "envelope",
@@ -111,6 +116,8 @@ class SizingInput:
     amp_unit_current: float = math.inf  # A, what one unit holds over the ramp (inf: max_current is one unit)
     amp_unit_continuous: float = math.inf   # A, one unit's continuous rating (inf: amp_unit_current)
     strokes_per_second: float = 0.0     # 1/s, the duty the rms and mean currents are taken over
+    min_stiffness: float = 0.0          # N/m, output stiffness at rest asked (0: none)
+    stroke_load: float = 0.0            # N, the load the stroke is counted from neutral under (0: from the loaded rest)
 
 
 @dataclass
@@ -157,7 +164,7 @@ class GPSizer:
         names = ["nk", "x0", "V0", "vmax", "F", "S", "beta", "p", "w2", "cur", "m0", "c0", "vol0",
                  "rho", "coil", "pw", "E", "pc", "ps", "sig", "Ls", "knk", "rhom", "cm", "Apack", "cacc",
                  "f0", "fc", "msurf", "sh", "gmin", "gfloor", "tv", "Lmax", "Dmax", "Mmax", "wall", "uam", "uac",
-                 "uramp", "urms", "umean"]
+                 "uramp", "urms", "umean", "kmin", "FL"]
         self.par = {k: cp.Parameter(pos=True, name=k) for k in names}
         terms = self._constraint_terms()
         bounds = ([self.v <= self.par["vmax"], MIN_RATIO / self.R <= 1] + self._structure_bounds() + self._gap_bounds()
@@ -257,11 +264,13 @@ class GPSizer:
         x, narrow, stroke = self._geometry()
         compliance, reflected = self.C, self.M
         return {
-            "stroke": P["S"] / (R * x),
+            # from neutral the load's push-back F_L / k_out = F_L R^2 C is lost
+            "stroke": (P["S"] + P["FL"] * R**2 * compliance) / (R * x),
             "blocked_force": self.Fs * R * compliance / x,
             "pressure": P["nk"] * x / (A * P["p"]),
             "drive_current": self.U / P["cur"],
             "natural_frequency": P["w2"] * reflected * compliance,
+            "stiffness": P["kmin"] * R**2 * compliance,          # k_out = 1 / (R^2 C)
             "structure_out_of_range": P["tv"] * self.t * A ** -0.5,
             "envelope_length": self._length() / P["Lmax"],
             "envelope_diameter": self._outer_diameter() / P["Dmax"],
@@ -317,6 +326,7 @@ class GPSizer:
             "F": s.force * (1 + s.margin), "S": s.stroke * (1 + s.margin), "beta": s.bulk_modulus,
             "p": s.pressure_rating, "w2": (2 * math.pi * s.natural_frequency) ** 2,
             "cur": s.max_current / unit,        # the most units allowed
+            "kmin": max(s.min_stiffness, 1e-30), "FL": max(s.stroke_load * (1 + s.margin), 1e-30),
             "uramp": charge * speed / (s.stack_stroke * unit),
             "urms": max(charge * math.sqrt(2 * f * speed / s.stack_stroke) / continuous, 1e-12),
             "umean": max(2 * charge * f / continuous, 1e-12),

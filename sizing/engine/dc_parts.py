@@ -265,6 +265,10 @@ def static_screen(p: PartArrays, req, loads, ambient=None, settings=None) -> tup
         "holding_power_with_brake_W": np.zeros(len(p)), "static_safety": screw_phys.static_safety(v["screw_static_load_rating"], F_peak),
         "continuous_torque_rated_N_m": motor_phys.continuous_torque_at(v["motor_continuous_torque"],
                                                                        v["motor_max_winding_temperature"], T),
+        # the servo holds the motor angle; the shaft, nut and bearing give under the load
+        "output_stiffness_N_m": screw_phys.axial_stiffness(v["screw_elastic_modulus"], v["screw_diameter"],
+                                                           pl["screw_length"]),
+        "back_drives": np.full(len(p), float(screw_phys.back_drives(SCREW_BACK_EFFICIENCY))),
     }
     margins = {
         "blocked_force": F_peak / r.blocked_force - 1.0,
@@ -283,6 +287,8 @@ def static_screen(p: PartArrays, req, loads, ambient=None, settings=None) -> tup
         "continuous_torque": static["continuous_torque_rated_N_m"] / np.maximum(kt * rated["current_A"], 1e-12) - 1.0,
         "holding": temperature_margin(v["motor_max_winding_temperature"], end_of_hold),
     }
+    if r.min_stiffness is not None:
+        margins["stiffness"] = static["output_stiffness_N_m"] / r.min_stiffness - 1.0
     return pl, static, margins
 
 

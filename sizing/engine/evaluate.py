@@ -9,7 +9,7 @@ from ..errors import InputError
 from ..io.catalog import Catalog
 from ..io.design import DCDesignFile, PiezoDesignFile
 from ..physics import hydraulics, thermal
-from . import dc as dc_engine, force_path
+from . import dc as dc_engine, force_path, holding
 from .loads import load_cases, surface_mass
 from .piezo import (DEFAULT_PRESSURE_RATING_PA, Candidates, part_row, reference_bouc_wen, stack_bouc_wen,
                     structure_row)
@@ -73,7 +73,8 @@ def evaluate_piezo(design: PiezoDesignFile, catalog: Catalog, file: str) -> dict
     cases = load_cases(design.load)
     sims = simulate_cases(c, [case["load_N"] for case in cases], design.rise_time,
                           load_stiffness=design.load.stiffness)
-    simulated = [dict(case, **{k: _num(v[0]) for k, v in sim.items()}) for case, sim in zip(cases, sims)]
+    simulated = holding.held_cases([dict(case, **{k: _num(v[0]) for k, v in sim.items()})
+                                    for case, sim in zip(cases, sims)], static["output_stiffness_N_m"])
     return {
         "technology": "piezohydraulic",
         "design": {"stack": stack.id, "n_stacks": design.n_stacks, "ratio": ratio, "voltage_V": voltage,
@@ -168,7 +169,9 @@ def evaluate_dc(design: DCDesignFile, catalog: Catalog, file: str) -> dict:
     act = _lookup(catalog, catalog.dc_actuators, design.actuator, file, "actuator")
     cases = load_cases(design.load)
     sims = dc_engine.step_cases(act, design.step, [c["load_N"] for c in cases], design.duration)
-    simulated = [dict(case, **{k: _num(v) for k, v in sim.items()}) for case, sim in zip(cases, sims)]
+    static = dc_engine.static_figures(act, max(c["load_N"] for c in cases) if cases else 0.0)
+    simulated = holding.held_cases([dict(case, **{k: _num(v) for k, v in sim.items()})
+                                    for case, sim in zip(cases, sims)], static["output_stiffness_N_m"])
     warnings = []
     if design.temperature > act.max_temperature:
         warnings.append(f"{act.id} is rated to {act.max_temperature:g} degC, below {design.temperature:g} degC")
@@ -176,7 +179,7 @@ def evaluate_dc(design: DCDesignFile, catalog: Catalog, file: str) -> dict:
         "technology": "dc_motor",
         "design": {"actuator": act.id, "step_m": design.step, "pid": act.pid.model_dump(),
                    "c1": act.c1, "c2": act.c2, "screw_lead_m": act.screw_lead},
-        "static": dc_engine.static_figures(act, max(c["load_N"] for c in cases) if cases else 0.0),
+        "static": static,
         "simulated": {"cases": simulated, "worst": _worst(simulated)},
         "metrics": dc_engine.metrics(act),
         "warnings": warnings,

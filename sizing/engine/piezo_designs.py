@@ -60,7 +60,8 @@ def sizing_input(b: PiezoBrief, c: Combo, material=None, compensator=None) -> Si
         fixed_mass=c.n * st.mass + (compensator.mass if compensator else 0.0),
         amp_unit_mass=c.amplifier.mass, amp_unit_cost=c.amplifier.cost_usd,
         amp_unit_current=_unit_current(b, c.amplifier), amp_unit_continuous=c.amplifier.continuous_current,
-        strokes_per_second=b.strokes_per_second,
+        strokes_per_second=b.strokes_per_second, min_stiffness=b.min_stiffness,
+        stroke_load=b.max_load if b.stroke_from == "neutral" else 0.0,
         fixed_cost=(c.n * st.cost_usd + 2 * s.cost_usd + geometry.FIXED_HYDRAULIC_USD
                     + (compensator.cost_usd if compensator else 0.0)),
         fixed_volume=1.5 * c.n * stack_volume,
@@ -272,6 +273,10 @@ def _static_margins(b: PiezoBrief, d: PiezoDesign, st: dict) -> dict:
         "wide_gap": floor_margin(st["wide_gap_m"], st["gap_needed_m"]),
         "packing": floor_margin(st["stacks_that_fit"], combo.n),
     }
+    if b.min_stiffness > 0:
+        margins["stiffness"] = floor_margin(st["output_stiffness_N_m"], b.min_stiffness)
+    if b.stroke_from == "neutral":       # the load's push-back at zero drive is travel lost
+        margins["stroke"] = floor_margin(st["free_stroke_m"] - b.max_load / st["output_stiffness_N_m"], b.stroke)
     comp = var.compensator
     if comp is not None:
         margins["temperature"] = min(margins["temperature"], temperature_margin(comp.max_temperature, T))

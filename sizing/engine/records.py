@@ -279,6 +279,8 @@ class PiezoBrief:
     max_load: float                 # N, the largest load case
     objectives: tuple               # what the sizing minimises
     thermal_compensation: bool      # size compensated variants too
+    min_stiffness: float = 0.0      # N/m, output stiffness at rest the requirements ask (0: none)
+    stroke_from: str = "loaded_rest"    # where the stroke is counted under the load (engine/holding.py)
 
     @classmethod
     def of(cls, req) -> "PiezoBrief":
@@ -291,5 +293,6 @@ class PiezoBrief:
                    design_margin=o.design_margin, stiffness_ratio=o.structure_stiffness_ratio,
                    max_length=env.max_length, max_diameter=env.diameter, max_mass=env.max_mass,
                    surface_mass=surface_mass(L), max_load=max(c["load_N"] for c in load_cases(L)),
-                   objectives=tuple(req.objectives.minimize), thermal_compensation=bool(o.thermal_compensation))
+                   objectives=tuple(req.objectives.minimize), thermal_compensation=bool(o.thermal_compensation),
+                   min_stiffness=r.min_stiffness or 0.0, stroke_from=r.stroke_from)
 

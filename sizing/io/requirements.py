@@ -27,6 +27,12 @@ class RequirementsTable(Strict):
     blocked_force: Qty("force", positive=True)
     speed: Qty("speed", positive=True)
     max_temperature: Qty("temperature")
+    # output stiffness at rest, checked for every technology (None: not required)
+    min_stiffness: Optional[Qty("stiffness", positive=True)] = None
+    # where the stroke is counted under a load: "loaded_rest", the seed's reading (its
+    # simulation counts from where the load leaves the output at zero drive), or
+    # "neutral" (a surface held to a position: the load's push-back is lost travel)
+    stroke_from: Literal["neutral", "loaded_rest"] = "loaded_rest"
 
     @field_validator("stroke")
     @classmethod

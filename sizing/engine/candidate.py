@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 
 from ..physics import fluid as fluid_props
-from ..physics import stack as stack_phys, thermal
+from ..physics import stack as stack_phys, structure, thermal
 from . import holding, piezo_designs
 from .rank import ceiling_margin, floor_margin
 from .records import PiezoDesign, Simulation, VerifiedDesign
@@ -150,6 +150,11 @@ def _design_variables(req, d: PiezoDesign) -> dict:
            "compensator": comp.id if comp else None, "strokes_per_second": req.duty.strokes_per_second}
     if d.spacer > 0:
         out["spacer_length"] = d.spacer
+    restraint = float(d.cand.edge_restraint[0])
+    if restraint != 0:
+        out["plate_edge"] = structure.edge_name(restraint)
+        if out["plate_edge"] == "flange":
+            out["flange_restraint"] = restraint
     return out
 
 

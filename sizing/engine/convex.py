@@ -118,6 +118,7 @@ class SizingInput:
     strokes_per_second: float = 0.0     # 1/s, the duty the rms and mean currents are taken over
     min_stiffness: float = 0.0          # N/m, output stiffness at rest asked (0: none)
     stroke_load: float = 0.0            # N, the load the stroke is counted from neutral under (0: from the loaded rest)
+    edge_restraint: float = 0.0         # end cap and base plate edge, k_theta a / D (0 simply supported, inf clamped)
 
 
 @dataclass
@@ -218,10 +219,13 @@ class GPSizer:
         _, _, stroke = self._geometry()
         return 2 * self.t + self._frame_length() + stroke + geometry.ROD_EXTRA_LENGTH
 
-    def _outer_diameter(self):
-        """Outer diameter of the wide cylinder: bore plus two thin walls."""
+    def _outer_diameter_squared(self):
+        """Outer diameter squared: the wide cylinder (bore plus two thin
+        walls) with the tie-rod frame's section as a ring around it,
+        D^2 = D_casing^2 + 4 A_f / pi (``verify.outer_diameter``)."""
         P = self.par
-        return P["wall"] * self.A ** 0.5 + 2 * geometry.MIN_WALL
+        casing = P["wall"] * self.A ** 0.5 + 2 * geometry.MIN_WALL
+        return casing**2 + 4 / math.pi * self.Af
 
     def _structure_bounds(self) -> list:
         """Caps and frame: within the allowable stress at the stack force and
@@ -273,7 +277,7 @@ class GPSizer:
             "stiffness": P["kmin"] * R**2 * compliance,          # k_out = 1 / (R^2 C)
             "structure_out_of_range": P["tv"] * self.t * A ** -0.5,
             "envelope_length": self._length() / P["Lmax"],
-            "envelope_diameter": self._outer_diameter() / P["Dmax"],
+            "envelope_diameter": self._outer_diameter_squared() / P["Dmax"] ** 2,
             "envelope_mass": self._mass() / P["Mmax"],
         }
 
@@ -335,7 +339,7 @@ class GPSizer:
             # power = V * i over the ramp that reaches the free stroke at the required speed
             "pw": c_large * s.rated_voltage**2 * speed / s.stack_stroke,
             "E": s.youngs_modulus,
-            "pc": float(structure.plate_compliance_factor(s.poisson)) * 12 * (1 - s.poisson**2) / (math.pi * s.youngs_modulus),
+            "pc": float(structure.plate_compliance_factor(s.poisson, "flange", s.edge_restraint)) * 12 * (1 - s.poisson**2) / (math.pi * s.youngs_modulus),
             "ps": 3 * (3 + s.poisson) * s.n_stiffness * s.stack_stroke / (8 * math.pi * s.allowable_stress),
             "sig": s.allowable_stress, "Ls": s.stack_length, "knk": s.stiffness_ratio * s.n_stiffness,
             "rhom": s.material_density, "cm": max(s.material_unit_cost, 1e-9), "Apack": s.packing_area,

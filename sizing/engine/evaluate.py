@@ -8,7 +8,7 @@ import numpy as np
 from ..errors import InputError
 from ..io.catalog import Catalog
 from ..io.design import DCDesignFile, PiezoDesignFile
-from ..physics import hydraulics, thermal
+from ..physics import hydraulics, structure, thermal
 from . import dc as dc_engine, force_path, holding
 from .loads import load_cases, surface_mass
 from .piezo import (DEFAULT_PRESSURE_RATING_PA, Candidates, part_row, reference_bouc_wen, stack_bouc_wen,
@@ -59,7 +59,8 @@ def evaluate_piezo(design: PiezoDesignFile, catalog: Catalog, file: str) -> dict
     surface = surface_mass(design.load)
     struct = structure_row(material, t_cap, frame_area, spacer=force_path.spacer_material(catalog.materials),
                            spacer_length=design.spacer_length, compensator=compensator, surface_mass=surface,
-                           delta_T=design.temperature - FILL_TEMPERATURE_DEGC)
+                           delta_T=design.temperature - FILL_TEMPERATURE_DEGC,
+                           edge_restraint=structure.edge_restraint(design.plate_edge, design.flange_restraint))
     row = part_row(stack, design.n_stacks, ratio, wide_area, voltage, bw, design.temperature,
                    design.wide_gap, fluid, seal, amplifier, design.pressure_rating, overrides, struct)
     c = Candidates.from_rows([row])

@@ -61,7 +61,7 @@ def sizing_input(b: PiezoBrief, c: Combo, material=None, compensator=None) -> Si
         amp_unit_mass=c.amplifier.mass, amp_unit_cost=c.amplifier.cost_usd,
         amp_unit_current=_unit_current(b, c.amplifier), amp_unit_continuous=c.amplifier.continuous_current,
         strokes_per_second=b.strokes_per_second, min_stiffness=b.min_stiffness,
-        stroke_load=b.max_load if b.stroke_from == "neutral" else 0.0,
+        stroke_load=b.max_load if b.stroke_from == "neutral" else 0.0, edge_restraint=b.edge_restraint,
         fixed_cost=(c.n * st.cost_usd + 2 * s.cost_usd + geometry.FIXED_HYDRAULIC_USD
                     + (compensator.cost_usd if compensator else 0.0)),
         fixed_volume=1.5 * c.n * stack_volume,
@@ -161,7 +161,7 @@ def _build(b: PiezoBrief, pending: list[PiezoDesign], spacer) -> list[PiezoDesig
         combo, res, var = d.combo, d.gp, d.variant
         v = min(res.voltage_fraction, combo.voltage_fraction_max)
         struct = structure_row(var.material, res.cap_thickness, res.frame_area, spacer, d.spacer,
-                               var.compensator, b.surface_mass, b.delta_T)
+                               var.compensator, b.surface_mass, b.delta_T, b.edge_restraint)
         rows.append(part_row(combo.stack, combo.n, res.ratio, res.wide_area, v * combo.stack.max_voltage,
                              d.bouc_wen[0], T,
                              max(res.wide_gap, effective_gap(b, combo.stack_stroke * v) * (1 + 1e-9)),
@@ -324,7 +324,7 @@ def nominal_figures(b: PiezoBrief, catalog, combos: list[Combo]) -> list[dict]:
         gap = effective_gap(b, x)
         t, area = force_path.design_structure(nk, nk * x, A, c.stack.length, gap, c.seal.pressure_rating,
                                               material, b.stiffness_ratio)
-        struct = structure_row(material, t, area, spacer, 0.0, None, surface, dT)
+        struct = structure_row(material, t, area, spacer, 0.0, None, surface, dT, b.edge_restraint)
         rows.append(part_row(c.stack, c.n, R, A, c.voltage, BoucWen(x / c.voltage, 0, 0, 0, 0, 1), T, gap,
                              c.fluid, c.seal, c.amplifier, structure=struct))
         ratios.append(R)

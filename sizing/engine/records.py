@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Mapping
 
+from ..physics import structure
 from .loads import load_cases, surface_mass
 
 EMPTY: Mapping = MappingProxyType({})
@@ -281,6 +282,7 @@ class PiezoBrief:
     thermal_compensation: bool      # size compensated variants too
     min_stiffness: float = 0.0      # N/m, output stiffness at rest the requirements ask (0: none)
     stroke_from: str = "loaded_rest"    # where the stroke is counted under the load (engine/holding.py)
+    edge_restraint: float = 0.0     # end cap and base plate edge, k_theta a / D (0 simply supported, inf clamped)
 
     @classmethod
     def of(cls, req) -> "PiezoBrief":
@@ -294,5 +296,6 @@ class PiezoBrief:
                    max_length=env.max_length, max_diameter=env.diameter, max_mass=env.max_mass,
                    surface_mass=surface_mass(L), max_load=max(c["load_N"] for c in load_cases(L)),
                    objectives=tuple(req.objectives.minimize), thermal_compensation=bool(o.thermal_compensation),
-                   min_stiffness=r.min_stiffness or 0.0, stroke_from=r.stroke_from)
+                   min_stiffness=r.min_stiffness or 0.0, stroke_from=r.stroke_from,
+                   edge_restraint=float(structure.edge_restraint(o.plate_edge, o.flange_restraint)))
 

@@ -80,10 +80,17 @@ def static_figures(c: Candidates, rise_time, strokes_per_second=1.0) -> dict[str
     structural = sum(np.asarray(m[k_]["mass"]) for k_ in ("base_plate", "end_cap", "frame", "spacer"))
     out["structure_mass_kg"] = structural
     out["length_m"] = 2 * c.cap_thickness + m["frame"]["length"] + c.free_stroke + geometry.ROD_EXTRA_LENGTH
-    out["outer_diameter_m"] = (out["wide_diameter_m"] * (1 + c.pressure_rating / geometry.DESIGN_STRESS)
-                               + 2 * geometry.MIN_WALL)
+    out["casing_diameter_m"] = (out["wide_diameter_m"] * (1 + c.pressure_rating / geometry.DESIGN_STRESS)
+                                + 2 * geometry.MIN_WALL)
+    out["outer_diameter_m"] = outer_diameter(out["casing_diameter_m"], c.frame_area)
     out["plate_thickness_to_radius"] = structure.thickness_ratio(c.cap_thickness, geometry.radius(c.wide_area))
     return out
+
+
+def outer_diameter(casing_diameter, frame_area):
+    """Outer diameter with the tie-rod frame as a ring of its whole section
+    around the casing: sqrt(D_casing^2 + 4 A_f / pi), m."""
+    return np.sqrt(np.asarray(casing_diameter) ** 2 + 4.0 / np.pi * np.asarray(frame_area))
 
 
 def drive_figures(c: Candidates, rise_time, strokes_per_second) -> dict[str, np.ndarray]:

@@ -91,6 +91,12 @@ class OptionsTable(Strict):
     # "frame three times stiffer than the stacks" (10-18 kg of 6061 for a 9-stack design);
     # at the floor the three members together are as compliant as the stacks (force halves)
     structure_stiffness_ratio: Qty("dimensionless", positive=True) = 3.0
+    # how the end cap and base plate are held at their edge: "simply_supported" (the
+    # conservative edge), "clamped", or "flange", a bolted flange whose rotational
+    # stiffness k_theta is stated as flange_restraint = k_theta a / D (physics/structure.py)
+    plate_edge: Literal["simply_supported", "clamped", "flange"] = "simply_supported"
+    # assumed: 2, a flange halfway between the two edges in edge compliance 1 / (1 + nu + beta)
+    flange_restraint: Qty("dimensionless", positive=True) = 2.0
 
 
 class DutyTable(Strict):

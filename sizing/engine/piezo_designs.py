@@ -234,11 +234,20 @@ def _derived_figures(b: PiezoBrief, d: PiezoDesign, st: dict, ramp: float, frict
     volts_to_stroke = b.stroke * stack.max_voltage / (st["ratio"] * combo.stack_stroke)
     out = {"thermal_drift_m": st["thermal_net_m"],
            "thermal_drift_oil_only_m": st["thermal_drift_per_K_m"] * b.delta_T,
+           "thermal_drift_free_output_m": st["thermal_net_m"] - st["thermal_compensator_m"],
            "required_current_A": c_large * volts_to_stroke / b.stroke_time,
            "speed_m_s": st["free_stroke_m"] / ramp,         # the planned drive ramp, at the amplifier's limit
            "rise_time_s": ramp}
     comp = d.variant.compensator
     if comp is not None and comp.leak_conductance > 0:
+        # behind its restrictor the compensator takes up the thermal volume with the
+        # time constant C_h / G, and only while a held output lets pressure build: it
+        # is credited with what it takes within the warm-up and the hold
+        tau = float(thermal.compensator_time_constant(math.pi / 4 * st["wide_diameter_m"] ** 2, st["force_path_stiffness_N_m"],
+                                                      comp.leak_conductance))
+        share = float(thermal.compensated_share(tau, b.warm_up_time, b.hold_time))
+        out.update(compensator_time_constant_s=tau, compensator_share=share,
+                   thermal_drift_m=st["thermal_net_m"] - st["thermal_compensator_m"] * (1.0 - share))
         # output creep under the steady (largest) load over the held deflection
         out["compensator_creep_m"] = compensator_creep(comp.leak_conductance, friction["at_pressure_Pa"],
                                                        b.hold_time, st["narrow_diameter_m"])
@@ -269,7 +278,7 @@ def _static_margins(b: PiezoBrief, d: PiezoDesign, st: dict) -> dict:
         "amplifier_units": floor_margin(b.max_amplifier_units, st["amplifier_units_needed"]),
         "stack_temperature": temperature_margin(stack.max_temperature, T + st["stack_temperature_rise_K"]),
         "natural_frequency": floor_margin(st["natural_frequency_Hz"], b.natural_frequency),
-        "thermal_drift": ceiling_margin(abs(st["thermal_net_m"]), b.allowed_drift),
+        "thermal_drift": ceiling_margin(abs(st["thermal_drift_m"]), b.allowed_drift),
         "wide_gap": floor_margin(st["wide_gap_m"], st["gap_needed_m"]),
         "packing": floor_margin(st["stacks_that_fit"], combo.n),
     }

@@ -268,6 +268,7 @@ class PiezoBrief:
     natural_frequency: float        # Hz, the least the output may have
     strokes_per_second: float       # 1/s, the duty
     hold_time: float                # s, a deflection held under the steady load
+    warm_up_time: float             # s, heating from the fill temperature to the required one
     allowed_drift: float            # m, the thermal drift allowed
     max_amplifier_units: int
     wide_gap_floor: float           # m, the options' least oil gap (0: none)
@@ -290,7 +291,7 @@ class PiezoBrief:
         return cls(stroke=r.stroke, blocked_force=r.blocked_force, speed=r.speed, temperature=r.max_temperature,
                    delta_T=r.max_temperature - o.drift_reference_temperature, stroke_time=req.stroke_time,
                    natural_frequency=req.natural_frequency, strokes_per_second=req.duty.strokes_per_second,
-                   hold_time=req.duty.hold_time, allowed_drift=o.max_drift_fraction * r.stroke,
+                   hold_time=req.duty.hold_time, warm_up_time=req.duty.warm_up_time, allowed_drift=o.max_drift_fraction * r.stroke,
                    max_amplifier_units=o.max_amplifier_units, wide_gap_floor=o.wide_gap or 0.0,
                    design_margin=o.design_margin, stiffness_ratio=o.structure_stiffness_ratio,
                    max_length=env.max_length, max_diameter=env.diameter, max_mass=env.max_mass,

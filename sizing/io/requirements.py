@@ -108,6 +108,10 @@ class DutyTable(Strict):
     # how long a deflection is held under the steady load: the creep of a
     # leaking compensator over it is a margin. 60 s: a held trim deflection
     hold_time: Qty("time", positive=True) = 60.0
+    # how long the actuator takes to heat from the fill temperature to the required one:
+    # a compensator is credited only with what it takes up within the warm-up and the hold.
+    # assumed: 10 min, a glide body's structure heating through its flight (no figure in the seed)
+    warm_up_time: Qty("time", positive=True) = 600.0
 
 
 class EnvelopeTable(Strict):

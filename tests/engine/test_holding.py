@@ -122,3 +122,31 @@ def test_a_bad_stroke_reference_exits_2_with_one_line(tmp_path):
     code, out, err = run_cli("solve", path, "--out", tmp_path / "out", "--quiet")
     assert code == 2 and "stroke_from" in err and len(err.strip().splitlines()) == 1
     assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.slow
+def test_with_the_screws_stiffness_required_the_verdict_names_it():
+    """The seed's requirements with min_stiffness at the DC screw drive's
+    figure: the piezohydraulic verdict says the stiffness decides (its
+    output, k / R^2, is some 700 times softer), the DC design meets it, and
+    every technology reports its output stiffness and the travel from
+    neutral under the 25 kPa case."""
+    from sizing.engine.solve import solve
+    from sizing.io.catalog import load_catalog
+    req, sha = load_requirements(STUDIES / "seed-requirements.toml")
+    plain = solve(req, sha, load_catalog()).results
+    techs = plain["summary"]["comparison"]["technologies"]
+    by_id = {c["id"]: c for c in plain["candidates"]}
+    dc = by_id[techs["dc_motor"]["best"]]
+    for t in techs.values():
+        c = by_id[t["best"]]
+        assert c["static"]["output_stiffness_N_m"] > 0
+        worst = max(c["simulated"]["cases"], key=lambda x: x["load_N"])
+        assert worst["load_N"] == pytest.approx(1209.675, rel=1e-3)
+        assert worst["travel_from_neutral_m"] == pytest.approx(worst["stroke_m"] - worst["rest_offset_m"], rel=1e-9)
+    k_dc = dc["static"]["output_stiffness_N_m"]
+    stiff = req.model_copy(update={"requirements": req.requirements.model_copy(update={"min_stiffness": k_dc})})
+    out = solve(stiff, sha, load_catalog()).results
+    piezo = out["summary"]["comparison"]["technologies"]["piezohydraulic"]
+    assert not piezo["feasible"] and piezo["binding"] == "stiffness"
+    assert out["summary"]["comparison"]["technologies"]["dc_motor"]["feasible"]

@@ -31,6 +31,8 @@ from ..physics import geometry, plate_fe, structure
 MECHANICAL = ("stacks", "spacer", "base_plate", "frame", "wide_piston")
 HYDRAULIC = ("oil_column", "compensator", "end_cap", "narrow_piston")
 ALUMINIUM_E = 68.9e9          # Pa, 6061-T6 pistons (physics/geometry.py); catalogs/materials.toml al-6061-t6
+ALUMINIUM_NU = 0.33           # catalogs/materials.toml al-6061-t6
+STACK_SPACING_M = 1e-3        # assumed: clearance between neighbouring stacks under the wide piston
 STRESS_SAFETY = 2.0           # allowable stress = yield / 2 (geometry.py's rule)
 FRAME_MARGIN_M = 0.0          # frame spans stacks + wide piston + gap exactly
 
@@ -115,7 +117,7 @@ def members(c) -> dict[str, dict[str, np.ndarray]]:
         "frame": {"stiffness": structure.rod_stiffness(c.mat_E, c.frame_area, L_f),
                   "mass": c.mat_density * c.frame_area * L_f, "cost": c.mat_density * c.frame_area * L_f * unit,
                   "length": L_f, "area": c.frame_area},
-        "wide_piston": {"stiffness": structure.rod_stiffness(ALUMINIUM_E, c.wide_area, t_p), "mass": c.wide_mass,
+        "wide_piston": {"stiffness": wide_piston_stiffness(c, t_p), "mass": c.wide_mass,
                         "cost": zero},
         "oil_column": {"stiffness": c.bulk_modulus * c.wide_area**2 / c.oil_volume,
                        "mass": c.density * c.oil_volume, "cost": zero},
@@ -128,6 +130,16 @@ def members(c) -> dict[str, dict[str, np.ndarray]]:
                           "mass": c.narrow_mass, "cost": zero},
     }
     return out
+
+
+def wide_piston_stiffness(c, thickness) -> np.ndarray:
+    """The wide piston: its compression E A / t in series with the bending
+    of the ring that overhangs the stacks' packing circle
+    (``structure.overhang_volume``, referred to the wide piston: 1/k = V/q / A^2)."""
+    a = np.sqrt(c.wide_area / math.pi)
+    b = structure.packing_diameter(c.n_stacks.astype(int), c.stack_diameter, STACK_SPACING_M) / 2
+    overhang = structure.overhang_volume(a, b, thickness, ALUMINIUM_E, ALUMINIUM_NU) / c.wide_area**2
+    return 1.0 / (1.0 / structure.rod_stiffness(ALUMINIUM_E, c.wide_area, thickness) + overhang)
 
 
 def fe_ratios(thickness_ratio, nu, restraint) -> np.ndarray:

@@ -28,7 +28,7 @@ def ramp_time(c: Candidates, rise_time) -> np.ndarray:
 
 GAP_CLEARANCE_M = 0.5e-3       # assumed: wide gap left over the stack stroke (machining, tilt, oil film)
 GAP_TOLERANCE_M = 0.1e-3       # assumed: manufacturing tolerance on the gap (IT9 over a 100 mm bore is 87 um)
-STACK_SPACING_M = 1e-3         # assumed: clearance between neighbouring stacks under the wide piston
+STACK_SPACING_M = force_path.STACK_SPACING_M
 FILL_TEMPERATURE_DEGC = 20.0   # oil filled and sealed at this temperature (thermal budget reference)
 PISTON_CTE = 23.6e-6           # 1/K, 6061-T6 casing and pistons (catalogs/materials.toml al-6061-t6)
 

@@ -225,3 +225,23 @@ def stacks_that_fit(bore, stack_diameter, spacing=0.0):
     # beyond the table: invert the density bound
     n_beyond = np.floor(HEX_DENSITY * ((ratio - 1.0) / 1.05) ** 2 + 1e-9).astype(int)
     return np.where(ratio >= table[-1], np.maximum(n_beyond, len(table)), n_table)
+
+
+def overhang_volume(a, b, t, E, nu):
+    """Volume a piston plate sweeps per pascal where it overhangs the stacks
+    that carry it, m^3/Pa: stacks packed within radius b push a plate of
+    radius a loaded by the oil over its whole face, so the ring b < r < a
+    bends as a cantilever strip of length L = a - b (Timoshenko: bending
+    x^2 (6 L^2 - 4 L x + x^2) / (24 D) and shear (L x - x^2 / 2) / (k G t)
+    per unit pressure at x from the stacks; the hoop stiffening of the ring
+    is left out, which errs soft). Integrated over 2 pi (b + x) dx:
+    2 pi / (24 D) (6/5 b L^5 + 13/15 L^6) + 2 pi / (k G t) (b L^3 / 3 + 5 L^4 / 24).
+    Inside the packing the stacks' reactions meet the pressure where it
+    acts, and the plate between them is left out."""
+    L = np.maximum(np.asarray(a, float) - np.asarray(b, float), 0.0)
+    b = np.asarray(b, float)
+    D = flexural_rigidity(E, t, nu)
+    kGt = SHEAR_CORRECTION * shear_modulus(E, nu) * np.asarray(t)
+    bending = 2 * np.pi / (24 * D) * (1.2 * b * L**5 + 13.0 / 15.0 * L**6)
+    shear = 2 * np.pi / kGt * (b * L**3 / 3 + 5 * L**4 / 24)
+    return bending + shear

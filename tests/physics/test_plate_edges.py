@@ -106,3 +106,27 @@ def test_evaluate_states_the_edge_and_the_finite_element_check(tmp_path):
     ratio = plate_fe.model_ratio(0.5, 0.29, "clamped")
     assert cap["fe_stiffness_ratio"] == pytest.approx(ratio, rel=1e-9) and abs(ratio - 1) < 0.1
     assert cap["stiffness_N_m"] == pytest.approx(structure.plate_stiffness(0.17, 0.085, 205e9, 0.29, "clamped"), rel=1e-9)
+
+
+def test_wide_piston_overhang_by_quadrature():
+    """The ring of the wide piston beyond the stacks' packing circle bends
+    as a Timoshenko cantilever strip: its tip deflection per unit pressure
+    is L^4 / (8 D) + L^2 / (2 k G t) (Roark Table 8.1 case 2a and the shear
+    of a uniformly loaded cantilever), and the swept volume is the strip's
+    deflection integrated over 2 pi r dr."""
+    a, b, t, nu = 0.252, 0.1366, 0.079, 0.33
+    E_al = 68.9e9
+    D = E_al * t**3 / (12 * (1 - nu**2))
+    kGt = 5 / 6 * E_al / (2 * (1 + nu)) * t
+    L = a - b
+    w = lambda x: x**2 * (6 * L**2 - 4 * L * x + x**2) / (24 * D) + (L * x - x**2 / 2) / kGt  # noqa: E731
+    assert w(L) == pytest.approx(L**4 / (8 * D) + L**2 / (2 * kGt), rel=1e-12)
+    x = np.linspace(0.0, L, 200001)
+    f = w(x) * 2 * np.pi * (b + x)
+    volume = np.sum((f[1:] + f[:-1]) / 2 * np.diff(x))
+    assert structure.overhang_volume(a, b, t, E_al, nu) == pytest.approx(volume, rel=1e-8)
+    assert structure.overhang_volume(0.1, 0.12, t, E_al, nu) == 0.0       # stacks reach the rim: no overhang
+    # the old best design's piston (504 mm bore, 17 stacks packed within 273 mm, 79 mm of 6061):
+    # 1/k = V / A^2 gives 4.7e10 N/m, some 7 % of a 3.5e9 N/m force path's compliance
+    A = math.pi * a**2
+    assert A**2 / volume == pytest.approx(4.7e10, rel=0.02)

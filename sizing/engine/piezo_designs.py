@@ -182,7 +182,8 @@ def _build(b: PiezoBrief, pending: list[PiezoDesign], spacer) -> list[PiezoDesig
                     "at_pressure_Pa": float(p_load[i])}
         figures = {k: float(np.asarray(v)[i]) for k, v in static.items()}
         figures.update(_derived_figures(b, d, figures, float(ramp[i]), friction))
-        figures.update(amplifier_units_needed=float(drive["needed"][i]), amplifier_units_max=b.max_amplifier_units)
+        figures.update(amplifier_units_needed=float(drive["needed"][i]), amplifier_units_max=b.max_amplifier_units,
+                       amplifier_units_at_cap=float(drive["needed"][i] >= b.max_amplifier_units))
         mets = {k: float(np.asarray(v)[i]) for k, v in met.items()}
         out.append(replace(
             d, cand=c.take([i]), ramp=float(ramp[i]), amplifier_units=float(c.amp_units[i]), static=frozen(figures), metrics=frozen(mets),

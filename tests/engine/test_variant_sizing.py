@@ -122,3 +122,16 @@ def test_every_material_and_compensator_gets_its_own_geometry(sized_seed):
     al, steel = bore[("al-6061-t6", None)], bore[("steel-4340", None)]
     assert steel < 0.7 * al
     assert steel == pytest.approx(0.275, rel=0.1)
+
+
+def test_a_design_held_at_the_units_cap_says_so(sized_seed):
+    """Built with the options' cap below what the speed needs, a design
+    carries the cap, ramps slower, misses the speed and says so."""
+    brief, catalog, combo, sized = sized_seed
+    capped = dataclasses.replace(brief, max_amplifier_units=6)
+    d = next(x for x in piezo_designs.designs(capped, catalog, sized[:1]) if x.built)
+    free = piezo_designs.designs(brief, catalog, sized[:1])[0]
+    assert free.static["amplifier_units_at_cap"] == 0.0 and free.static["amplifier_units"] < 16
+    assert d.static["amplifier_units"] == 6 and d.static["amplifier_units_at_cap"] == 1.0
+    assert d.static_margins["amplifier_units"] < 0 and d.static_margins["speed"] < 0
+    assert d.amplifier_units == 6 and d.ramp_time > free.ramp_time

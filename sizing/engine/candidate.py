@@ -144,7 +144,6 @@ def _design_variables(req, d: PiezoDesign) -> dict:
            "voltage": d.cand.voltage[0], "wide_diameter": st["wide_diameter_m"],
            "narrow_diameter": st["narrow_diameter_m"], "fluid": combo.fluid.id, "seal": combo.seal.id,
            "amplifier": combo.amplifier.id, "wide_gap": st["wide_gap_m"], "rise_time": d.ramp,
-           "amplifier_units": d.amplifier_units, "ramp_time": d.ramp_time,
            "temperature": req.requirements.max_temperature, "material": var.material.id,
            "end_cap_thickness": res.cap_thickness, "frame_area": res.frame_area,
            "compensator": comp.id if comp else None, "strokes_per_second": req.duty.strokes_per_second}

@@ -114,6 +114,7 @@ class SizingInput:
     amp_unit_mass: float = 0.0          # kg, one amplifier unit (the drive's mass scales with the units)
     amp_unit_cost: float = 0.0          # USD, one unit
     amp_unit_current: float = math.inf  # A, what one unit holds over the ramp (inf: max_current is one unit)
+    column_compliance: float = 0.0      # m/N, a passive spacer in the stack column (its length is in stack_length)
     amp_unit_continuous: float = math.inf   # A, one unit's continuous rating (inf: amp_unit_current)
     strokes_per_second: float = 0.0     # 1/s, the duty the rms and mean currents are taken over
     min_stiffness: float = 0.0          # N/m, output stiffness at rest asked (0: none)
@@ -165,7 +166,7 @@ class GPSizer:
         names = ["nk", "x0", "V0", "vmax", "F", "S", "beta", "p", "w2", "cur", "m0", "c0", "vol0",
                  "rho", "coil", "pw", "E", "pc", "ps", "sig", "Ls", "knk", "rhom", "cm", "Apack", "cacc",
                  "f0", "fc", "msurf", "sh", "gmin", "gfloor", "tv", "Lmax", "Dmax", "Mmax", "wall", "uam", "uac",
-                 "uramp", "urms", "umean", "kmin", "FL"]
+                 "uramp", "urms", "umean", "kmin", "FL", "ccol"]
         self.par = {k: cp.Parameter(pos=True, name=k) for k in names}
         terms = self._constraint_terms()
         bounds = ([self.v <= self.par["vmax"], MIN_RATIO / self.R <= 1] + self._structure_bounds() + self._gap_bounds()
@@ -244,7 +245,7 @@ class GPSizer:
         P, A, t = self.par, self.A, self.t
         x, _, _ = self._geometry()
         t_p = geometry.plate_thickness(A, P["p"])
-        return (1 / P["nk"] + 2 * P["pc"] * A / t**3 + 2 * P["sh"] / t + self._frame_length() / (P["E"] * self.Af)
+        return (1 / P["nk"] + P["ccol"] + 2 * P["pc"] * A / t**3 + 2 * P["sh"] / t + self._frame_length() / (P["E"] * self.Af)
                 + t_p / (ALUMINIUM_E * A) + (self.g + x) / (P["beta"] * A) + P["cacc"] / A**2)
 
     def _seal_force(self):
@@ -330,6 +331,7 @@ class GPSizer:
             "F": s.force * (1 + s.margin), "S": s.stroke * (1 + s.margin), "beta": s.bulk_modulus,
             "p": s.pressure_rating, "w2": (2 * math.pi * s.natural_frequency) ** 2,
             "cur": s.max_current / unit,        # the most units allowed
+            "ccol": max(s.column_compliance, 1e-30),
             "kmin": max(s.min_stiffness, 1e-30), "FL": max(s.stroke_load * (1 + s.margin), 1e-30),
             "uramp": charge * speed / (s.stack_stroke * unit),
             "urms": max(charge * math.sqrt(2 * f * speed / s.stack_stroke) / continuous, 1e-12),
@@ -385,7 +387,9 @@ class GPSizer:
         return SizingResult(False, *point, slack=slack, binding=binding, status=status)
 
     def _point(self) -> tuple:
-        return tuple(float(v.value) for v in (self.R, self.A, self.v, self.t, self.Af, self.g, self.U))
+        point = [float(v.value) for v in (self.R, self.A, self.v, self.t, self.Af, self.g, self.U)]
+        point[2] = min(point[2], float(self.par["vmax"].value))   # v <= v_max, within the solver's tolerance
+        return tuple(point)
 
     def _run(self, problem: cp.Problem) -> str:
         return self._runs[id(problem)].run()

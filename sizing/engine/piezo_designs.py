@@ -40,11 +40,18 @@ def effective_gap(b: PiezoBrief, stack_free_stroke: float) -> float:
     return max(b.wide_gap_floor, stack_free_stroke + GAP_CLEARANCE_M + GAP_TOLERANCE_M)
 
 
-def sizing_input(b: PiezoBrief, c: Combo, material=None, compensator=None) -> SizingInput:
+def sizing_input(b: PiezoBrief, c: Combo, material=None, compensator=None, spacer=None,
+                 spacer_length=0.0) -> SizingInput:
+    """The program's input for one combination and variant; a passive
+    spacer of ``spacer_length`` lengthens the stack column (and the frame)
+    and adds its compliance, mass and cost."""
     T = b.temperature
     f, s, st = c.fluid, c.seal, c.stack
     material = material if material is not None else force_path.default_material({})
     stack_volume = st.length * st.diameter**2 * (1.0 if st.section == "square" else math.pi / 4)
+    footprint = c.n * math.pi * st.diameter**2 / 4
+    sp_mass = spacer.density * footprint * spacer_length if spacer is not None else 0.0
+    sp_cost = sp_mass * (spacer.cost_usd + geometry.MACHINING_USD_PER_KG) if spacer is not None else 0.0
     accumulator = (1.0 / compensator.volume_stiffness
                    if compensator is not None and compensator.kind == "accumulator" else 0.0)
     return SizingInput(
@@ -57,19 +64,20 @@ def sizing_input(b: PiezoBrief, c: Combo, material=None, compensator=None) -> Si
         natural_frequency=b.natural_frequency, stroke_time=b.stroke_time,
         n_capacitance=c.n * st.capacitance, max_current=b.max_amplifier_units * _unit_current(b, c.amplifier),
         margin=b.design_margin,
-        fixed_mass=c.n * st.mass + (compensator.mass if compensator else 0.0),
+        fixed_mass=c.n * st.mass + (compensator.mass if compensator else 0.0) + sp_mass,
         amp_unit_mass=c.amplifier.mass, amp_unit_cost=c.amplifier.cost_usd,
         amp_unit_current=_unit_current(b, c.amplifier), amp_unit_continuous=c.amplifier.continuous_current,
         strokes_per_second=b.strokes_per_second, min_stiffness=b.min_stiffness,
         stroke_load=b.max_load if b.stroke_from == "neutral" else 0.0, edge_restraint=b.edge_restraint,
         fixed_cost=(c.n * st.cost_usd + 2 * s.cost_usd + geometry.FIXED_HYDRAULIC_USD
-                    + (compensator.cost_usd if compensator else 0.0)),
+                    + (compensator.cost_usd if compensator else 0.0) + sp_cost),
         fixed_volume=1.5 * c.n * stack_volume,
         oil_density=float(fluid_props.density_at(f.density, f.thermal_expansion, T)),
         oil_cost=f.cost_usd * 1000.0,
         youngs_modulus=material.youngs_modulus, poisson=material.poisson, material_density=material.density,
         material_unit_cost=material.cost_usd + geometry.MACHINING_USD_PER_KG,
-        allowable_stress=material.yield_strength / force_path.STRESS_SAFETY, stack_length=st.length,
+        allowable_stress=material.yield_strength / force_path.STRESS_SAFETY, stack_length=st.length + spacer_length,
+        column_compliance=(spacer_length / (spacer.youngs_modulus * footprint) if spacer is not None else 0.0),
         stiffness_ratio=b.stiffness_ratio,
         packing_area=math.pi / 4 * float(structure.packing_diameter(c.n, st.diameter, STACK_SPACING_M)) ** 2,
         accumulator_compliance=accumulator, seal_f0=s.friction_per_length, seal_cp=s.friction_pressure_coefficient,
@@ -99,7 +107,7 @@ def size(b: PiezoBrief, catalog, combos, progress=None):
     bore, plates, frame, gap, ratio, voltage and drive (an open
     accumulator adds its compliance to the force path; every compensator
     its mass and cost to the objective)."""
-    sizer = GPSizer(list(b.objectives))
+    sizer = _sizer(tuple(b.objectives))
     out = []
     vs = variants(b, catalog)
     for i, c in enumerate(combos):
@@ -132,6 +140,35 @@ def designs(b: PiezoBrief, catalog, sized) -> list[PiezoDesign]:
             var = Variant(d.variant.material, None, True)
             passive.append(replace(d, variant=var, spacer=length, id=d.combo.key + var.suffix()))
     return as_built + _build(b, passive, spacer)
+
+
+@lru_cache(maxsize=8)
+def _sizer(objectives: tuple) -> GPSizer:
+    """One program per objective set, compiled once per process."""
+    return GPSizer(list(objectives))
+
+
+def resize_passive(b: PiezoBrief, catalog, built: list[PiezoDesign]) -> list[PiezoDesign]:
+    """The passive designs of ``built`` (``designs``) sized on their own:
+    the program re-sized with the spacer their as-built parent needs in
+    the stack column (longer frame, the spacer's compliance, mass and
+    cost), then built again the way ``designs`` derives a passive design
+    (its spacer from the re-sized geometry's own budget), so re-verifying
+    its sizing reproduces it. Other designs are returned as they are."""
+    spacer = force_path.spacer_material(catalog.materials)
+    sizer = _sizer(tuple(b.objectives))
+    idx = [i for i, d in enumerate(built) if d.variant.passive and d.built]
+    triples = []
+    for i in idx:
+        d = built[i]
+        res = sizer.solve(sizing_input(b, d.combo, d.variant.material, None, spacer, d.spacer))
+        triples.append((d.combo, d.variant.as_built(), res if math.isfinite(res.wide_area) else d.gp))
+    again = {d.origin: d for d in designs(b, catalog, triples) if d.variant.passive}
+    out = list(built)
+    for j, i in enumerate(idx):
+        if j in again:
+            out[i] = replace(again[j], origin=built[i].origin)
+    return out
 
 
 def _spacer_length(b: PiezoBrief, d: PiezoDesign, spacer) -> float:

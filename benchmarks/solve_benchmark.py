@@ -5,12 +5,13 @@ and of the piezo pump.
 
     python benchmarks/solve_benchmark.py [--repeat 3] [--requirements studies/seed-requirements.toml]
 
-The whole seed solve (force path, every structure material and compensator,
-DC from parts, the piezo pump) stays under 15 s warm on this machine, the
-pump's share (screen, cycle-resolved simulation with reed and line
-dynamics, results records) under 3 s; this prints the best warm time, the
-DC part's and the pump's time and the load average (the 2 cores are
-shared), and exits 1 when the warm solve or the pump is slower.
+The whole seed solve (force path, a geometric program for every structure
+material and compensator of every combination, DC from parts, the piezo
+pump) stays under 20 s warm on this machine, the pump's share (screen,
+cycle-resolved simulation with reed and line dynamics, results records)
+under 3 s; this prints the best warm time, the DC part's and the pump's
+time and the load average (the 2 cores are shared), and exits 1 when the
+warm solve or the pump is slower.
 """
 from __future__ import annotations
 
@@ -30,7 +31,7 @@ from sizing.io.catalog import load_catalog
 from sizing.io.requirements import load_requirements
 from sizing.studies import compliance
 
-LIMIT_S = 15.0
+LIMIT_S = 20.0
 PUMP_LIMIT_S = 3.0
 ROOT = Path(__file__).resolve().parents[1]
 

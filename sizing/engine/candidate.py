@@ -9,8 +9,8 @@ from __future__ import annotations
 import math
 
 from ..physics import fluid as fluid_props
-from ..physics import stack as stack_phys, thermal
-from . import piezo_designs
+from ..physics import stack as stack_phys, structure, thermal
+from . import holding, piezo_designs
 from .rank import ceiling_margin, floor_margin
 from .records import PiezoDesign, Simulation, VerifiedDesign
 from .search import Combo
@@ -30,12 +30,14 @@ def temperatures(combo: Combo) -> dict:
     return {k: {"rated_degC": a, "required_degC": b} for k, (a, b) in combo.temperatures.items()}
 
 
-def sim_margins(req, sim: Simulation) -> tuple[dict, dict]:
-    """Margins and the contract's ``simulated`` figures from the cases."""
+def sim_margins(req, sim: Simulation, stiffness: float = math.inf) -> tuple[dict, dict]:
+    """Margins and the contract's ``simulated`` figures from the cases, each
+    with its rest offset and travel from neutral at the output ``stiffness``
+    (engine/holding.py)."""
     r = req.requirements
     if not sim.success:
         return {"simulation": -math.inf}, {"failed": True, "message": sim.message}
-    cases = [dict(c) for c in sim.cases]
+    cases = holding.held_cases(sim.cases, stiffness)
     worst = max(cases, key=lambda c: c["load_N"])
     figures = {"stroke_m": worst["stroke_m"], "time_to_stroke_s": worst["time_to_stroke_s"],
                "speed_m_s": min(c["speed_m_s"] for c in cases), "overshoot": worst["overshoot"],
@@ -43,6 +45,7 @@ def sim_margins(req, sim: Simulation) -> tuple[dict, dict]:
     margins = {"stroke": floor_margin(min(c["stroke_m"] for c in cases), r.stroke),
                "speed": floor_margin(min(c["speed_m_s"] for c in cases), r.speed),
                "overshoot": ceiling_margin(max(c["overshoot"] for c in cases), req.options.max_overshoot)}
+    margins.update(holding.margins(req, stiffness, cases))
     return margins, figures
 
 
@@ -106,7 +109,7 @@ def design_candidate(req, v: VerifiedDesign) -> dict:
     margins["work"] = combo.margins["work"]
     simulated = {}
     if v.simulation is not None:
-        sim_m, simulated = sim_margins(req, v.simulation)
+        sim_m, simulated = sim_margins(req, v.simulation, d.static["output_stiffness_N_m"])
         margins.update(sim_m)
     stage = "simulated" if simulated else ("sized" if res.success else "gp_infeasible")
     st = dict(d.static)
@@ -147,6 +150,11 @@ def _design_variables(req, d: PiezoDesign) -> dict:
            "amplifier_units": _count(st["amplifier_units"]), "ramp_time": d.ramp}
     if d.spacer > 0:
         out["spacer_length"] = d.spacer
+    restraint = float(d.cand.edge_restraint[0])
+    if restraint != 0:
+        out["plate_edge"] = structure.edge_name(restraint)
+        if out["plate_edge"] == "flange":
+            out["flange_restraint"] = restraint
     return out
 
 

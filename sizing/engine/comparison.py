@@ -95,6 +95,9 @@ def technology_comparison(req, candidates: list[dict], catalog=None) -> dict:
                      "metrics": {k: best["metrics"].get(k) for k in keys},
                      "n_feasible": sum(1 for c in members if c["feasible"])}
         out[tech]["flip"] = flip(req, catalog, members)
+        held = _holding(best)
+        if held is not None:
+            out[tech]["holding"] = held
         rests = best.get("rests_on_assumed") or []
         out[tech]["rests_on_assumed"] = rests
         out[tech]["deciding_assumed"] = [f"{r['part']}.{r['field']}" for r in rests if r.get("decides")]
@@ -120,6 +123,10 @@ def technology_comparison(req, candidates: list[dict], catalog=None) -> dict:
     for tech, label in TECHNOLOGIES:
         if tech in out:
             lines.append(f"{label}: " + _rests_text(out[tech]) + "; " + _flip_text(out[tech]["flip"]))
+    held = [(LABELS[tech].removesuffix(" actuator"), out[tech]["holding"]) for tech, _ in TECHNOLOGIES
+            if tech in out and "holding" in out[tech]]
+    if held:
+        lines.append(_holding_text(held))
     if "piezo_pump" in out:
         out["piezo_pump"].update(pump_power(req, candidates))
         lines.append(_pump_power_text(out["piezo_pump"]))
@@ -128,6 +135,30 @@ def technology_comparison(req, candidates: list[dict], catalog=None) -> dict:
             lines.append(_ratio_line(out[first], out[second], keys, LABELS[first].removesuffix(" actuator")))
     return {"technologies": out, "text": ". ".join(lines) + ("." if lines else ""),
             "recommendation": _recommendation(out, keys)}
+
+
+def _holding(best: dict) -> dict | None:
+    """How the best design holds the surface under its largest load case:
+    its output stiffness at rest, where the load leaves it at zero drive and
+    the travel it reaches from neutral (engine/holding.py)."""
+    k = (best.get("static") or {}).get("output_stiffness_N_m")
+    cases = (best.get("simulated") or {}).get("cases") or []
+    if k is None or not cases:
+        return None
+    worst = max(cases, key=lambda c: c["load_N"])
+    return {"output_stiffness_N_m": k, "load_N": worst["load_N"], "rest_offset_m": worst.get("rest_offset_m"),
+            "travel_from_neutral_m": worst.get("travel_from_neutral_m")}
+
+
+def _holding_text(held: list) -> str:
+    parts = []
+    for label, h in held:
+        offset, travel = h["rest_offset_m"], h["travel_from_neutral_m"]
+        parts.append(f"{label} {h['output_stiffness_N_m']:.3g} N/m"
+                     + (f", pushed back {offset * 1e3:.3g} mm" if offset is not None else "")
+                     + (f", {travel * 1e3:.3g} mm from neutral" if travel is not None else ""))
+    load = max(h["load_N"] for _, h in held)
+    return f"holding the surface under the largest load ({load:.0f} N), output stiffness at rest: " + "; ".join(parts)
 
 
 def pump_power(req, candidates) -> dict:

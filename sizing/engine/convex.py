@@ -8,15 +8,31 @@ narrow bore over the stroke) and the fluid spring beta A_w / (g + x) in
 series with the stacks (docs/models.md), every static requirement is a
 posynomial <= 1 (m: the design margin):
 
-    stroke             S (1+m) / (R x)                                   <= 1
+    stroke             (S + F_L R^2 C) (1+m) / (R x)                     <= 1
     blocked force      F (1+m) R (1/(n k_s) + (g + x)/(beta A_w)) / x    <= 1
     pressure           n k_s x / (A_w p_rating)                          <= 1
-    drive current      n C_L V0 S (1+m) / (R x0 t_S I_amp)                <= 1
+    drive              U / U_max                                         <= 1
     natural frequency  w^2 (m_w + R^2 m_n) (1/(n k_s) + (g + x)/(beta A_w)) <= 1
     voltage            v / v_max                                         <= 1
+    stiffness          k_min R^2 C                                       <= 1
 
-(t_S = stroke / speed, i.e. the charge n C_L V_S that reaches the stroke
-must flow within t_S; C_L the large-signal capacitance; w = 2 pi f_min.)
+(C the force path's compliance at the wide piston, so R^2 C is the output's
+at rest; F_L the largest load when the stroke is counted from neutral, else
+0; k_min the requirements' ``min_stiffness``, else 0.)
+
+(C_L the large-signal capacitance; w = 2 pi f_min.) The drive is sized with
+the rest: the voltage ramp reaches the free stroke R x0 v at the required
+speed u, t_r = R x0 v / u, and the amplifier units U (a continuous count,
+rounded up when the design is built) carry its current at a unit's usable
+ramp current I_u (the peak within the rated pulse, else the continuous
+rating I_c), the duty's rms and its mean (physics/amplifier.py):
+
+    ramp   n C_L V0 u / (R x0 I_u)                 <= U
+    rms    n C_L V0 sqrt(2 f u / x0) v^0.5 R^-0.5 / I_c <= U
+    mean   2 n C_L V0 f v / I_c                     <= U
+
+U_max is the options' ``max_amplifier_units``; the units' mass and cost
+are in the objective.
 The pressure bound uses the stack force, which the compliant blocked
 pressure never exceeds, so it is conservative. The objective is the product
 of the requested objectives (mass, cost, volume, power), each a posynomial
@@ -34,11 +50,12 @@ import warnings
 from dataclasses import dataclass, field
 
 import cvxpy as cp
+import numpy as np
 
 from ..physics import geometry, structure
 from ..physics.stack import LARGE_SIGNAL_CAPACITANCE_FACTOR
 
-CONSTRAINTS = ("stroke", "blocked_force", "pressure", "drive_current", "natural_frequency",
+CONSTRAINTS = ("stroke", "blocked_force", "pressure", "drive_current", "natural_frequency", "stiffness",
                "structure_out_of_range", "envelope_length", "envelope_diameter", "envelope_mass")
 # what a binding constraint rules a design out as (never ranked): the rest are missed requirements
 RULED_OUT_BY = {"structure_out_of_range": "structure_out_of_range", "envelope_length": "envelope",
@@ -96,7 +113,13 @@ class SizingInput:
     max_mass: float = DEFAULT_MAX_MASS  # kg, envelope
     amp_unit_mass: float = 0.0          # kg, one amplifier unit (the drive's mass scales with the units)
     amp_unit_cost: float = 0.0          # USD, one unit
-    amp_unit_current: float = math.inf  # A, what one unit holds over the planned ramp
+    amp_unit_current: float = math.inf  # A, what one unit holds over the ramp (inf: max_current is one unit)
+    column_compliance: float = 0.0      # m/N, a passive spacer in the stack column (its length is in stack_length)
+    amp_unit_continuous: float = math.inf   # A, one unit's continuous rating (inf: amp_unit_current)
+    strokes_per_second: float = 0.0     # 1/s, the duty the rms and mean currents are taken over
+    min_stiffness: float = 0.0          # N/m, output stiffness at rest asked (0: none)
+    stroke_load: float = 0.0            # N, the load the stroke is counted from neutral under (0: from the loaded rest)
+    edge_restraint: float = 0.0         # end cap and base plate edge, k_theta a / D (0 simply supported, inf clamped)
 
 
 @dataclass
@@ -108,6 +131,7 @@ class SizingResult:
     cap_thickness: float = math.nan
     frame_area: float = math.nan
     wide_gap: float = math.nan
+    amplifier_units: float = math.nan   # the continuous count the program sized (built designs round it up)
     slack: dict = field(default_factory=dict)     # requirement -> phase-1 slack (1: met)
     binding: list = field(default_factory=list)   # requirements that cannot be met, worst first
     status: str = ""
@@ -138,16 +162,19 @@ class GPSizer:
         self.t = cp.Variable(pos=True, name="t_cap")
         self.Af = cp.Variable(pos=True, name="A_frame")
         self.g = cp.Variable(pos=True, name="gap")
+        self.U = cp.Variable(pos=True, name="amplifier_units")
         # epigraph variables: keep the posynomials short (one cone per term)
         self.C = cp.Variable(pos=True, name="compliance")
         self.Fs = cp.Variable(pos=True, name="force_with_seals")
         self.M = cp.Variable(pos=True, name="reflected_mass")
-        names = ["nk", "x0", "V0", "vmax", "F", "S", "beta", "g", "p", "w2", "cur", "m0", "c0", "vol0",
+        names = ["nk", "x0", "V0", "vmax", "F", "S", "beta", "p", "w2", "cur", "m0", "c0", "vol0",
                  "rho", "coil", "pw", "E", "pc", "ps", "sig", "Ls", "knk", "rhom", "cm", "Apack", "cacc",
-                 "f0", "fc", "msurf", "sh", "gmin", "gfloor", "tv", "Lmax", "Dmax", "Mmax", "wall", "uam", "uac"]
+                 "f0", "fc", "msurf", "sh", "gmin", "gfloor", "tv", "Lmax", "Dmax", "Mmax", "wall", "uam", "uac",
+                 "uramp", "urms", "umean", "kmin", "FL", "ccol"]
         self.par = {k: cp.Parameter(pos=True, name=k) for k in names}
         terms = self._constraint_terms()
         bounds = ([self.v <= self.par["vmax"], MIN_RATIO / self.R <= 1] + self._structure_bounds() + self._gap_bounds()
+                  + self._drive_bounds()
                   + [self._compliance() / self.C <= 1, (self.par["F"] + self._seal_force()) / self.Fs <= 1,
                      self._reflected() / self.M <= 1])
         self.problem = cp.Problem(cp.Minimize(self._objective()), [t <= 1 for t in terms.values()] + bounds)
@@ -163,6 +190,9 @@ class GPSizer:
         relaxed = [terms[k] / self.allowed[k] <= 1 for k in CONSTRAINTS]
         self.relaxed = cp.Problem(cp.Minimize(self._objective()), relaxed + bounds)
         assert self.problem.is_dgp(dpp=True) and self.phase1.is_dgp(dpp=True) and self.relaxed.is_dgp(dpp=True)
+        point = [self.R, self.A, self.v, self.t, self.Af, self.g, self.U]
+        self._runs = {id(p): _Resolver(p, point + extra) for p, extra in
+                      ((self.problem, []), (self.phase1, list(self.slack.values())), (self.relaxed, []))}
 
     # expressions ------------------------------------------------------
     def _geometry(self):
@@ -183,16 +213,24 @@ class GPSizer:
         x, _, _ = self._geometry()
         return [(P["gmin"] + x) / self.g <= 1, P["gfloor"] / self.g <= 1]
 
+    def _drive_bounds(self) -> list:
+        """The units carry the ramp at the required speed, the duty's rms and its mean."""
+        P, R, v, U = self.par, self.R, self.v, self.U
+        return [P["uramp"] / (R * U) <= 1, P["urms"] * v**0.5 * R**-0.5 / U <= 1, P["umean"] * v / U <= 1]
+
     def _length(self):
         """Overall length: base plate, frame (stacks, wide piston, gap), end
         cap, narrow bore over the output stroke and the rod's seal land."""
         _, _, stroke = self._geometry()
         return 2 * self.t + self._frame_length() + stroke + geometry.ROD_EXTRA_LENGTH
 
-    def _outer_diameter(self):
-        """Outer diameter of the wide cylinder: bore plus two thin walls."""
+    def _outer_diameter_squared(self):
+        """Outer diameter squared: the wide cylinder (bore plus two thin
+        walls) with the tie-rod frame's section as a ring around it,
+        D^2 = D_casing^2 + 4 A_f / pi (``verify.outer_diameter``)."""
         P = self.par
-        return P["wall"] * self.A ** 0.5 + 2 * geometry.MIN_WALL
+        casing = P["wall"] * self.A ** 0.5 + 2 * geometry.MIN_WALL
+        return casing**2 + 4 / math.pi * self.Af
 
     def _structure_bounds(self) -> list:
         """Caps and frame: within the allowable stress at the stack force and
@@ -211,7 +249,7 @@ class GPSizer:
         P, A, t = self.par, self.A, self.t
         x, _, _ = self._geometry()
         t_p = geometry.plate_thickness(A, P["p"])
-        return (1 / P["nk"] + 2 * P["pc"] * A / t**3 + 2 * P["sh"] / t + self._frame_length() / (P["E"] * self.Af)
+        return (1 / P["nk"] + P["ccol"] + 2 * P["pc"] * A / t**3 + 2 * P["sh"] / t + self._frame_length() / (P["E"] * self.Af)
                 + t_p / (ALUMINIUM_E * A) + (self.g + x) / (P["beta"] * A) + P["cacc"] / A**2)
 
     def _seal_force(self):
@@ -235,14 +273,16 @@ class GPSizer:
         x, narrow, stroke = self._geometry()
         compliance, reflected = self.C, self.M
         return {
-            "stroke": P["S"] / (R * x),
+            # from neutral the load's push-back F_L / k_out = F_L R^2 C is lost
+            "stroke": (P["S"] + P["FL"] * R**2 * compliance) / (R * x),
             "blocked_force": self.Fs * R * compliance / x,
             "pressure": P["nk"] * x / (A * P["p"]),
-            "drive_current": P["cur"] / R,
+            "drive_current": self.U / P["cur"],
             "natural_frequency": P["w2"] * reflected * compliance,
+            "stiffness": P["kmin"] * R**2 * compliance,          # k_out = 1 / (R^2 C)
             "structure_out_of_range": P["tv"] * self.t * A ** -0.5,
             "envelope_length": self._length() / P["Lmax"],
-            "envelope_diameter": self._outer_diameter() / P["Dmax"],
+            "envelope_diameter": self._outer_diameter_squared() / P["Dmax"] ** 2,
             "envelope_mass": self._mass() / P["Mmax"],
         }
 
@@ -262,11 +302,8 @@ class GPSizer:
         return self.par["m0"] + metal + self.par["rho"] * oil + structure + self.par["uam"] * self._units()
 
     def _units(self):
-        """Amplifier units the planned ramp needs, as a continuous count
-        (physics/amplifier.py): the ramp reaches the stroke in half the
-        stroke time, t_r = t_S R x0 v / (2 S), so i_r = n C_L v V0 / t_r =
-        2 n C_L V0 S / (t_S R x0): units = k / R (``uam`` = k x unit mass)."""
-        return 1 / self.R
+        """Amplifier units, a continuous count (``_drive_bounds``)."""
+        return self.U
 
     def _objective(self):
         P, R, A, v = self.par, self.R, self.A, self.v
@@ -288,18 +325,27 @@ class GPSizer:
     # solving -----------------------------------------------------------
     def set(self, s: SizingInput) -> None:
         c_large = s.n_capacitance * LARGE_SIGNAL_CAPACITANCE_FACTOR
-        units_per_R = 2 * c_large * s.rated_voltage * s.stroke / (s.stroke_time * s.stack_stroke * s.amp_unit_current)
+        unit = s.amp_unit_current if math.isfinite(s.amp_unit_current) else s.max_current
+        continuous = s.amp_unit_continuous if math.isfinite(s.amp_unit_continuous) else unit
+        speed = s.stroke / s.stroke_time
+        charge = c_large * s.rated_voltage      # C at the full rated voltage
+        f = s.strokes_per_second
         values = {
             "nk": s.n_stiffness, "x0": s.stack_stroke, "V0": s.rated_voltage, "vmax": s.max_fraction,
             "F": s.force * (1 + s.margin), "S": s.stroke * (1 + s.margin), "beta": s.bulk_modulus,
-            "g": s.wide_gap, "p": s.pressure_rating, "w2": (2 * math.pi * s.natural_frequency) ** 2,
-            "cur": c_large * s.rated_voltage * s.stroke * (1 + s.margin) / (s.stack_stroke * s.stroke_time * s.max_current),
+            "p": s.pressure_rating, "w2": (2 * math.pi * s.natural_frequency) ** 2,
+            "cur": s.max_current / unit,        # the most units allowed
+            "ccol": max(s.column_compliance, 1e-30),
+            "kmin": max(s.min_stiffness, 1e-30), "FL": max(s.stroke_load * (1 + s.margin), 1e-30),
+            "uramp": charge * speed / (s.stack_stroke * unit),
+            "urms": max(charge * math.sqrt(2 * f * speed / s.stack_stroke) / continuous, 1e-12),
+            "umean": max(2 * charge * f / continuous, 1e-12),
             "m0": max(s.fixed_mass, 1e-9), "c0": max(s.fixed_cost, 1e-9), "vol0": max(s.fixed_volume, 1e-12),
             "rho": s.oil_density, "coil": max(s.oil_cost, 1e-12),
-            # power = V * i at the drive ramp that reaches the stroke in half of t_S
-            "pw": 2 * c_large * s.rated_voltage**2 * s.stroke / (s.stack_stroke * s.stroke_time),
+            # power = V * i over the ramp that reaches the free stroke at the required speed
+            "pw": c_large * s.rated_voltage**2 * speed / s.stack_stroke,
             "E": s.youngs_modulus,
-            "pc": float(structure.plate_compliance_factor(s.poisson)) * 12 * (1 - s.poisson**2) / (math.pi * s.youngs_modulus),
+            "pc": float(structure.plate_compliance_factor(s.poisson, "flange", s.edge_restraint)) * 12 * (1 - s.poisson**2) / (math.pi * s.youngs_modulus),
             "ps": 3 * (3 + s.poisson) * s.n_stiffness * s.stack_stroke / (8 * math.pi * s.allowable_stress),
             "sig": s.allowable_stress, "Ls": s.stack_length, "knk": s.stiffness_ratio * s.n_stiffness,
             "rhom": s.material_density, "cm": max(s.material_unit_cost, 1e-9), "Apack": s.packing_area,
@@ -310,10 +356,13 @@ class GPSizer:
             "tv": math.sqrt(math.pi) / structure.MINDLIN_MAX_THICKNESS_RATIO,
             "Lmax": s.max_length, "Dmax": s.max_diameter, "Mmax": s.max_mass,
             "wall": 2 / math.sqrt(math.pi) * (1 + s.pressure_rating / geometry.DESIGN_STRESS),
-            "uam": max(s.amp_unit_mass * units_per_R, 1e-12), "uac": max(s.amp_unit_cost * units_per_R, 1e-12),
+            "uam": max(s.amp_unit_mass, 1e-12), "uac": max(s.amp_unit_cost, 1e-12),
         }
         for k, val in values.items():
-            self.par[k].value = float(val)
+            val = float(val)
+            if not 0 < val < math.inf:
+                raise ValueError(f"sizing parameter {k} must be positive and finite, got {val!r}")
+            self.par[k].save_value(np.asarray(val))     # checked above; cvxpy's own check costs more than a solve
 
     def solve(self, s: SizingInput) -> SizingResult:
         """Size one combination: the optimum, or the phase-1 point with the
@@ -342,14 +391,72 @@ class GPSizer:
         return SizingResult(False, *point, slack=slack, binding=binding, status=status)
 
     def _point(self) -> tuple:
-        return tuple(float(v.value) for v in (self.R, self.A, self.v, self.t, self.Af, self.g))
+        point = [float(v.value) for v in (self.R, self.A, self.v, self.t, self.Af, self.g, self.U)]
+        point[2] = min(point[2], float(self.par["vmax"].value))   # v <= v_max, within the solver's tolerance
+        return tuple(point)
 
-    @staticmethod
-    def _run(problem: cp.Problem) -> str:
+    def _run(self, problem: cp.Problem) -> str:
+        return self._runs[id(problem)].run()
+
+
+class _Resolver:
+    """Re-solves one compiled geometric program with new parameter values.
+
+    The first solve goes through cvxpy, which compiles the program once
+    (DPP) into a parametrised cone program. Later solves fill that program
+    with the logarithms of the parameters and call the solver on it
+    directly, then write the variables back: cvxpy's own re-solve validates
+    and unpacks every leaf each time, which is four fifths of a solve here.
+    The result is the same program solved by the same solver
+    (tests/engine/test_solve.py compares both paths); when cvxpy's compiled
+    form is not available the ordinary path is used."""
+
+    def __init__(self, problem: cp.Problem, variables: list):
+        self.problem, self.variables = problem, variables
+        self.compiled = None            # (solver, cone program, log parameters, variable columns)
+        self.direct = True
+
+    def run(self) -> str:
+        if self.compiled is None or not self.direct:
+            status = self._cvxpy()
+            if self.compiled is None and self.direct and status in ("optimal", "optimal_inaccurate"):
+                self._compile()
+            return status
+        return self._direct()
+
+    def _cvxpy(self) -> str:
         try:
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")
-                problem.solve(gp=True, solver=SOLVER)
+                self.problem.solve(gp=True, solver=SOLVER)
         except cp.error.SolverError:
             return "solver_error"
-        return problem.status
+        return self.problem.status
+
+    def _compile(self) -> None:
+        from cvxpy.reductions.dgp2dcp.dgp2dcp import Dgp2Dcp
+        try:
+            cache = self.problem._cache
+            chain, prog = cache.solving_chain, cache.param_prog
+            dgp = next(r for r in chain.reductions if isinstance(r, Dgp2Dcp))
+            logs = [(p, dgp.canon_methods._parameters[p]) for p in self.problem.parameters()]
+            cols = [prog.var_id_to_col[dgp.canon_methods._variables[v].id] for v in self.variables]
+            self.compiled = (chain.solver, prog, logs, cols)
+        except (AttributeError, KeyError, StopIteration, TypeError):
+            self.direct = False
+
+    def _direct(self) -> str:
+        solver, prog, logs, cols = self.compiled
+        for p, log_p in logs:
+            log_p.save_value(np.log(p.value))
+        try:
+            data, _ = solver.apply(prog)
+            raw = solver.solve_via_data(data, False, False, {})
+        except Exception:                       # the solver's own failure: as cvxpy reports it
+            return "solver_error"
+        status = solver.STATUS_MAP.get(str(raw.status), "solver_error")
+        if status in ("optimal", "optimal_inaccurate"):
+            x = np.asarray(raw.x)
+            for v, col in zip(self.variables, cols):
+                v.save_value(np.exp(np.asarray(x[col])))
+        return status

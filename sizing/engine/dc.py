@@ -7,6 +7,7 @@ import numpy as np
 from ..io.catalog import DCActuator
 from ..physics import dc_motor
 from ..physics import motor as motor_phys
+from ..physics import screw as screw_phys
 from ..sim.dc_motor import DCMotorModel, simulate
 from ..sim.metrics import step_metrics
 
@@ -76,6 +77,8 @@ def static_figures(act: DCActuator, load_force: float = 0.0) -> dict[str, float]
         "load_current_A": i_load,
         "max_speed_m_s": max_speed(act, load_force),
         "no_load_max_speed_m_s": max_speed(act, 0.0),
+        # a catalog actuator gives no screw dimensions: its nut and support bearing (assumed) hold it
+        "output_stiffness_N_m": float(screw_phys.held_stiffness()),
     }
 
 

@@ -6,6 +6,7 @@ candidate dicts of results.json."""
 from __future__ import annotations
 
 from .dc_candidates import dc_duration
+from . import holding
 from .dc_assumed import resting
 from .dc_parts import MASS_PARTS
 from .dc_structure import structure_members
@@ -13,14 +14,15 @@ from .records import DCActuatorDesign, DCDesign, Simulation
 from .sized import SETTINGS
 
 
-def _cases(sim: Simulation) -> list[dict]:
-    return [dict(c) for c in sim.cases]
+def _cases(sim: Simulation, stiffness: float) -> list[dict]:
+    """The simulated cases with their rest offset and travel from neutral (engine/holding.py)."""
+    return holding.held_cases(sim.cases, stiffness)
 
 
 def actuator_candidate(req, catalog, d: DCActuatorDesign) -> dict:
     """The record of a catalog DC actuator."""
     r, act = req.requirements, d.actuator
-    cases = _cases(d.simulation)
+    cases = _cases(d.simulation, d.static["output_stiffness_N_m"])
     worst = max(cases, key=lambda c: c["load_N"])
     components = {"actuator": act.id}
     return {
@@ -67,7 +69,7 @@ def parts_candidate(req, catalog, d: DCDesign) -> dict:
     T, components, stage = r.max_temperature, d.parts.components(), d.stage
     simulated = dict(d.simulated)
     if "cases" in simulated:
-        simulated["cases"] = _cases(d.simulation)
+        simulated["cases"] = _cases(d.simulation, d.static["output_stiffness_N_m"])
     return {
         "id": d.id, "technology": "dc_motor", "variant": "parts", "stage": stage,
         "components": components, "controller": dict(d.controller), "stack_params": {}, "static": dict(d.static),

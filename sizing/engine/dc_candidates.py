@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from ..io.catalog import Catalog
 from ..io.requirements import RequirementsFile
-from . import dc as dc_engine
+from . import dc as dc_engine, holding
 from .rank import ceiling_margin, floor_margin
 from .records import DCActuatorDesign, Simulation, frozen
 from .search import temperature_margin
@@ -27,8 +27,9 @@ def actuator_designs(req: RequirementsFile, catalog: Catalog, loads: list[float]
 
 def actuator_design(req: RequirementsFile, act, loads: list[float]) -> DCActuatorDesign:
     r = req.requirements
-    cases = dc_engine.step_cases(act, r.stroke, loads, dc_duration(req))
     static = dict(dc_engine.static_figures(act, max(loads) if loads else 0.0), free_stroke_m=act.stroke)
+    cases = holding.held_cases(dc_engine.step_cases(act, r.stroke, loads, dc_duration(req)),
+                               static["output_stiffness_N_m"])
     return DCActuatorDesign(act, frozen(static), Simulation(True, "", tuple(cases)),
                             frozen(_margins(req, act, static, cases, loads)), frozen(dc_engine.metrics(act)))
 
@@ -36,11 +37,15 @@ def actuator_design(req: RequirementsFile, act, loads: list[float]) -> DCActuato
 def _margins(req: RequirementsFile, act, static: dict, cases: list[dict], loads: list[float]) -> dict:
     r = req.requirements
     reached = all(c["stroke_m"] >= dc_engine.SETTLED * r.stroke for c in cases)
+    k, worst = static["output_stiffness_N_m"], max(loads) if loads else 0.0
     return {
         # a servo settles on its reference: the stroke is the actuator's travel, once the
-        # simulation shows the step reached (to 98 %) under every load
-        "stroke": (floor_margin(act.stroke, r.stroke) if reached
-                   else floor_margin(min(c["stroke_m"] for c in cases), r.stroke)),
+        # simulation shows the step reached (to 98 %) under every load (from neutral: less
+        # the rest offset, engine/holding.py)
+        "stroke": (floor_margin(holding.travel(req, act.stroke, k, worst), r.stroke) if reached
+                   else floor_margin(min(holding.travel(req, c["stroke_m"], k, c["load_N"]) for c in cases),
+                                     r.stroke)),
+        **holding.margins(req, k),
         "blocked_force": floor_margin(static["blocked_force_N"], r.blocked_force),
         "holding_force": floor_margin(act.continuous_force, max(loads) if loads else 0.0) if loads and max(loads) > 0 else 1.0,
         "speed": floor_margin(min(c["speed_m_s"] for c in cases), r.speed),

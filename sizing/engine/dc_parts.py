@@ -303,6 +303,10 @@ def static_screen(p: PartArrays, req, loads, ambient=None, settings=None) -> tup
                                                                        v["motor_max_winding_temperature"], T),
         "moving_mass_kg": v["screw_nut_mass"] + built["moving_mass_kg"], "brake_mass_kg": brake,
         **dc_structure.static_figures(built),
+        # the servo holds the motor angle; the shaft, nut and bearing give under the load
+        "output_stiffness_N_m": screw_phys.axial_stiffness(v["screw_elastic_modulus"], v["screw_diameter"],
+                                                           pl["screw_length"]),
+        "back_drives": np.full(len(p), float(screw_phys.back_drives(SCREW_BACK_EFFICIENCY))),
     }
     static.update({f"mass_{name}_kg": m for name, m in mass_breakdown(p, req, static).items()})
     margins = {
@@ -323,6 +327,8 @@ def static_screen(p: PartArrays, req, loads, ambient=None, settings=None) -> tup
         "holding": temperature_margin(v["motor_max_winding_temperature"], end_of_hold),
         **built["margins"],
     }
+    if r.min_stiffness is not None:
+        margins["stiffness"] = static["output_stiffness_N_m"] / r.min_stiffness - 1.0
     return pl, static, margins
 
 

@@ -25,7 +25,7 @@ from ..sim.dc_motor import DCMotorModel, simulate
 from ..sim.metrics import step_metrics
 from . import dc_controller as ctl
 from .dc import SETTLED, output_times
-from . import dc_search, dc_verdict
+from . import dc_search, dc_verdict, holding
 from .dc_parts import drives_for_supply, enumerate_parts, metrics, mountable, static_screen, temperature_margin
 from .dc_candidates import dc_duration
 from .rank import nondominated_levels, verdict
@@ -282,7 +282,8 @@ def _case_ceiling(p, pl, static, i, load) -> float:
 
 def _sim_figures(req, p, i, st, sim) -> tuple[dict, dict]:
     r = req.requirements
-    cases = sim["cases"]
+    k_out = float(st["output_stiffness_N_m"])
+    cases = holding.held_cases(sim["cases"], k_out)
     worst = max(cases, key=lambda c: c["load_N"])
     S = r.stroke
     reached = all(c["stroke_m"] >= SETTLED * S for c in cases)
@@ -301,7 +302,9 @@ def _sim_figures(req, p, i, st, sim) -> tuple[dict, dict]:
     margins = {
         # a servo settles on its reference: the stroke is the designed travel once the
         # simulation shows the step reached (to 98 %) under every load (as for catalog actuators)
-        "stroke": st["stroke_m"] / S - 1.0 if reached else min(c["stroke_m"] for c in cases) / S - 1.0,
+        # (from neutral, less the rest offset under the largest load: engine/holding.py)
+        "stroke": (holding.travel(req, st["stroke_m"], k_out, worst["load_N"]) / S - 1.0 if reached
+                   else min(holding.travel(req, c["stroke_m"], k_out, c["load_N"]) for c in cases) / S - 1.0),
         "speed": figures["speed_m_s"] / r.speed - 1.0,
         "overshoot": 1.0 - figures["overshoot"] / req.options.max_overshoot,
         "winding_temperature": float(temperature_margin(p.values["motor_max_winding_temperature"][i], Tw)),

@@ -8,8 +8,8 @@ import numpy as np
 from ..errors import InputError
 from ..io.catalog import Catalog
 from ..io.design import DCDesignFile, PiezoDesignFile
-from ..physics import hydraulics, thermal
-from . import dc as dc_engine, force_path
+from ..physics import hydraulics, structure, thermal
+from . import dc as dc_engine, force_path, holding
 from .loads import load_cases, surface_mass
 from .piezo import (DEFAULT_PRESSURE_RATING_PA, Candidates, part_row, reference_bouc_wen, stack_bouc_wen,
                     structure_row)
@@ -51,7 +51,8 @@ def evaluate_piezo(design: PiezoDesignFile, catalog: Catalog, file: str) -> dict
     surface = surface_mass(design.load)
     struct = structure_row(material, t_cap, frame_area, spacer=force_path.spacer_material(catalog.materials),
                            spacer_length=design.spacer_length, compensator=compensator, surface_mass=surface,
-                           delta_T=design.temperature - FILL_TEMPERATURE_DEGC)
+                           delta_T=design.temperature - FILL_TEMPERATURE_DEGC,
+                           edge_restraint=structure.edge_restraint(design.plate_edge, design.flange_restraint))
     row = part_row(stack, design.n_stacks, ratio, wide_area, voltage, bw, design.temperature,
                    design.wide_gap, fluid, seal, amplifier, design.pressure_rating, overrides, struct)
     c = Candidates.from_rows([row])
@@ -69,7 +70,8 @@ def evaluate_piezo(design: PiezoDesignFile, catalog: Catalog, file: str) -> dict
     cases = load_cases(design.load)
     sims = simulate_cases(c, [case["load_N"] for case in cases], ramp,
                           load_stiffness=design.load.stiffness)
-    simulated = [dict(case, **{k: _num(v[0]) for k, v in sim.items()}) for case, sim in zip(cases, sims)]
+    simulated = holding.held_cases([dict(case, **{k: _num(v[0]) for k, v in sim.items()})
+                                    for case, sim in zip(cases, sims)], static["output_stiffness_N_m"])
     return {
         "technology": "piezohydraulic",
         "design": {"stack": stack.id, "n_stacks": design.n_stacks, "ratio": ratio, "voltage_V": voltage,
@@ -184,7 +186,9 @@ def evaluate_dc(design: DCDesignFile, catalog: Catalog, file: str) -> dict:
     act = lookup(catalog, catalog.dc_actuators, design.actuator, file, "actuator")
     cases = load_cases(design.load)
     sims = dc_engine.step_cases(act, design.step, [c["load_N"] for c in cases], design.duration)
-    simulated = [dict(case, **{k: _num(v) for k, v in sim.items()}) for case, sim in zip(cases, sims)]
+    static = dc_engine.static_figures(act, max(c["load_N"] for c in cases) if cases else 0.0)
+    simulated = holding.held_cases([dict(case, **{k: _num(v) for k, v in sim.items()})
+                                    for case, sim in zip(cases, sims)], static["output_stiffness_N_m"])
     warnings = []
     if design.temperature > act.max_temperature:
         warnings.append(f"{act.id} is rated to {act.max_temperature:g} degC, below {design.temperature:g} degC")
@@ -192,7 +196,7 @@ def evaluate_dc(design: DCDesignFile, catalog: Catalog, file: str) -> dict:
         "technology": "dc_motor",
         "design": {"actuator": act.id, "step_m": design.step, "pid": act.pid.model_dump(),
                    "c1": act.c1, "c2": act.c2, "screw_lead_m": act.screw_lead},
-        "static": dc_engine.static_figures(act, max(c["load_N"] for c in cases) if cases else 0.0),
+        "static": static,
         "simulated": {"cases": simulated, "worst": _worst(simulated)},
         "metrics": dc_engine.metrics(act),
         "warnings": warnings,

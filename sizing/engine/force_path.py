@@ -9,10 +9,15 @@ stiffness; the hydraulic ones (oil, accumulator, end cap, narrow piston)
 are folded into the simulator's effective bulk modulus, so the simulated
 blocked force equals the static one.
 
-Plates: simply supported (the conservative edge; see physics/structure.py),
-with bending and shear (Reissner-Mindlin), the clamped value reported
-beside it; each states its model and its thickness over radius, which
-must stay within the model's validity (``structure.plate_in_range``).
+Plates: simply supported by default (the conservative edge), clamped or a
+flange with a stated rotational restraint (``[options] plate_edge``; see
+physics/structure.py), with bending and shear (Reissner-Mindlin), the
+clamped value reported beside it; each states its model and its thickness
+over radius, which must stay within the model's validity
+(``structure.plate_in_range``). Thicker than ``plate_fe.FE_CHECK_RATIO`` the
+plate model is checked against an axisymmetric finite-element solid
+(``fe_stiffness_ratio``) and the solid's stiffness is used when they differ
+by more than ``plate_fe.FE_TOLERANCE``.
 """
 from __future__ import annotations
 
@@ -21,11 +26,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..physics import geometry, structure
+from ..physics import geometry, plate_fe, structure
 
 MECHANICAL = ("stacks", "spacer", "base_plate", "frame", "wide_piston")
 HYDRAULIC = ("oil_column", "compensator", "end_cap", "narrow_piston")
 ALUMINIUM_E = 68.9e9          # Pa, 6061-T6 pistons (physics/geometry.py); catalogs/materials.toml al-6061-t6
+ALUMINIUM_NU = 0.33           # catalogs/materials.toml al-6061-t6
+STACK_SPACING_M = 1e-3        # assumed: clearance between neighbouring stacks under the wide piston
 STRESS_SAFETY = 2.0           # allowable stress = yield / 2 (geometry.py's rule)
 FRAME_MARGIN_M = 0.0          # frame spans stacks + wide piston + gap exactly
 
@@ -90,7 +97,9 @@ def members(c) -> dict[str, dict[str, np.ndarray]]:
     a = np.sqrt(c.wide_area / math.pi)
     t_p = geometry.plate_thickness(c.wide_area, c.pressure_rating)
     L_f = frame_length(c.stack_length, t_p, c.wide_gap, c.spacer_length)
-    plate = structure.plate_stiffness(a, c.cap_thickness, c.mat_E, c.mat_nu)
+    model = structure.plate_stiffness(a, c.cap_thickness, c.mat_E, c.mat_nu, edge="flange", restraint=c.edge_restraint)
+    fe_ratio = fe_ratios(structure.thickness_ratio(c.cap_thickness, a), c.mat_nu, c.edge_restraint)
+    plate = plate_fe.checked_stiffness(model, fe_ratio)
     plate_clamped = structure.plate_stiffness(a, c.cap_thickness, c.mat_E, c.mat_nu, edge="clamped")
     plate_mass = c.mat_density * c.wide_area * c.cap_thickness
     unit = c.mat_cost + geometry.MACHINING_USD_PER_KG
@@ -103,21 +112,46 @@ def members(c) -> dict[str, dict[str, np.ndarray]]:
                    "cost": c.n_stacks * c.stack_cost},
         "spacer": {"stiffness": spacer, "mass": spacer_mass, "cost": spacer_mass * (c.spacer_cost + geometry.MACHINING_USD_PER_KG)},
         "base_plate": {"stiffness": plate, "stiffness_clamped": plate_clamped, "mass": plate_mass,
-                       "cost": plate_mass * unit, "thickness": c.cap_thickness, "radius": a},
+                       "cost": plate_mass * unit, "thickness": c.cap_thickness, "radius": a,
+                       "edge": c.edge_restraint, "fe_ratio": fe_ratio},
         "frame": {"stiffness": structure.rod_stiffness(c.mat_E, c.frame_area, L_f),
                   "mass": c.mat_density * c.frame_area * L_f, "cost": c.mat_density * c.frame_area * L_f * unit,
                   "length": L_f, "area": c.frame_area},
-        "wide_piston": {"stiffness": structure.rod_stiffness(ALUMINIUM_E, c.wide_area, t_p), "mass": c.wide_mass,
+        "wide_piston": {"stiffness": wide_piston_stiffness(c, t_p), "mass": c.wide_mass,
                         "cost": zero},
         "oil_column": {"stiffness": c.bulk_modulus * c.wide_area**2 / c.oil_volume,
                        "mass": c.density * c.oil_volume, "cost": zero},
         "compensator": {"stiffness": np.where(c.comp_kind == 1, c.comp_volume_stiffness * c.wide_area**2, inf),
                         "mass": c.comp_mass, "cost": c.comp_cost},
         "end_cap": {"stiffness": plate, "stiffness_clamped": plate_clamped, "mass": plate_mass,
-                    "cost": plate_mass * unit, "thickness": c.cap_thickness, "radius": a},
+                    "cost": plate_mass * unit, "thickness": c.cap_thickness, "radius": a,
+                    "edge": c.edge_restraint, "fe_ratio": fe_ratio},
         "narrow_piston": {"stiffness": c.ratio**2 * structure.rod_stiffness(ALUMINIUM_E, c.narrow_area, L_n),
                           "mass": c.narrow_mass, "cost": zero},
     }
+    return out
+
+
+def wide_piston_stiffness(c, thickness) -> np.ndarray:
+    """The wide piston: its compression E A / t in series with the bending
+    of the ring that overhangs the stacks' packing circle
+    (``structure.overhang_volume``, referred to the wide piston: 1/k = V/q / A^2)."""
+    a = np.sqrt(c.wide_area / math.pi)
+    b = structure.packing_diameter(c.n_stacks.astype(int), c.stack_diameter, STACK_SPACING_M) / 2
+    overhang = structure.overhang_volume(a, b, thickness, ALUMINIUM_E, ALUMINIUM_NU) / c.wide_area**2
+    return 1.0 / (1.0 / structure.rod_stiffness(ALUMINIUM_E, c.wide_area, thickness) + overhang)
+
+
+def fe_ratios(thickness_ratio, nu, restraint) -> np.ndarray:
+    """Plate model over finite-element stiffness of each plate thicker than
+    ``plate_fe.FE_CHECK_RATIO`` with a simply supported or clamped edge
+    (``plate_fe.model_ratio``); NaN where not checked."""
+    ratio = np.broadcast_to(np.asarray(thickness_ratio, float), np.shape(restraint))
+    nu = np.broadcast_to(np.asarray(nu, float), ratio.shape)
+    beta = np.broadcast_to(np.asarray(restraint, float), ratio.shape)
+    out = np.full(ratio.shape, np.nan)
+    for i in np.flatnonzero((ratio > plate_fe.FE_CHECK_RATIO) & ((beta == 0) | np.isinf(beta))):
+        out[i] = plate_fe.model_ratio(ratio[i], nu[i], structure.edge_name(float(beta[i])))
     return out
 
 
@@ -155,7 +189,13 @@ def as_list(m: dict, i: int, material_id: str, compensator_id: str | None,
         if name in ("base_plate", "end_cap"):
             row["stiffness_clamped_N_m"] = float(np.asarray(m[name]["stiffness_clamped"])[i])
             row["thickness_m"] = float(np.asarray(m[name]["thickness"])[i])
-            row["edge"] = "simply_supported"
+            beta = float(np.asarray(m[name]["edge"])[i])
+            row["edge"] = structure.edge_name(beta)
+            if row["edge"] == "flange":
+                row["edge_restraint"] = beta
+            ratio = float(np.asarray(m[name]["fe_ratio"])[i])
+            if math.isfinite(ratio):
+                row["fe_stiffness_ratio"] = ratio
             row["model"] = structure.PLATE_MODEL
             row["thickness_to_radius"] = float(structure.thickness_ratio(row["thickness_m"], m[name]["radius"][i]))
             row["model_valid_to_thickness_to_radius"] = structure.MINDLIN_MAX_THICKNESS_RATIO
@@ -181,17 +221,3 @@ def design_structure(n_stiffness, stack_force, wide_area, stack_length, wide_gap
                              material.poisson, material.yield_strength, stiffness_ratio)
     return (float(t) if cap_thickness is None else cap_thickness,
             float(area) if frame_area is None else frame_area)
-
-
-def resize_for_material(cap_thickness, frame_area, wide_area, frame_len, stack_force, old, new):
-    """The same end cap / base plate and frame stiffness in another material
-    (a cheap screen: the force path, and so blocked force and natural
-    frequency, stay as sized), thickened where the new material's stress
-    limit needs it. Returns (cap_thickness, frame_area), m and m^2."""
-    a = math.sqrt(wide_area / math.pi)
-    k_plate = float(structure.plate_stiffness(a, cap_thickness, old.youngs_modulus, old.poisson))
-    k_frame = float(structure.rod_stiffness(old.youngs_modulus, frame_area, frame_len))
-    t, area = size_structure(1.0, stack_force, wide_area, frame_len, new.youngs_modulus, new.poisson,
-                             new.yield_strength, 0.0)
-    t_k = float(structure.plate_thickness_for_stiffness(k_plate, a, new.youngs_modulus, new.poisson))
-    return max(float(t), t_k), max(float(area), k_frame * frame_len / new.youngs_modulus)

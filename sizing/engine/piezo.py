@@ -93,6 +93,7 @@ class Candidates:
     amp_units: np.ndarray           # units in parallel (amp_* ratings, mass and cost are per unit)
     loss_factor: np.ndarray         # small-signal tan(delta) of the stack
     stack_square: np.ndarray        # 1: square section, 0: circular
+    edge_restraint: np.ndarray      # end cap and base plate edge, k_theta a / D: 0 simply supported, inf clamped
 
     @classmethod
     def from_rows(cls, rows: list[dict]) -> "Candidates":
@@ -189,6 +190,7 @@ def part_row(stack: Stack, n_stacks: int, ratio: float, wide_area: float, voltag
                 "stack_cte": stack.thermal_expansion if stack.thermal_expansion is not None else STACK_CTE_DEFAULT,
                 "loss_factor": stack.loss_factor if stack.loss_factor is not None else stack_phys.DEFAULT_LOSS_FACTOR,
                 "stack_square": float(stack.section == "square")})
+    row["edge_restraint"] = 0.0             # simply supported unless the structure says otherwise
     row.update(structure if structure is not None else {})
     return row
 
@@ -199,10 +201,10 @@ STACK_CTE_DEFAULT = 2e-6
 
 
 def structure_row(material, cap_thickness, frame_area, spacer=None, spacer_length=0.0,
-                  compensator=None, surface_mass=0.0, delta_T=0.0) -> dict:
+                  compensator=None, surface_mass=0.0, delta_T=0.0, edge_restraint=0.0) -> dict:
     """The force-path and thermal fields of a candidate row (SI floats)."""
     sp = spacer if spacer is not None else material
-    row = {"mat_E": material.youngs_modulus, "mat_nu": material.poisson, "mat_density": material.density,
+    row = {"edge_restraint": float(edge_restraint),"mat_E": material.youngs_modulus, "mat_nu": material.poisson, "mat_density": material.density,
            "mat_cte": material.thermal_expansion, "mat_yield": material.yield_strength,
            "mat_cost": material.cost_usd, "cap_thickness": float(cap_thickness), "frame_area": float(frame_area),
            "spacer_length": float(spacer_length), "spacer_E": sp.youngs_modulus, "spacer_density": sp.density,

@@ -22,7 +22,7 @@ from .rank import ceiling_margin, floor_margin
 from .records import PiezoBrief, PiezoDesign, Variant, frozen
 from .search import Combo, temperature_margin
 from .convex import DEFAULT_MAX_MASS, NO_LIMIT
-from .verify import (GAP_CLEARANCE_M, GAP_TOLERANCE_M, STACK_SPACING_M, drive_figures, metrics, ramp_time,
+from .verify import (GAP_CLEARANCE_M, GAP_TOLERANCE_M, STACK_SPACING_M, metrics, ramp_time,
                      seal_friction_at, static_figures)
 
 MAX_SPACER_M = 0.5          # longest passive-compensation spacer considered
@@ -40,11 +40,18 @@ def effective_gap(b: PiezoBrief, stack_free_stroke: float) -> float:
     return max(b.wide_gap_floor, stack_free_stroke + GAP_CLEARANCE_M + GAP_TOLERANCE_M)
 
 
-def sizing_input(b: PiezoBrief, c: Combo, material=None, compensator=None) -> SizingInput:
+def sizing_input(b: PiezoBrief, c: Combo, material=None, compensator=None, spacer=None,
+                 spacer_length=0.0) -> SizingInput:
+    """The program's input for one combination and variant; a passive
+    spacer of ``spacer_length`` lengthens the stack column (and the frame)
+    and adds its compliance, mass and cost."""
     T = b.temperature
     f, s, st = c.fluid, c.seal, c.stack
     material = material if material is not None else force_path.default_material({})
     stack_volume = st.length * st.diameter**2 * (1.0 if st.section == "square" else math.pi / 4)
+    footprint = c.n * math.pi * st.diameter**2 / 4
+    sp_mass = spacer.density * footprint * spacer_length if spacer is not None else 0.0
+    sp_cost = sp_mass * (spacer.cost_usd + geometry.MACHINING_USD_PER_KG) if spacer is not None else 0.0
     accumulator = (1.0 / compensator.volume_stiffness
                    if compensator is not None and compensator.kind == "accumulator" else 0.0)
     return SizingInput(
@@ -57,17 +64,20 @@ def sizing_input(b: PiezoBrief, c: Combo, material=None, compensator=None) -> Si
         natural_frequency=b.natural_frequency, stroke_time=b.stroke_time,
         n_capacitance=c.n * st.capacitance, max_current=b.max_amplifier_units * _unit_current(b, c.amplifier),
         margin=b.design_margin,
-        fixed_mass=c.n * st.mass + (compensator.mass if compensator else 0.0),
+        fixed_mass=c.n * st.mass + (compensator.mass if compensator else 0.0) + sp_mass,
         amp_unit_mass=c.amplifier.mass, amp_unit_cost=c.amplifier.cost_usd,
-        amp_unit_current=_unit_current(b, c.amplifier),
+        amp_unit_current=_unit_current(b, c.amplifier), amp_unit_continuous=c.amplifier.continuous_current,
+        strokes_per_second=b.strokes_per_second, min_stiffness=b.min_stiffness,
+        stroke_load=b.max_load if b.stroke_from == "neutral" else 0.0, edge_restraint=b.edge_restraint,
         fixed_cost=(c.n * st.cost_usd + 2 * s.cost_usd + geometry.FIXED_HYDRAULIC_USD
-                    + (compensator.cost_usd if compensator else 0.0)),
+                    + (compensator.cost_usd if compensator else 0.0) + sp_cost),
         fixed_volume=1.5 * c.n * stack_volume,
         oil_density=float(fluid_props.density_at(f.density, f.thermal_expansion, T)),
         oil_cost=f.cost_usd * 1000.0,
         youngs_modulus=material.youngs_modulus, poisson=material.poisson, material_density=material.density,
         material_unit_cost=material.cost_usd + geometry.MACHINING_USD_PER_KG,
-        allowable_stress=material.yield_strength / force_path.STRESS_SAFETY, stack_length=st.length,
+        allowable_stress=material.yield_strength / force_path.STRESS_SAFETY, stack_length=st.length + spacer_length,
+        column_compliance=(spacer_length / (spacer.youngs_modulus * footprint) if spacer is not None else 0.0),
         stiffness_ratio=b.stiffness_ratio,
         packing_area=math.pi / 4 * float(structure.packing_diameter(c.n, st.diameter, STACK_SPACING_M)) ** 2,
         accumulator_compliance=accumulator, seal_f0=s.friction_per_length, seal_cp=s.friction_pressure_coefficient,
@@ -75,10 +85,11 @@ def sizing_input(b: PiezoBrief, c: Combo, material=None, compensator=None) -> Si
 
 
 def _unit_current(b: PiezoBrief, amp) -> float:
-    """What one amplifier unit holds over the planned ramp (half the stroke
-    time), A: its peak within the rated pulse, else its continuous rating."""
+    """What one amplifier unit holds over a ramp at the required speed (at
+    least the stroke time, the free stroke exceeding the stroke), A: its
+    peak within the rated pulse, else its continuous rating."""
     return float(amplifier.usable_ramp_current(amp.max_current, amp.continuous_current, amp.peak_duration,
-                                               b.stroke_time / 2))
+                                               b.stroke_time))
 
 
 def variants(b: PiezoBrief, catalog: Catalog) -> list[Variant]:
@@ -91,41 +102,19 @@ def variants(b: PiezoBrief, catalog: Catalog) -> list[Variant]:
 
 
 def size(b: PiezoBrief, catalog, combos, progress=None):
-    """One geometric program per combination, as built and with each open
-    accumulator, in the default structure material; the other materials
-    get the same member stiffnesses re-sized in closed form (a cheap,
-    vectorisable screen: the force path is unchanged, mass and cost and
-    the thermal budget follow the material). An orifice reservoir adds no
-    stiffness, so it reuses the as-built sizing."""
-    sizer = GPSizer(list(b.objectives))
+    """One geometric program per combination and variant: each structure
+    material, as built and with each catalog compensator, gets its own
+    bore, plates, frame, gap, ratio, voltage and drive (an open
+    accumulator adds its compliance to the force path; every compensator
+    its mass and cost to the objective)."""
+    sizer = _sizer(tuple(b.objectives))
     out = []
     vs = variants(b, catalog)
-    base = force_path.default_material(catalog.materials)
-    if base.id not in {v.material.id for v in vs}:
-        base = vs[0].material
     for i, c in enumerate(combos):
-        solved = {}
-        for v in vs:
-            key = v.compensator.id if v.compensator is not None and v.compensator.kind == "accumulator" else None
-            if key not in solved:
-                solved[key] = sizer.solve(sizing_input(b, c, base, v.compensator if key else None))
-            res = solved[key]
-            if v.material.id != base.id and math.isfinite(res.cap_thickness):
-                res = _resized(c, res, base, v.material)
-            out.append((c, v, res))
+        out.extend((c, v, sizer.solve(sizing_input(b, c, v.material, v.compensator))) for v in vs)
         if i % 8 == 0 or i == len(combos) - 1:
             _progress(progress, "sizing", i + 1, len(combos))
     return out
-
-
-def _resized(c: Combo, res, old, new):
-    v = min(res.voltage_fraction, c.voltage_fraction_max)
-    x = c.stack_stroke * v
-    t_p = float(geometry.plate_thickness(res.wide_area, c.seal.pressure_rating))
-    L_f = float(force_path.frame_length(c.stack.length, t_p, res.wide_gap))
-    t, area = force_path.resize_for_material(res.cap_thickness, res.frame_area, res.wide_area, L_f,
-                                             c.n * c.stack.stiffness * x, old, new)
-    return replace(res, cap_thickness=t, frame_area=area)
 
 
 def designs(b: PiezoBrief, catalog, sized) -> list[PiezoDesign]:
@@ -153,6 +142,35 @@ def designs(b: PiezoBrief, catalog, sized) -> list[PiezoDesign]:
     return as_built + _build(b, passive, spacer)
 
 
+@lru_cache(maxsize=8)
+def _sizer(objectives: tuple) -> GPSizer:
+    """One program per objective set, compiled once per process."""
+    return GPSizer(list(objectives))
+
+
+def resize_passive(b: PiezoBrief, catalog, built: list[PiezoDesign]) -> list[PiezoDesign]:
+    """The passive designs of ``built`` (``designs``) sized on their own:
+    the program re-sized with the spacer their as-built parent needs in
+    the stack column (longer frame, the spacer's compliance, mass and
+    cost), then built again the way ``designs`` derives a passive design
+    (its spacer from the re-sized geometry's own budget), so re-verifying
+    its sizing reproduces it. Other designs are returned as they are."""
+    spacer = force_path.spacer_material(catalog.materials)
+    sizer = _sizer(tuple(b.objectives))
+    idx = [i for i, d in enumerate(built) if d.variant.passive and d.built]
+    triples = []
+    for i in idx:
+        d = built[i]
+        res = sizer.solve(sizing_input(b, d.combo, d.variant.material, None, spacer, d.spacer))
+        triples.append((d.combo, d.variant.as_built(), res if math.isfinite(res.wide_area) else d.gp))
+    again = {d.origin: d for d in designs(b, catalog, triples) if d.variant.passive}
+    out = list(built)
+    for j, i in enumerate(idx):
+        if j in again:
+            out[i] = replace(again[j], origin=built[i].origin)
+    return out
+
+
 def _spacer_length(b: PiezoBrief, d: PiezoDesign, spacer) -> float:
     """Low-expansion spacer in the stack column (the frame longer by as
     much) that brings the as-built thermal budget to zero: net / (R
@@ -174,26 +192,26 @@ def _build(b: PiezoBrief, pending: list[PiezoDesign], spacer) -> list[PiezoDesig
     path and static margins, in the order given (new records)."""
     if not pending:
         return []
-    T, S = b.temperature, b.stroke
-    rows, rise = [], []
+    T = b.temperature
+    rows = []
     for d in pending:
         combo, res, var = d.combo, d.gp, d.variant
         v = min(res.voltage_fraction, combo.voltage_fraction_max)
-        free = res.ratio * combo.stack_stroke * v
-        # reach the stroke in half the time allowed, unless the design fixes its ramp
-        rise.append(0.5 * b.stroke_time * free / S if res.ramp_time is None else res.ramp_time)
         struct = structure_row(var.material, res.cap_thickness, res.frame_area, spacer, d.spacer,
-                               var.compensator, b.surface_mass, b.delta_T)
+                               var.compensator, b.surface_mass, b.delta_T, b.edge_restraint)
         rows.append(part_row(combo.stack, combo.n, res.ratio, res.wide_area, v * combo.stack.max_voltage,
                              d.bouc_wen[0], T,
                              max(res.wide_gap, effective_gap(b, combo.stack_stroke * v) * (1 + 1e-9)),
                              combo.fluid, combo.seal, combo.amplifier, structure=struct))
     c = Candidates.from_rows(rows)
-    rise = np.array(rise)
-    needed = drive_figures(c, rise, b.strokes_per_second)["amplifier_units_needed"]
-    c.amp_units = np.minimum(needed, b.max_amplifier_units).astype(float)
-    fixed = [i for i, d in enumerate(pending) if d.gp.amplifier_units is not None]
-    c.amp_units[fixed] = [pending[i].gp.amplifier_units for i in fixed]    # units a design file gives
+    drive = sized_drive(b, c)
+    c.amp_units = np.asarray(drive["units"], float).copy()
+    rise = np.array(drive["ramp"], float, copy=True) * np.ones(len(pending))
+    for i, d in enumerate(pending):             # units and ramp a design file gives
+        if d.gp.amplifier_units is not None:
+            c.amp_units[i] = d.gp.amplifier_units
+        if d.gp.ramp_time is not None:
+            rise[i] = d.gp.ramp_time
     ramp = ramp_time(c, rise)
     static = static_figures(c, ramp, b.strokes_per_second)
     met = metrics(c, ramp)
@@ -207,14 +225,30 @@ def _build(b: PiezoBrief, pending: list[PiezoDesign], spacer) -> list[PiezoDesig
                     "at_pressure_Pa": float(p_load[i])}
         figures = {k: float(np.asarray(v)[i]) for k, v in static.items()}
         figures.update(_derived_figures(b, d, figures, float(ramp[i]), friction))
+        figures.update(amplifier_units_needed=float(drive["needed"][i]), amplifier_units_max=b.max_amplifier_units,
+                       amplifier_units_at_cap=float(drive["needed"][i] >= b.max_amplifier_units))
         mets = {k: float(np.asarray(v)[i]) for k, v in met.items()}
         out.append(replace(
-            d, cand=c.take([i]), ramp=float(ramp[i]), static=frozen(figures), metrics=frozen(mets),
+            d, cand=c.take([i]), ramp=float(ramp[i]), amplifier_units=float(c.amp_units[i]), static=frozen(figures), metrics=frozen(mets),
             force_path=tuple(force_path.as_list(members, i, d.variant.material.id, comp.id if comp else None,
                                                 spacer.id if d.spacer > 0 else None)),
             seal_friction=frozen(friction), static_margins=frozen(_static_margins(b, d, figures)),
             ruled_out=ruled_out(b, figures, mets)))
     return out
+
+
+def sized_drive(b: PiezoBrief, c: Candidates) -> dict:
+    """Amplifier units and voltage ramp of built candidates, sized against
+    the speed and the duty (``amplifier.drive_for_speed``): the longest ramp
+    that still reaches the free stroke at the required speed sets the
+    fewest units; the ramp is then the shortest those units drive. The
+    count is capped at the options' ``max_amplifier_units`` (a design held
+    at the cap ramps slower and misses the speed, and its
+    ``amplifier_units`` margin says how many it needs)."""
+    capacitance = c.n_stacks * c.capacitance * stack_phys.LARGE_SIGNAL_CAPACITANCE_FACTOR
+    return amplifier.drive_for_speed(capacitance, c.voltage, c.free_stroke / b.speed, b.strokes_per_second,
+                                     c.amp_max_current, c.amp_continuous, c.amp_peak_duration,
+                                     b.max_amplifier_units)
 
 
 def ruled_out(b: PiezoBrief, st: dict, met: dict) -> dict | None:
@@ -244,11 +278,20 @@ def _derived_figures(b: PiezoBrief, d: PiezoDesign, st: dict, ramp: float, frict
     volts_to_stroke = b.stroke * stack.max_voltage / (st["ratio"] * combo.stack_stroke)
     out = {"thermal_drift_m": st["thermal_net_m"],
            "thermal_drift_oil_only_m": st["thermal_drift_per_K_m"] * b.delta_T,
+           "thermal_drift_free_output_m": st["thermal_net_m"] - st["thermal_compensator_m"],
            "required_current_A": c_large * volts_to_stroke / b.stroke_time,
            "speed_m_s": st["free_stroke_m"] / ramp,         # the planned drive ramp, at the amplifier's limit
            "rise_time_s": ramp}
     comp = d.variant.compensator
     if comp is not None and comp.leak_conductance > 0:
+        # behind its restrictor the compensator takes up the thermal volume with the
+        # time constant C_h / G, and only while a held output lets pressure build: it
+        # is credited with what it takes within the warm-up and the hold
+        tau = float(thermal.compensator_time_constant(math.pi / 4 * st["wide_diameter_m"] ** 2, st["force_path_stiffness_N_m"],
+                                                      comp.leak_conductance))
+        share = float(thermal.compensated_share(tau, b.warm_up_time, b.hold_time))
+        out.update(compensator_time_constant_s=tau, compensator_share=share,
+                   thermal_drift_m=st["thermal_net_m"] - st["thermal_compensator_m"] * (1.0 - share))
         # output creep under the steady (largest) load over the held deflection
         out["compensator_creep_m"] = compensator_creep(comp.leak_conductance, friction["at_pressure_Pa"],
                                                        b.hold_time, st["narrow_diameter_m"])
@@ -279,10 +322,14 @@ def _static_margins(b: PiezoBrief, d: PiezoDesign, st: dict) -> dict:
         "amplifier_units": floor_margin(b.max_amplifier_units, st["amplifier_units_needed"]),
         "stack_temperature": temperature_margin(stack.max_temperature, T + st["stack_temperature_rise_K"]),
         "natural_frequency": floor_margin(st["natural_frequency_Hz"], b.natural_frequency),
-        "thermal_drift": ceiling_margin(abs(st["thermal_net_m"]), b.allowed_drift),
+        "thermal_drift": ceiling_margin(abs(st["thermal_drift_m"]), b.allowed_drift),
         "wide_gap": floor_margin(st["wide_gap_m"], st["gap_needed_m"]),
         "packing": floor_margin(st["stacks_that_fit"], combo.n),
     }
+    if b.min_stiffness > 0:
+        margins["stiffness"] = floor_margin(st["output_stiffness_N_m"], b.min_stiffness)
+    if b.stroke_from == "neutral":       # the load's push-back at zero drive is travel lost
+        margins["stroke"] = floor_margin(st["free_stroke_m"] - b.max_load / st["output_stiffness_N_m"], b.stroke)
     comp = var.compensator
     if comp is not None:
         margins["temperature"] = min(margins["temperature"], temperature_margin(comp.max_temperature, T))
@@ -330,7 +377,7 @@ def nominal_figures(b: PiezoBrief, catalog, combos: list[Combo]) -> list[dict]:
         gap = effective_gap(b, x)
         t, area = force_path.design_structure(nk, nk * x, A, c.stack.length, gap, c.seal.pressure_rating,
                                               material, b.stiffness_ratio)
-        struct = structure_row(material, t, area, spacer, 0.0, None, surface, dT)
+        struct = structure_row(material, t, area, spacer, 0.0, None, surface, dT, b.edge_restraint)
         rows.append(part_row(c.stack, c.n, R, A, c.voltage, BoucWen(x / c.voltage, 0, 0, 0, 0, 1), T, gap,
                              c.fluid, c.seal, c.amplifier, structure=struct))
         ratios.append(R)

@@ -4,6 +4,7 @@ candidate dict."""
 from __future__ import annotations
 
 from ..physics import pump as pump_phys
+from . import holding
 from .records import PumpDesign
 
 
@@ -39,7 +40,7 @@ def _simulated(d: PumpDesign) -> dict:
         return {}
     if not sim.success:
         return {"failed": True, "message": sim.message}
-    cases = [dict(c) for c in sim.cases]
+    cases = holding.held_cases(sim.cases, d.static["output_stiffness_N_m"])
     worst = max(cases, key=lambda c: c["load_N"])
     return {"stroke_m": worst["stroke_m"], "time_to_stroke_s": worst["time_to_stroke_s"],
             "speed_m_s": min(c["speed_m_s"] for c in cases), "mean_speed_m_s": worst["mean_speed_m_s"],

@@ -225,6 +225,8 @@ def figures(req, R: dict, loads: list[float]) -> dict[str, np.ndarray]:
         "stack_heat_W": heat, "run_fraction": np.full_like(peak, run),
         "stack_temperature_rise_K": stack_phys.temperature_rise(heat, area, PUMP_FILM_COEFFICIENT),
         "output_natural_frequency_Hz": f_n, "output_mass_kg": m_out,
+        # at rest the check valves lock the cylinder's loaded side: its oil column holds the output
+        "output_stiffness_N_m": beta_h * A_c / (DEAD_LENGTH + r.stroke),
         "oil_volume_m3": V_c + A_c * (2.0 * r.stroke + 2.0 * DEAD_LENGTH) + line["line_volume_m3"],
         **line,
         "capacitance_large_F": C_L,
@@ -283,8 +285,12 @@ def margins(req, gs, R, st, loads) -> dict[str, np.ndarray]:
     needed = st["amplifier_units_needed"]
     thermal_volume = st["oil_volume_m3"] * pick(lambda g: g.fluid.thermal_expansion) * (T - o.drift_reference_temperature)
     speed = np.min(st["speeds"], axis=0) if loads else st["mean_speed_m_s"]
+    k_out, F_max = st["output_stiffness_N_m"], max(loads) if loads else 0.0
+    travel = r.stroke * (1.0 + o.design_margin) - (F_max if r.stroke_from == "neutral" else 0.0) / k_out
+    holds = {"stiffness": k_out / r.min_stiffness - 1.0} if r.min_stiffness is not None else {}
     return {
-        "stroke": np.full(len(gi), o.design_margin),
+        **holds,
+        "stroke": travel / r.stroke - 1.0,       # the cylinder's travel (from neutral: less the rest offset)
         "blocked_force": st["blocked_force_N"] / r.blocked_force - 1.0,
         "speed": speed / r.speed - 1.0,
         "temperature": temps,

@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Mapping
 
+from ..physics import structure
 from .loads import load_cases, surface_mass
 
 EMPTY: Mapping = MappingProxyType({})
@@ -74,7 +75,8 @@ class PiezoDesign:
     spacer: float = 0.0             # m, passive-compensation spacer (0: none)
     bouc_wen: tuple | None = None   # (BoucWen, source) of its stack; None: not buildable
     cand: object = None             # piezo.Candidates, one row
-    ramp: float = math.nan          # s, the planned drive ramp
+    ramp: float = math.nan          # s, the drive's voltage ramp (sized with the units)
+    amplifier_units: float = math.nan   # amplifier units in parallel (sized against the speed and the duty)
     static: Mapping = field(default_factory=lambda: EMPTY)  # static figures, SI (verify.static_figures and the derived ones)
     metrics: Mapping = field(default_factory=lambda: EMPTY)  # mass_kg, cost_usd, volume_m3, power_W
     force_path: tuple = ()          # members in series (force_path.as_list rows)
@@ -85,6 +87,11 @@ class PiezoDesign:
     @property
     def built(self) -> bool:
         return self.cand is not None
+
+    @property
+    def ramp_time(self) -> float:
+        """s, the voltage ramp the drive is sized for (``ramp``)."""
+        return self.ramp
 
     @property
     def sized(self) -> tuple:
@@ -261,6 +268,7 @@ class PiezoBrief:
     natural_frequency: float        # Hz, the least the output may have
     strokes_per_second: float       # 1/s, the duty
     hold_time: float                # s, a deflection held under the steady load
+    warm_up_time: float             # s, heating from the fill temperature to the required one
     allowed_drift: float            # m, the thermal drift allowed
     max_amplifier_units: int
     wide_gap_floor: float           # m, the options' least oil gap (0: none)
@@ -273,6 +281,9 @@ class PiezoBrief:
     max_load: float                 # N, the largest load case
     objectives: tuple               # what the sizing minimises
     thermal_compensation: bool      # size compensated variants too
+    min_stiffness: float = 0.0      # N/m, output stiffness at rest the requirements ask (0: none)
+    stroke_from: str = "loaded_rest"    # where the stroke is counted under the load (engine/holding.py)
+    edge_restraint: float = 0.0     # end cap and base plate edge, k_theta a / D (0 simply supported, inf clamped)
 
     @classmethod
     def of(cls, req) -> "PiezoBrief":
@@ -280,10 +291,12 @@ class PiezoBrief:
         return cls(stroke=r.stroke, blocked_force=r.blocked_force, speed=r.speed, temperature=r.max_temperature,
                    delta_T=r.max_temperature - o.drift_reference_temperature, stroke_time=req.stroke_time,
                    natural_frequency=req.natural_frequency, strokes_per_second=req.duty.strokes_per_second,
-                   hold_time=req.duty.hold_time, allowed_drift=o.max_drift_fraction * r.stroke,
+                   hold_time=req.duty.hold_time, warm_up_time=req.duty.warm_up_time, allowed_drift=o.max_drift_fraction * r.stroke,
                    max_amplifier_units=o.max_amplifier_units, wide_gap_floor=o.wide_gap or 0.0,
                    design_margin=o.design_margin, stiffness_ratio=o.structure_stiffness_ratio,
                    max_length=env.max_length, max_diameter=env.diameter, max_mass=env.max_mass,
                    surface_mass=surface_mass(L), max_load=max(c["load_N"] for c in load_cases(L)),
-                   objectives=tuple(req.objectives.minimize), thermal_compensation=bool(o.thermal_compensation))
+                   objectives=tuple(req.objectives.minimize), thermal_compensation=bool(o.thermal_compensation),
+                   min_stiffness=r.min_stiffness or 0.0, stroke_from=r.stroke_from,
+                   edge_restraint=float(structure.edge_restraint(o.plate_edge, o.flange_restraint)))
 

@@ -4,18 +4,17 @@
    stack count, pruned by temperature ratings, the work bound and the
    amplifier voltage, each with the requirement that rules it out.
 2. ``piezo_designs``: one geometric program per surviving combination
-   (and open accumulator) sizes R, the wide piston area, the drive voltage,
-   the end cap / base plate thickness and the frame section with the whole
-   force path in series; the other structure materials are re-sized in
-   closed form.
+   and variant (structure material, compensator) sizes R, the wide piston
+   area, the drive voltage and units, the end cap / base plate thickness,
+   the frame section and the gap with the whole force path in series.
 3. The sized designs go through the same code as ``sizing evaluate``
    (``piezo.part_row``, ``verify.static_figures``, ``verify.metrics``), so
    their static figures agree with it, and are simulated under each load
    case (``verify.simulate_cases``), on and near the Pareto front first.
 4. 100 degC: every design is kept as built ("uncompensated", judged on its
    whole thermal budget), with a passive low-expansion spacer where that
-   cancels the budget ("passive"), and with each catalog compensator
-   ("compensated"), each with its own margins.
+   cancels the budget ("passive", sized again with the spacer), and with
+   each catalog compensator ("compensated"), each with its own margins.
 5. The catalog's DC actuators are simulated under the same load cases and
    ranked in the same list (``dc_candidates.py``), and so are DC actuators
    sized from parts, motor x screw x gear x drive (``dc_sizing.py``).
@@ -148,7 +147,7 @@ def _piezohydraulic(req, catalog, loads, progress, detail) -> tuple[Outcome, lis
     pruned = [c for c in combos if c.pruned]
     brief = PiezoBrief.of(req)               # what the stages read of the requirements, once
     sized = piezo_designs.size(brief, catalog, to_size, progress)
-    designs = piezo_designs.designs(brief, catalog, sized)
+    designs = piezo_designs.resize_passive(brief, catalog, piezo_designs.designs(brief, catalog, sized))
     verified = [VerifiedDesign(d, sim) for d, sim in zip(designs, _simulate(req, designs, loads, progress))]
     candidates = []
     if detail == "full":

@@ -35,6 +35,7 @@ def _requirements_si(req: RequirementsFile) -> dict:
             "max_temperature_degC": r.max_temperature, "stroke_time_s": req.stroke_time,
             "min_natural_frequency_Hz": req.natural_frequency, "max_overshoot": o.max_overshoot,
             "max_thermal_drift_m": o.max_drift_fraction * r.stroke,
+            "min_stiffness_N_m": r.min_stiffness, "stroke_from": r.stroke_from,
             "options": o.model_dump(), "duty": req.duty.model_dump(), "envelope": req.envelope.model_dump()}
 
 
@@ -53,15 +54,16 @@ def _assumptions(req: RequirementsFile) -> list[str]:
         "tie-rod frame, wide piston, oil column at the required temperature, open accumulator, end cap, narrow piston), "
         "over R, less the seal friction at the blocked pressure; plates simply supported (Roark, mean deflection)",
         f"end caps, base plate and frame at least {o.structure_stiffness_ratio:g} x the stacks' stiffness and within "
-        "half the yield; sized in 6061-T6 by the geometric program, re-sized in closed form for the other materials",
+        "half the yield; every structure material and compensator sized by its own geometric program",
         "seal friction grows with the chamber pressure (friction_per_length + friction_pressure_coefficient x p), "
         "in the static screen and in the simulation",
         f"amplifier continuous current over {req.duty.strokes_per_second:g} full strokes per second ([duty])",
         "pressure: the stack force over the wide piston must stay within the seal's pressure rating",
         f"drive current: the charge n C_large V that reaches the stroke must flow within stroke/speed = {req.stroke_time:g} s; "
         f"C_large = {stack_phys.LARGE_SIGNAL_CAPACITANCE_FACTOR:g} x the small-signal capacitance",
-        "drive profile for the simulation: a voltage ramp that reaches the stroke in half the allowed time, "
-        "slowed to what the amplifier's current and slew rate allow",
+        "drive profile for the simulation: the voltage ramp sized with the amplifier units (the fewest units "
+        "that reach the free stroke at the required speed and carry the duty, then the shortest ramp they drive), "
+        "slowed to what the amplifier's slew rate allows",
         f"natural frequency at least {req.natural_frequency:.3g} Hz (10 cycles per stroke time unless options.min_natural_frequency); "
         f"simulated overshoot at most {o.max_overshoot:.0%}",
         "stroke under load: the aerodynamic load is a constant force; strokes are measured from the loaded rest; "

@@ -28,7 +28,7 @@ def ramp_time(c: Candidates, rise_time) -> np.ndarray:
 
 GAP_CLEARANCE_M = 0.5e-3       # assumed: wide gap left over the stack stroke (machining, tilt, oil film)
 GAP_TOLERANCE_M = 0.1e-3       # assumed: manufacturing tolerance on the gap (IT9 over a 100 mm bore is 87 um)
-STACK_SPACING_M = 1e-3         # assumed: clearance between neighbouring stacks under the wide piston
+STACK_SPACING_M = force_path.STACK_SPACING_M
 FILL_TEMPERATURE_DEGC = 20.0   # oil filled and sealed at this temperature (thermal budget reference)
 PISTON_CTE = 23.6e-6           # 1/K, 6061-T6 casing and pistons (catalogs/materials.toml al-6061-t6)
 
@@ -80,10 +80,17 @@ def static_figures(c: Candidates, rise_time, strokes_per_second=1.0) -> dict[str
     structural = sum(np.asarray(m[k_]["mass"]) for k_ in ("base_plate", "end_cap", "frame", "spacer"))
     out["structure_mass_kg"] = structural
     out["length_m"] = 2 * c.cap_thickness + m["frame"]["length"] + c.free_stroke + geometry.ROD_EXTRA_LENGTH
-    out["outer_diameter_m"] = (out["wide_diameter_m"] * (1 + c.pressure_rating / geometry.DESIGN_STRESS)
-                               + 2 * geometry.MIN_WALL)
+    out["casing_diameter_m"] = (out["wide_diameter_m"] * (1 + c.pressure_rating / geometry.DESIGN_STRESS)
+                                + 2 * geometry.MIN_WALL)
+    out["outer_diameter_m"] = outer_diameter(out["casing_diameter_m"], c.frame_area)
     out["plate_thickness_to_radius"] = structure.thickness_ratio(c.cap_thickness, geometry.radius(c.wide_area))
     return out
+
+
+def outer_diameter(casing_diameter, frame_area):
+    """Outer diameter with the tie-rod frame as a ring of its whole section
+    around the casing: sqrt(D_casing^2 + 4 A_f / pi), m."""
+    return np.sqrt(np.asarray(casing_diameter) ** 2 + 4.0 / np.pi * np.asarray(frame_area))
 
 
 def drive_figures(c: Candidates, rise_time, strokes_per_second) -> dict[str, np.ndarray]:

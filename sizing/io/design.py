@@ -62,6 +62,11 @@ class PiezoDesignFile(Strict):
     end_cap_thickness: Optional[Qty("length", positive=True)] = None
     frame_area: Optional[Qty("area", positive=True)] = None
     structure_stiffness_ratio: Qty("dimensionless", positive=True) = 3.0
+    # how the end cap and base plate are held at their edge: "simply_supported" (the
+    # conservative edge), "clamped", or "flange", a bolted flange whose rotational
+    # stiffness k_theta is stated as flange_restraint = k_theta a / D (physics/structure.py)
+    plate_edge: Literal["simply_supported", "clamped", "flange"] = "simply_supported"
+    flange_restraint: Qty("dimensionless", positive=True) = 2.0
     compensator: Optional[str] = None                  # catalogs/compensators.toml id
     spacer_length: Qty("length", nonnegative=True) = 0.0   # low-expansion spacer in the stack column (passive compensation)
     air_fraction: Qty("dimensionless", nonnegative=True) = 0.0   # entrained air by volume

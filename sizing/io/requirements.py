@@ -29,6 +29,12 @@ class RequirementsTable(Strict):
     max_temperature: Qty("temperature")
     # the bus the DC drive and winding are chosen for (None: each drive at its rated bus)
     supply_voltage: Optional[Qty("voltage", positive=True)] = None
+    # output stiffness at rest, checked for every technology (None: not required)
+    min_stiffness: Optional[Qty("stiffness", positive=True)] = None
+    # where the stroke is counted under a load: "loaded_rest", the seed's reading (its
+    # simulation counts from where the load leaves the output at zero drive), or
+    # "neutral" (a surface held to a position: the load's push-back is lost travel)
+    stroke_from: Literal["neutral", "loaded_rest"] = "loaded_rest"
 
     @field_validator("stroke")
     @classmethod
@@ -98,6 +104,12 @@ class OptionsTable(Strict):
     # "frame three times stiffer than the stacks" (10-18 kg of 6061 for a 9-stack design);
     # at the floor the three members together are as compliant as the stacks (force halves)
     structure_stiffness_ratio: Qty("dimensionless", positive=True) = 3.0
+    # how the end cap and base plate are held at their edge: "simply_supported" (the
+    # conservative edge), "clamped", or "flange", a bolted flange whose rotational
+    # stiffness k_theta is stated as flange_restraint = k_theta a / D (physics/structure.py)
+    plate_edge: Literal["simply_supported", "clamped", "flange"] = "simply_supported"
+    # assumed: 2, a flange halfway between the two edges in edge compliance 1 / (1 + nu + beta)
+    flange_restraint: Qty("dimensionless", positive=True) = 2.0
 
 
 class DutyTable(Strict):
@@ -109,6 +121,10 @@ class DutyTable(Strict):
     # how long a deflection is held under the steady load: the creep of a
     # leaking compensator over it is a margin. 60 s: a held trim deflection
     hold_time: Qty("time", positive=True) = 60.0
+    # how long the actuator takes to heat from the fill temperature to the required one:
+    # a compensator is credited only with what it takes up within the warm-up and the hold.
+    # assumed: 10 min, a glide body's structure heating through its flight (no figure in the seed)
+    warm_up_time: Qty("time", positive=True) = 600.0
 
 
 class EnvelopeTable(Strict):

@@ -62,3 +62,31 @@ def dissipated_power(capacitance, voltage, strokes_per_second, energy_recovery=0
     """Heat shed by the drive, W: (1 - r) C V^2 f."""
     return ((1.0 - np.asarray(energy_recovery)) * np.asarray(capacitance) * np.asarray(voltage) ** 2
             * np.asarray(strokes_per_second))
+
+
+def drive_for_speed(capacitance, voltage, longest_ramp, strokes_per_second, peak_current, continuous_current,
+                    peak_duration, max_units=np.inf):
+    """The drive sized against the speed and the duty: the fewest units
+    that ramp the stack group to ``voltage`` within ``longest_ramp`` (the
+    ramp that reaches the stroke at the required speed) and carry the
+    duty's rms, capped at ``max_units``; and the shortest ramp those units
+    drive. Within each regime (a ramp within the rated pulse, on the peak;
+    a longer one, on the continuous rating) both the ramp current and the
+    rms fall as the ramp lengthens, so the fewest units are found at the
+    longest ramp of either regime: min(longest, pulse) on the peak, the
+    longest on the continuous rating. Returns arrays: ``needed`` (units the
+    speed and duty need), ``units`` (min(needed, max_units)) and ``ramp`` (s;
+    longer than ``longest_ramp`` when the cap holds the count back)."""
+    C, V = np.asarray(capacitance, float), np.asarray(voltage, float)
+    f, pulse = np.asarray(strokes_per_second, float), np.asarray(peak_duration, float)
+    longest = np.asarray(longest_ramp, float)
+    on_peak = units_needed(C, V, np.minimum(longest, pulse), f, peak_current, continuous_current, pulse)
+    on_continuous = units_needed(C, V, longest, f, peak_current, continuous_current, pulse)
+    needed = np.minimum(on_peak, on_continuous)
+    units = np.minimum(needed, max_units)
+    charge = C * V
+    t_rms = 2.0 * f * (charge / (units * np.asarray(continuous_current, float))) ** 2   # i_rms <= units x I_c
+    ramp_peak = np.maximum(charge / (units * np.asarray(peak_current, float)), t_rms)
+    ramp_cont = np.maximum(charge / (units * np.asarray(continuous_current, float)), t_rms)
+    ramp = np.where(ramp_peak <= pulse, ramp_peak, ramp_cont)
+    return {"needed": needed, "units": units, "ramp": ramp}

@@ -95,3 +95,33 @@ def holding_torque(force, lead, back_efficiency, ratio=1.0, gear_back_efficiency
     (HIWIN 0.75-0.85 for ball screws). A brake holds the same at no power."""
     return (np.asarray(force) * np.asarray(lead) * np.asarray(back_efficiency) * np.asarray(gear_back_efficiency)
             / (2 * np.pi * np.asarray(ratio)))
+
+
+# assumed: a preloaded 12-16 mm ball nut, 150 N/um; catalogue nut rigidities
+# of the size are of this order (HIWIN and THK list some 100-300 N/um for
+# preloaded 12-16 mm nuts); no datasheet of the catalog's screws was read
+NUT_STIFFNESS_N_M = 1.5e8
+# assumed: the fixed end's angular-contact support bearing pair, 100 N/um
+# (the order of a 10-12 mm bore pair with light preload); not read from a datasheet
+BEARING_STIFFNESS_N_M = 1.0e8
+
+
+def axial_stiffness(elastic_modulus, root_diameter, length, nut=NUT_STIFFNESS_N_M, bearing=BEARING_STIFFNESS_N_M):
+    """Output stiffness of a screw drive held at its motor angle, N/m: the
+    shaft over its length (E pi d_r^2 / (4 L), the root diameter), the nut
+    and the support bearing in series. A servo holding the motor angle does
+    not see this compliance: the output gives F / k under a load."""
+    shaft = np.asarray(elastic_modulus) * np.pi * np.asarray(root_diameter) ** 2 / (4.0 * np.asarray(length))
+    return held_stiffness(shaft, nut, bearing)
+
+
+def held_stiffness(shaft=np.inf, nut=NUT_STIFFNESS_N_M, bearing=BEARING_STIFFNESS_N_M):
+    """Shaft, nut and bearing stiffness in series, N/m (a shaft of unknown
+    size: inf, the nut and bearing alone)."""
+    return 1.0 / (1.0 / np.asarray(shaft, float) + 1.0 / np.asarray(nut) + 1.0 / np.asarray(bearing))
+
+
+def back_drives(back_efficiency) -> np.ndarray:
+    """True where a load turns the screw backwards (reverse efficiency > 0):
+    it holds only while the motor (or a brake) holds it."""
+    return np.asarray(back_efficiency) > 0.0

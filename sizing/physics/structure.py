@@ -59,7 +59,7 @@ import math
 
 import numpy as np
 
-EDGES = ("simply_supported", "clamped")
+EDGES = ("simply_supported", "clamped", "flange")
 SHEAR_CORRECTION = 5.0 / 6.0        # k of first-order shear deformation (Reissner, Mindlin)
 MINDLIN_MAX_THICKNESS_RATIO = 0.5   # t/a: thickness over radius up to which a plate is a plate here
 PLATE_MODEL = "mindlin"
@@ -93,13 +93,40 @@ def mean_deflection_factor(nu, edge="simply_supported"):
     return (7.0 + nu) / (3.0 * (5.0 + nu))
 
 
-def plate_compliance_factor(nu, edge="simply_supported"):
-    """c in 1/k = c a^2 / D: (7+nu)/(192 pi (1+nu)) simply supported,
-    1/(192 pi) clamped, from k = q pi a^2 / w_mean."""
-    nu = np.asarray(nu, dtype=float)
+def edge_restraint(edge, restraint=None):
+    """The edge's rotational restraint beta = k_theta a / D: 0 simply
+    supported, inf clamped, the stated ``restraint`` for a flange."""
     if edge == "clamped":
-        return np.full_like(nu, 1.0 / (192.0 * math.pi))
-    return (7.0 + nu) / (192.0 * math.pi * (1.0 + nu))
+        return np.inf
+    if edge == "flange":
+        if restraint is None:
+            raise ValueError("a flange edge needs its rotational restraint k_theta a / D")
+        return restraint
+    if edge != "simply_supported":
+        raise ValueError(f"unknown plate edge {edge!r}: one of {', '.join(EDGES)}")
+    return 0.0
+
+
+def edge_name(restraint) -> str:
+    """The edge a restraint beta stands for."""
+    return "simply_supported" if restraint == 0 else "clamped" if math.isinf(restraint) else "flange"
+
+
+def plate_compliance_factor(nu, edge="simply_supported", restraint=None):
+    """c in 1/k = c a^2 / D: (7+nu)/(192 pi (1+nu)) simply supported,
+    1/(192 pi) clamped, from k = q pi a^2 / w_mean. An edge held by a
+    rotational spring k_theta = beta D / a (a bolted flange whose stiffness
+    grows with the plate's own, stated as beta) carries the edge moment
+    M_r(a) = k_theta w'(a): with w = q r^4 / (64 D) + C1 r^2 + C2,
+    C1 = -q a^2 (beta + 3 + nu) / (32 D (1 + nu + beta)), and the mean
+    deflection is q a^4 / D ((beta + 3 + nu) / (64 (1 + nu + beta)) - 1/96):
+    the simply supported value at beta = 0, the clamped one as beta -> inf
+    (derived in tests/physics/test_plate_edges.py)."""
+    nu = np.asarray(nu, dtype=float)
+    beta = np.asarray(edge_restraint(edge, restraint), dtype=float)
+    finite = np.where(np.isinf(beta), 0.0, beta)
+    share = np.where(np.isinf(beta), 1.0, (finite + 3.0 + nu) / (1.0 + nu + finite))
+    return (share / 64.0 - 1.0 / 96.0) / math.pi
 
 
 def shear_modulus(E, nu):
@@ -118,11 +145,12 @@ def plate_shear_centre_deflection(q, a, t, E, nu):
     return np.asarray(q) * np.asarray(a) ** 2 / (4.0 * SHEAR_CORRECTION * shear_modulus(E, nu) * np.asarray(t))
 
 
-def plate_stiffness(a, t, E, nu, edge="simply_supported", model=PLATE_MODEL):
+def plate_stiffness(a, t, E, nu, edge="simply_supported", model=PLATE_MODEL, restraint=None):
     """Stiffness of a circular plate under uniform pressure, referred to a
     piston of the plate's own area: force / volume-equivalent displacement
-    (N/m). ``model``: "mindlin" (bending plus shear) or "kirchhoff" (bending)."""
-    bending = plate_compliance_factor(nu, edge) * np.asarray(a) ** 2 / flexural_rigidity(E, t, nu)
+    (N/m). ``model``: "mindlin" (bending plus shear) or "kirchhoff" (bending);
+    ``restraint``: a flange's beta (``plate_compliance_factor``)."""
+    bending = plate_compliance_factor(nu, edge, restraint) * np.asarray(a) ** 2 / flexural_rigidity(E, t, nu)
     shear = plate_shear_compliance(t, E, nu) if model == "mindlin" else 0.0
     return 1.0 / (bending + shear)
 
@@ -143,11 +171,11 @@ def plate_stress(q, a, t, nu):
     return 3.0 * (3.0 + np.asarray(nu)) / 8.0 * np.asarray(q) * np.asarray(a) ** 2 / np.asarray(t) ** 2
 
 
-def plate_thickness_for_stiffness(k, a, E, nu, edge="simply_supported", model=PLATE_MODEL):
+def plate_thickness_for_stiffness(k, a, E, nu, edge="simply_supported", model=PLATE_MODEL, restraint=None):
     """Thickness that gives stiffness k (N/m) to a plate of radius a (m).
     With shear, 1/k = P u^3 + Q u in u = 1/t: a depressed cubic with one
     real root (Cardano), P the bending and Q the shear coefficient."""
-    P = plate_compliance_factor(nu, edge) * np.asarray(a) ** 2 * 12.0 * (1.0 - np.asarray(nu) ** 2) / np.asarray(E)
+    P = plate_compliance_factor(nu, edge, restraint) * np.asarray(a) ** 2 * 12.0 * (1.0 - np.asarray(nu) ** 2) / np.asarray(E)
     k = np.asarray(k, dtype=float)
     if model != "mindlin":
         return (P * k) ** (1.0 / 3.0)
@@ -197,3 +225,23 @@ def stacks_that_fit(bore, stack_diameter, spacing=0.0):
     # beyond the table: invert the density bound
     n_beyond = np.floor(HEX_DENSITY * ((ratio - 1.0) / 1.05) ** 2 + 1e-9).astype(int)
     return np.where(ratio >= table[-1], np.maximum(n_beyond, len(table)), n_table)
+
+
+def overhang_volume(a, b, t, E, nu):
+    """Volume a piston plate sweeps per pascal where it overhangs the stacks
+    that carry it, m^3/Pa: stacks packed within radius b push a plate of
+    radius a loaded by the oil over its whole face, so the ring b < r < a
+    bends as a cantilever strip of length L = a - b (Timoshenko: bending
+    x^2 (6 L^2 - 4 L x + x^2) / (24 D) and shear (L x - x^2 / 2) / (k G t)
+    per unit pressure at x from the stacks; the hoop stiffening of the ring
+    is left out, which errs soft). Integrated over 2 pi (b + x) dx:
+    2 pi / (24 D) (6/5 b L^5 + 13/15 L^6) + 2 pi / (k G t) (b L^3 / 3 + 5 L^4 / 24).
+    Inside the packing the stacks' reactions meet the pressure where it
+    acts, and the plate between them is left out."""
+    L = np.maximum(np.asarray(a, float) - np.asarray(b, float), 0.0)
+    b = np.asarray(b, float)
+    D = flexural_rigidity(E, t, nu)
+    kGt = SHEAR_CORRECTION * shear_modulus(E, nu) * np.asarray(t)
+    bending = 2 * np.pi / (24 * D) * (1.2 * b * L**5 + 13.0 / 15.0 * L**6)
+    shear = 2 * np.pi / kGt * (b * L**3 / 3 + 5 * L**4 / 24)
+    return bending + shear

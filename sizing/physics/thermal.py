@@ -77,3 +77,29 @@ def passive_frame_length(delta_T, ratio, narrow_area, oil_volume_m3, oil_expansi
                    stack_expansion, stack_length, frame_expansion, 0.0,
                    piston_expansion, wide_piston_thickness, narrow_piston_length)["net_m"]
     return other / (np.asarray(ratio) * np.asarray(frame_expansion) * np.asarray(delta_T))
+
+
+def compensator_time_constant(wide_area, path_stiffness, leak_conductance):
+    """tau = C_h / G of a compensator behind a restrictor, s: the chamber's
+    hydraulic capacitance with the output held, C_h = A_w^2 / k (k the force
+    path's stiffness at the wide piston, oil column included: the volume the
+    chamber takes per pascal), over the restrictor's conductance G."""
+    G = np.asarray(leak_conductance, float)
+    C_h = np.asarray(wide_area, float) ** 2 / np.asarray(path_stiffness, float)
+    return np.divide(C_h, G, out=np.full(np.broadcast(C_h, G).shape, np.inf), where=G > 0)
+
+
+def compensated_share(time_constant, warm_up_time, hold_time):
+    """Share of the thermal volume a first-order compensator (time constant
+    tau) has taken up at the end of a hold t_h that follows a warm-up t_w
+    during which the volume grew linearly: a ramp into a first-order lag
+    leaves (tau / t_w) (1 - exp(-t_w / tau)) of it at the end of the ramp,
+    which then decays as exp(-t_h / tau). 1 for an instant compensator
+    (tau = 0), 0 for one that never acts (tau = inf)."""
+    tau = np.asarray(time_constant, float)
+    t_w, t_h = float(warm_up_time), float(hold_time)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        x = t_w / tau
+        left = np.where(tau > 0, -np.expm1(-x) / x, 0.0) * np.exp(-t_h / tau)
+    left = np.where(np.isinf(tau), 1.0, np.where(tau > 0, left, 0.0))
+    return 1.0 - left

@@ -123,3 +123,32 @@ def test_an_amplifier_without_a_pulse_rating_exits_2(tmp_path, catalog_copy):
     code, _, stderr = run_cli("solve", req, "--out", out, "--quiet", "--catalog", catalog_copy)
     assert code == 2 and "peak_duration" in stderr and len(stderr.strip().splitlines()) == 1
     assert not out.exists()
+
+
+def test_compensator_time_constant_and_the_share_it_takes_in_time():
+    """The reviewer's figure: the seed solve's best design (504 mm bore,
+    force path 3.476e9 N/m) behind the 3e-15 m^3/(s Pa) restrictor:
+    C_h = A_w^2 / k = 0.19946^2 / 3.476e9 = 1.1446e-11 m^3/Pa, and
+    tau = C_h / G = 3815 s, 63.6 min (not the 1 min its entry was sized
+    for). Ramped over a 60 s warm-up and held 60 s it has taken up
+    1 - (3815/60)(1 - exp(-60/3815)) exp(-60/3815) = 2.33 % of the thermal
+    volume; an instant one all of it, one that never acts none."""
+    from sizing.physics import thermal
+    A = math.pi * 0.252**2
+    tau = thermal.compensator_time_constant(A, 3.476e9, 3e-15)
+    assert tau == pytest.approx(A**2 / 3.476e9 / 3e-15, rel=1e-12)
+    assert tau / 60 == pytest.approx(63.6, abs=0.05)
+    share = thermal.compensated_share(tau, 60.0, 60.0)
+    x = 60 / tau
+    assert share == pytest.approx(1 - (1 - math.exp(-x)) / x * math.exp(-x), rel=1e-9)
+    assert share == pytest.approx(0.0233, abs=2e-4)
+    assert thermal.compensated_share(0.0, 60.0, 60.0) == 1.0
+    assert thermal.compensated_share(math.inf, 60.0, 60.0) == 0.0
+    # a first-order lag driven by a ramp, integrated numerically, agrees
+    t, dt, y = 0.0, 0.01, 0.0
+    tau_small = 40.0
+    while t < 120.0:
+        u = min(t / 60.0, 1.0)
+        y += dt * (u - y) / tau_small
+        t += dt
+    assert thermal.compensated_share(tau_small, 60.0, 60.0) == pytest.approx(y, rel=2e-3)

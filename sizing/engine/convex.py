@@ -131,7 +131,7 @@ class SizingResult:
     cap_thickness: float = math.nan
     frame_area: float = math.nan
     wide_gap: float = math.nan
-    amplifier_units: float = math.nan   # the continuous count the program sized (built designs round it up)
+    amplifier_units_sized: float = math.nan   # the continuous count the program sized (built designs round it up)
     slack: dict = field(default_factory=dict)     # requirement -> phase-1 slack (1: met)
     binding: list = field(default_factory=list)   # requirements that cannot be met, worst first
     status: str = ""

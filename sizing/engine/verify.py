@@ -6,7 +6,7 @@ import numpy as np
 
 from ..physics import amplifier, geometry, hydraulics, stack as stack_phys, structure, thermal
 from . import force_path
-from ..sim.metrics import step_metrics
+from ..sim.metrics import final_value, step_metrics
 from ..sim.piezohydraulic import PiezoHydraulicModel, simulate
 from .piezo import Candidates
 
@@ -201,8 +201,10 @@ def simulate_cases(c: Candidates, load_forces, rise_time, target_stroke=None, ke
     for force in load_forces:
         result = simulate(dynamic_model(c, force, load_stiffness), t, volts)
         y = result["position_m"]
-        target = 0.9 * y[:, -1] if target_stroke is None else np.broadcast_to(target_stroke, (len(c),))
-        case = step_metrics(t, y, target)
+        horizon = ramp + SETTLE_TIME_S      # each candidate's own run, whatever its batch
+        target = (0.9 * final_value(t, y, horizon) if target_stroke is None
+                  else np.broadcast_to(target_stroke, (len(c),)))
+        case = step_metrics(t, y, target, horizon=horizon)
         case["load_N"] = np.full(len(c), float(force))
         case["ramp_time_s"] = ramp
         if keep_traces:

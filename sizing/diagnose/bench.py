@@ -36,7 +36,7 @@ from ..sim import dc_motor as dc_sim
 from ..sim import piezohydraulic as ph_sim
 from ..sim.rigs import dc_model, piezo_model
 from .inputs import describe as describe_treatment
-from .inputs import noise_sigma, treat_voltage
+from .inputs import hold_rate, noise_sigma, treat_voltage
 
 CHANNEL_UNITS = {"position_m": "m", "current_A": "A"}
 
@@ -92,6 +92,9 @@ class Bench:
             self.runs.append(PreparedRun(run.name, np.asarray(run.time, float), np.asarray(u_raw, float), u,
                                          np.asarray(run["position_m"], float), run.name in holdout,
                                          None if current is None else np.asarray(current, float)))
+        if kind == "piezohydraulic" and model is None and self.runs:
+            # a hold is a hold: the sign of dV/dt has a deadband set from the logged voltage noise
+            self.model = self.model.replace(hold_rate=hold_rate([r.u_raw for r in self.runs]))
         has_current = bool(self.runs) and all(r.current is not None for r in self.runs)
         self.channels = ("position_m", "current_A") if has_current else ("position_m",)
         self._nominal = None

@@ -138,6 +138,21 @@ def treat_voltage(v: np.ndarray) -> np.ndarray:
     return out
 
 
+def hold_rate(voltages, settings=None) -> float:
+    """Deadband (V/s) of sgn(dV/dt) in the Bouc-Wen delta term for runs
+    logged with these ``voltages``: the rate at which the voltage moves by
+    its own noise (the median over the runs of drive_noise_sigma) in
+    settings.hold_time_s. Slower than that, a run cannot tell a ramp from a
+    hold, and the treated voltage of a hold keeps such a slope (the
+    piecewise-linear fit's slope error, a few mV/s at 30 mV of noise), whose
+    sign the delta term would integrate at the full held voltage. 0 for a
+    noise-free log (the exact sign)."""
+    from .settings import DEFAULT
+    settings = settings or DEFAULT
+    sigmas = [drive_noise_sigma(v) for v in voltages]
+    return float(np.median(sigmas)) / settings.hold_time_s if sigmas else 0.0
+
+
 def describe() -> str:
     return (f"voltage: piecewise-linear fit with free knots when the log is piecewise linear within its noise, "
             f"else zero-phase Gaussian low-pass (sigma {SMOOTH_SAMPLES:g} samples), then monotone "

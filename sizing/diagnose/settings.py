@@ -30,6 +30,7 @@ class Settings:
     rest_samples: int = 200        # second differences at rest needed for the at-rest noise estimate
     rest_step: float = 1e-5        # at rest: the nominal moves less than this share of the span per sample
     rest_sigmas: float = 3.0       # the whole run's noise estimate is inflated beyond this x the sampling error
+    hold_time_s: float = 0.1       # a voltage moving by less than its noise in this time is held (Bouc-Wen sign deadband), s
     block_s: float = 0.1           # block length of the bootstrap, s
     n_boot: int = 1000             # bootstrap resamples
 

@@ -112,14 +112,23 @@ def scaled(params: BoucWen, **changes: float) -> BoucWen:
 
 
 @numba.njit(cache=True, error_model="numpy")
-def hysteresis_step(h, v0, v1, dt, alpha, beta, gamma, delta, n):
+def hysteresis_step(h, v0, v1, dt, alpha, beta, gamma, delta, n, hold_rate=0.0):
     """Advance h over one sample in which v goes from v0 to v1 in dt seconds.
     Sub-steps keep the explicit update well inside its stability limit when
-    the voltage jumps (the rate of eq. 2 scales with |h|^(n-1) |dv|)."""
+    the voltage jumps (the rate of eq. 2 scales with |h|^(n-1) |dv|).
+
+    ``hold_rate`` (V/s, >= 0) is the deadband of sgn(v') in the delta term:
+    a voltage moving slower than it is held, and the delta term, which adds
+    delta v sgn(v') dt whatever the rate, is off. A measured voltage is never
+    exactly flat in a hold (its noise, or the slope a fit leaves in it), and
+    at 120 V the delta term turns that slope's sign into a drift of the
+    output of the order of a millimetre a second. 0: the exact sign of eq. 2."""
     dv = v1 - v0
     if dv == 0.0:
         return h
     sgn_v = 1.0 if dv > 0.0 else -1.0
+    if abs(dv) <= hold_rate * dt:
+        delta = 0.0
     ah = abs(h)
     hn = ah ** n
     # |d(rate)/dh| |dv| = (|beta| + |gamma|) n |h|^(n-1) |dv|; |h|^n / |h|

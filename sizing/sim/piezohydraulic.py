@@ -45,7 +45,7 @@ PARAMS = (
     "creep_fraction", "creep_time", "slew_rate", "no_return", "dt_max",
     "wide_friction_pressure", "narrow_friction_pressure",
     "narrow_stribeck_velocity", "log_creep", "log_creep_time", "air_fraction", "air_polytropic",
-    "leak_orifice_area", "amp_bandwidth", "narrow_presliding",
+    "leak_orifice_area", "amp_bandwidth", "narrow_presliding", "hold_rate",
 )
 IDX = {name: i for i, name in enumerate(PARAMS)}
 CHANNELS = ("position_m", "pressure_Pa", "wide_position_m", "voltage_V")
@@ -97,6 +97,9 @@ class PiezoHydraulicModel(StackParameters):
     leak_orifice_area: object = 0.0          # m^2: discharge coefficient x area of an orifice leak
     amp_bandwidth: object = 0.0              # rad/s: first-order amplifier bandwidth (0: unlimited)
     narrow_presliding: object = 0.0          # m: LuGre output seal, bristle deflection at breakaway (0: Karnopp)
+    # V/s: the voltage is held (sgn(dV/dt) = 0 in the Bouc-Wen delta term)
+    # while it moves slower than this; 0: the exact sign (physics/bouc_wen.py)
+    hold_rate: object = 0.0
 
 
 STEP_FACTOR = 0.2   # dt * omega_max: ~30 steps per period of the fastest mode
@@ -296,7 +299,7 @@ def _simulate_one(p, dt_max, t_in, inv_dt, v_row, t_out, rec):
     kappa, tau, slew, no_ret = p[24], p[25], p[26], p[27]
     cpw, cpn = p[29], p[30]
     vs, lc, lc_t, eps0, kap, cdA, bw = p[31], p[32], p[33], p[34], p[35], p[36], p[37]
-    zpre = p[38]
+    zpre, hold = p[38], p[39]
     z_br = 0.0                           # LuGre bristle deflection of the output seal
     inv_vs = 1.0 / vs if vs > 0.0 else 0.0
     n_lc = LOG_CREEP_MODES if lc > 0.0 else 0
@@ -347,7 +350,7 @@ def _simulate_one(p, dt_max, t_in, inv_dt, v_row, t_out, rec):
             if slew > 0.0:
                 step = slew * dt
                 v_new = min(max(v_new, v - step), v + step)
-            h = hysteresis_step(h, v, v_new, dt, al, be, ga, de, nb)
+            h = hysteresis_step(h, v, v_new, dt, al, be, ga, de, nb, hold)
             v = v_new
             xf_lin = d33 * v + h
             if tau > 0.0:

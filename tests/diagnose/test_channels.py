@@ -107,3 +107,30 @@ def test_friction_seen_only_in_the_current_is_named_from_the_current(tmp_path):
     assert d.baseline_holdout < DEFAULT.gap_factor * np.hypot(d.noise_floor_holdout, 0.002)
     assert d.verdict["effect"] == "coulomb_friction" and d.verdict["status"] == "explained"
     assert d.verdict["judged_on_channel"] == "current_A"
+
+
+def test_an_effect_that_removes_most_of_the_current_gap_but_leaves_some_is_named_partial_from_it():
+    """A ball-screw servo's record: friction of the library's form removes
+    80 % of the current's NRMSE, 1 - (0.01^2 - f^2) / (0.05^2 - f^2) = 96 %
+    of its gap energy above the floor f = hypot(0.002, 0.001), but leaves
+    0.01 > 2.5 f (the hardware's friction has another form). The position
+    gap lies within its model-form floor, so the combined measure names
+    nothing; the current names the friction "partial", says it decided,
+    and the reason states the position's prior it overrode."""
+    rng = np.random.default_rng(2)
+    friction = _fit("coulomb_friction", {"position_m": 4.5e-5, "current_A": 0.01},
+                    {"position_m": rng.uniform(0.9, 1.1, 40), "current_A": np.full(40, 20.0) + rng.uniform(0, 1, 40)})
+    other = _fit("backlash", {"position_m": 4.8e-5, "current_A": 0.045},
+                 {"position_m": rng.uniform(0.9, 1.1, 40), "current_A": np.full(40, 90.0) + rng.uniform(0, 1, 40)})
+    channels = _channels(0.05)
+    out = judge.verdict(5e-5, 4e-5, [friction, other], baseline_blocks=channels["position_m"]["blocks"],
+                        channels=channels)
+    assert out["status"] == "partial" and out["effect"] == "coulomb_friction"
+    assert out["judged_on_channel"] == "current_A"
+    floor = np.hypot(0.002, 0.001)
+    assert out["explained_gap_energy"] == pytest.approx(1 - (0.01 ** 2 - floor ** 2) / (0.05 ** 2 - floor ** 2))
+    assert "judged on current_A" in out["reason"] and "prior 0.002" in out["reason"]
+    # the current's gap within 1.5 x its floor: nothing is named
+    quiet = _channels(1.4 * floor)
+    assert judge.verdict(5e-5, 4e-5, [friction, other], baseline_blocks=quiet["position_m"]["blocks"],
+                         channels=quiet)["effect"] is None

@@ -117,10 +117,12 @@ def solve(requirements: Path = typer.Argument(..., help="requirements.toml (docs
           detail: str = typer.Option("summary", "--detail",
                                      help="summary: combinations ruled out before sizing counted by reason; "
                                           "full: a record of each in results.json."),
-          max_steps: Optional[float] = MaxStepsOpt):
+          max_steps: Optional[float] = MaxStepsOpt,
+          fast: bool = typer.Option(False, "--fast", help="Skip what would flip each verdict (flips null in "
+                                                          "results.json): quicker iterations on the requirements.")):
     """Size, verify by simulation and rank every design for the requirements."""
     with use_limits(steps=max_steps):
-        results = _solve(requirements, out, catalog, baseline, quiet, detail, robust)
+        results = _solve(requirements, out, catalog, baseline, quiet, detail, robust, fast)
     if not quiet:
         if results.get("changes_summary"):
             typer.echo(f"what changed: {results['changes_summary']['text']}")
@@ -135,11 +137,11 @@ def solve(requirements: Path = typer.Argument(..., help="requirements.toml (docs
                    f"({results['runtime_s']:.1f} s)")
 
 
-def _solve(requirements, out, catalog, baseline, quiet, detail="summary", robust=None):
+def _solve(requirements, out, catalog, baseline, quiet, detail="summary", robust=None, fast=False):
     with _StageBars(quiet) as bars:          # the same bars as robust and sweep (below)
         return api.solve(requirements, out, catalog, baseline,
                          progress=lambda stage, done, total: bars(f"{stage} candidates", done, total), detail=detail,
-                         robust=robust)
+                         robust=robust, fast=fast)
 
 
 @catalog_app.command("list")

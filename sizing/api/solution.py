@@ -45,7 +45,8 @@ class SolveResult(Payload):
 
 def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-out",
           catalog_dir: str | Path | None = None, baseline: str | Path | None = None,
-          progress=None, detail: str = "summary", robust: str | Path | None = None) -> SolveResult:
+          progress=None, detail: str = "summary", robust: str | Path | None = None,
+          fast: bool = False) -> SolveResult:
     """Size, verify and rank designs for a requirements file (docs/formats.md).
 
     Writes results.json, candidates.csv and report.html into ``out_dir``
@@ -57,15 +58,17 @@ def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-ou
     sizing by reason (``summary.ruled_out``); "full" also records each one.
     ``robust``: a robust.json of these requirements; each design it studied
     gets its probability of compliance (``p_compliance``, ``p_ci95``).
+    ``fast``: skip what would flip each verdict (``flips`` null), for
+    quick iterations on the requirements.
     Raises InputError for bad input before writing anything.
     """
     def compute():
-        return run_solve(requirements_path, catalog_dir, baseline, progress, detail, robust)
+        return run_solve(requirements_path, catalog_dir, baseline, progress, detail, robust, fast)
     return output.produce(SOLVE_OUTPUTS, out_dir, (requirements_path, catalog_dir, baseline, robust), compute)
 
 
 def run_solve(requirements_path, catalog_dir=None, baseline=None, progress=None, detail: str = "summary",
-              robust=None) -> SolveResult:
+              robust=None, fast: bool = False) -> SolveResult:
     """The solve without writing anything (``solve``'s arguments)."""
     from ..engine.solve import solve as run
     from ..io.requirements import load_requirements
@@ -76,7 +79,7 @@ def run_solve(requirements_path, catalog_dir=None, baseline=None, progress=None,
     old = _load_baseline(baseline) if baseline is not None else None
     studied = _load_robust(robust) if robust is not None else None
     one_of(detail, ("summary", "full"), "--detail")
-    out = run(req, sha, cat, progress=progress, detail=detail)
+    out = run(req, sha, cat, progress=progress, detail=detail, fast=fast)
     results = out.results
     results["catalog_dir"] = str(cat.folder.resolve())
     if studied is not None:

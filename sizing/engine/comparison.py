@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import math
 
-from .flip import flip
+from .flip import smallest
 
 LABELS = {"piezohydraulic": "piezohydraulic actuator", "dc_motor": "DC motor actuator",
           "piezo_pump": "piezo pump actuator"}
@@ -41,8 +41,10 @@ def _one_miss(members, keys):
     return min(ones, key=lambda c: tuple(c["metrics"][k] for k in keys)) if ones else None
 
 
-def technology_comparison(req, candidates: list[dict], catalog=None) -> dict:
-    """{technology: {best, feasible, binding, binding_margin, metrics}, text}."""
+def technology_comparison(req, candidates: list[dict], catalog=None, flips: dict | None = None) -> dict:
+    """{technology: {best, feasible, binding, binding_margin, metrics, flips, flip}, text}.
+    ``flips``: per technology its re-solved flips (``flip.flips``); None
+    when they were not computed (``solve --fast``)."""
     keys = [OBJECTIVE_KEYS[k] for k in req.objectives.minimize]
     out, lines = {}, []
     for tech, label in TECHNOLOGIES:
@@ -54,7 +56,8 @@ def technology_comparison(req, candidates: list[dict], catalog=None) -> dict:
         out[tech] = {"best": best["id"], "name": best.get("name", best["id"]), "feasible": ok, "binding": best.get("driver"), "binding_margin": m,
                      "metrics": {k: best["metrics"].get(k) for k in keys},
                      "n_feasible": sum(1 for c in members if c["feasible"])}
-        out[tech]["flip"] = flip(req, catalog, members)
+        out[tech]["flips"] = None if flips is None else flips.get(tech, [])
+        out[tech]["flip"] = smallest(out[tech]["flips"])
         rests = best.get("rests_on_assumed") or []
         out[tech]["rests_on_assumed"] = rests
         out[tech]["deciding_assumed"] = [f"{r['part']}.{r['field']}" for r in rests if r.get("decides")]
@@ -75,7 +78,7 @@ def technology_comparison(req, candidates: list[dict], catalog=None) -> dict:
                              f"{near['driver']}")
     for tech, label in TECHNOLOGIES:
         if tech in out:
-            lines.append(f"{label}: " + _rests_text(out[tech]) + "; " + _flip_text(out[tech]["flip"]))
+            lines.append(f"{label}: " + _rests_text(out[tech]) + "; " + _flip_text(out[tech]))
     if "piezo_pump" in out:
         out["piezo_pump"].update(pump_power(req, candidates))
         lines.append(_pump_power_text(out["piezo_pump"]))
@@ -156,10 +159,12 @@ def _rests_text(entry) -> str:
     return text
 
 
-def _flip_text(f) -> str:
-    if f is None:
-        return "no single change of a requirement or catalog value is known to flip its verdict"
-    return f"what would flip its verdict: {f['text']}"
+def _flip_text(entry) -> str:
+    if entry["flips"] is None:
+        return "what would flip its verdict was not computed (solve --fast)"
+    if entry["flip"] is None:
+        return "no single requirement or deciding catalog value flips its verdict within the ranges searched"
+    return f"what would flip it: {entry['flip']['text']}"
 
 
 def format_metric(key, value) -> str:

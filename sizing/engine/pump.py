@@ -59,13 +59,7 @@ def pump_designs(req, catalog, loads: list[float], progress=None) -> PumpOutcome
     gs, ruled = screen.groups(req, catalog)
     if not gs:
         return _nothing(ruled)
-    R = screen.rows(req, catalog, gs)
-    st = screen.figures(req, R, loads)
-    st.update(screen.drive(req, gs, R, st))
-    M = screen.margins(req, gs, R, st, loads)
-    met = screen.metrics(req, gs, R, st)
-    valid = np.isfinite(st["cylinder_diameter_m"])
-    outside = screen.envelope(req, R, st, met) if valid.any() else np.full(len(valid), "", dtype=object)
+    R, st, M, met, valid, outside = _screened(req, catalog, gs, loads)
     records = _envelope_records(gs, R, outside)
     valid &= outside == ""
     G = np.vstack([np.where(np.isfinite(v), v, -np.inf) for v in M.values()])
@@ -97,6 +91,53 @@ def pump_designs(req, catalog, loads: list[float], progress=None) -> PumpOutcome
         {"combinations": int(len(R["group"])), "groups": len(gs), "simulated": len(chosen),
          "screen_feasible": int((worst >= 0).sum()), "parts_not_rated": ruled,
          "outside_envelope": int((outside != "").sum())}))
+
+
+def _screened(req, catalog, gs, loads) -> tuple:
+    """The static screen over every row: rows, figures, margins, metrics,
+    which rows have a bore and why a row leaves the envelope ("" inside)."""
+    R = screen.rows(req, catalog, gs)
+    st = screen.figures(req, R, loads)
+    st.update(screen.drive(req, gs, R, st))
+    M = screen.margins(req, gs, R, st, loads)
+    met = screen.metrics(req, gs, R, st)
+    valid = np.isfinite(st["cylinder_diameter_m"])
+    outside = screen.envelope(req, R, st, met) if valid.any() else np.full(len(valid), "", dtype=object)
+    return R, st, M, met, valid, outside
+
+
+# the margin the cycle simulation replaces (``_design``): the others are final after the screen
+SIMULATED_MARGINS = ("speed",)
+
+
+def first_complying(req, catalog, loads: list[float], batch: int = 4) -> PumpDesign | None:
+    """The lightest pump design (first objective) that complies, simulated
+    only as far as the answer needs: the rows inside the envelope that pass
+    every static check the simulation does not replace, lightest first, a
+    ``batch`` at a time, at most ``SIMULATED`` of them as in a solve; None
+    when none complies (no simulation at all when no row passes the
+    screen). What a re-solve (``resolve.py``) asks of the pump."""
+    if not (catalog.valves and catalog.accumulators and catalog.stacks):
+        return None
+    gs, _ = screen.groups(req, catalog)
+    if not gs:
+        return None
+    R, st, M, met, valid, outside = _screened(req, catalog, gs, loads)
+    ok = valid & (outside == "")
+    for k, v in M.items():
+        if k not in SIMULATED_MARGINS:
+            ok &= np.nan_to_num(v, nan=-1.0) >= 0
+    first = met[OBJECTIVE_KEYS[req.objectives.minimize[0]]]
+    order = [int(i) for i in np.flatnonzero(ok)[np.argsort(first[ok], kind="stable")]][:SIMULATED]
+    screened = _Screen(gs, R, st, M, met)
+    for start in range(0, len(order), batch):
+        chosen = order[start:start + batch]
+        sims = _simulate(req, gs, R, st, chosen, loads)
+        for k, i in enumerate(chosen):
+            d = _design(req, screened, i, _sim_cases(sims, k, loads, st["speeds"], i))
+            if all(v >= 0 for v in d.margins.values()):
+                return d
+    return None
 
 
 def _nothing(ruled: dict) -> PumpOutcome:

@@ -86,7 +86,8 @@ class Probe:
 
     def shown(self, x: float) -> str:
         unit, factor = DISPLAY.get(self.field.split(".")[-1], ("", 1.0))
-        return f"{x * factor:.4g} {unit}".strip()
+        value = x * factor
+        return f"{value:,.0f} {unit}".strip() if abs(value) >= 1e4 else f"{value:.4g} {unit}".strip()
 
 
 def _requirement(table: str, name: str, what: str, value, stricter: int, linear: bool = False) -> Probe:

@@ -171,9 +171,10 @@ class Search:
         self.solves += 1
         found = self.known.setdefault((tech, probe.field), {}).setdefault(x, {})
         for fresh in resolve.units(tech, req, catalog, self.loads, cs):
-            found[fresh["id"]] = (verdict(fresh["margins"])[0], _objective(fresh, self.key))
+            ok, driver = verdict(fresh["margins"])
+            found[fresh["id"]] = (ok, _objective(fresh, self.key), _slack(dict(fresh, driver=driver)))
         for c in cs:
-            found.setdefault(c["id"], (False, math.inf))
+            found.setdefault(c["id"], (False, math.inf, -math.inf))
         return found
 
     def design_at(self, tech: str, probe: Probe, x: float, c: dict) -> tuple[bool, float]:
@@ -181,7 +182,7 @@ class Search:
         if probe.holding is not None and not resolve.holds(c, probe.holding):
             return bool(c["feasible"]), _objective(c, self.key)
         found = self.known.get((tech, probe.field), {}).get(x, {})
-        return found[c["id"]] if c["id"] in found else self.solve_at(tech, probe, x, [c])[c["id"]]
+        return (found[c["id"]] if c["id"] in found else self.solve_at(tech, probe, x, [c])[c["id"]])[:2]
 
     @staticmethod
     def _strictness(probe: Probe, x: float) -> float:
@@ -203,9 +204,47 @@ class Search:
             return False
         # the most slack design first (it often still complies), then the rest at once
         for batch in (undecided[:1], undecided[1:]):
-            if batch and any(self.solve_at(tech, probe, x, batch)[c["id"]][0] for c in batch):
-                return True
+            if batch:
+                found = self.solve_at(tech, probe, x, batch)
+                if any(found[c["id"]][0] for c in batch):
+                    return True
         return False
+
+    def tightening_flip(self, tech: str, probe: Probe, end: float) -> float | None:
+        """Where a technology feasible today stops complying, stricter: the
+        largest flip of its feasible part combinations. The most slack
+        combination's own flip is bisected; then the others are re-solved
+        at once at that value, and only one that still complies there is
+        bisected further (from that value), until none does."""
+        groups: dict[str, list] = {}
+        for c in sorted(self.today[tech].alive, key=_slack, reverse=True):
+            groups.setdefault(resolve.unit_key(tech, c), []).append(c)
+        if probe.holding is not None:
+            groups = {k: g for k, g in groups.items() if resolve.holds(g[0], probe.holding)}
+        every = [c for g in groups.values() for c in g]
+        at_end = self.solve_at(tech, probe, end, every)
+        if any(at_end[c["id"]][0] for c in every):
+            return None
+        start, survivors = probe.value, list(groups.values())
+        while survivors:           # a combination that fails at ``start`` fails at every stricter value
+            group, others = survivors[0], survivors[1:]
+            fails = lambda x, group=group: not self._complies(tech, probe, x, group)    # noqa: E731
+            start = bisect(fails, probe, end, start) if start == probe.value else gallop(fails, probe, end, start)
+            rest = [c for g in others for c in g]
+            found = self.solve_at(tech, probe, start, rest) if rest else {}
+            survivors = [g for g in others if any(found[c["id"]][0] for c in g)]
+            # the one with the most slack there is likely the last to fail: bisected next
+            survivors.sort(key=lambda g: max(found[c["id"]][2] for c in g), reverse=True)
+        return start
+
+    def _complies(self, tech: str, probe: Probe, x: float, group: list) -> bool:
+        known = [self.known_at(tech, probe, x, c) for c in group]
+        if any(known):
+            return True
+        if all(k is False for k in known):
+            return False
+        found = self.solve_at(tech, probe, x, group)
+        return any(found[c["id"]][0] for c in group)
 
     def _pool(self, tech: str, probe: Probe, x: float) -> list:
         """The designs that can comply at ``x``, most slack first: those
@@ -279,13 +318,13 @@ def _slack(c: dict) -> float:
     return m if m is not None and math.isfinite(m) else -math.inf
 
 
-def bisect(changed: Callable[[float], bool], probe: Probe, end: float) -> float | None:
-    """The value nearest today's, to the tolerance, at which ``changed``
-    holds, between today's value (where it does not) and ``end``; None when
-    it does not hold at ``end``."""
+def bisect(changed: Callable[[float], bool], probe: Probe, end: float, start: float | None = None) -> float | None:
+    """The value nearest ``start`` (today's value by default), to the
+    tolerance, at which ``changed`` holds, between ``start`` (where it does
+    not) and ``end``; None when it does not hold at ``end``."""
     if not changed(end):
         return None
-    a, b = probe.value, end
+    a, b = (probe.value if start is None else start), end
     while not probe.close(a, b):
         m = probe.middle(a, b)
         if changed(m):
@@ -293,6 +332,21 @@ def bisect(changed: Callable[[float], bool], probe: Probe, end: float) -> float 
         else:
             a = m
     return b
+
+
+def gallop(changed: Callable[[float], bool], probe: Probe, end: float, start: float) -> float:
+    """``bisect`` from ``start`` where the change is expected close by (the
+    next combination of a technology, just past the last one's flip): steps
+    of 1, 2, 4 ... tolerances until it holds, then bisection in the last step."""
+    step, a = 2.0 * TOLERANCE, start
+    while True:
+        b = (a + step * max(abs(probe.value), 1.0) * probe.stricter if probe.linear
+             else a * (1.0 + step) ** probe.stricter)
+        if (b - end) * probe.stricter >= 0:
+            return bisect(changed, probe, end, a)
+        if changed(b):
+            return bisect(changed, probe, b, a)
+        a, step = b, 2.0 * step
 
 
 def _entry(probe: Probe, to: float | None, end: float, changes: str) -> dict:
@@ -310,7 +364,10 @@ def technology_flips(search: Search, tech: str, probes: list[Probe]) -> list[dic
                 not resolve.holds(c, probe.holding) for c in today.alive):
             out.append(_entry(probe, None, end, "feasibility"))   # a feasible design without the part survives
             continue
-        to = bisect(lambda x: search.feasible_at(tech, probe, x) != today.feasible, probe, end)
+        if today.feasible and tech != "piezo_pump":
+            to = search.tightening_flip(tech, probe, end)
+        else:
+            to = bisect(lambda x: search.feasible_at(tech, probe, x) != today.feasible, probe, end)
         out.append(_entry(probe, to, end, "feasibility"))
     return out
 

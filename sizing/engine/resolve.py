@@ -69,6 +69,12 @@ def piezo_key(c: dict) -> str:
     return f"ph-{k['stack']}-n{k['n_stacks']}-{k['fluid']}-{k['seal']}-{k['amplifier']}"
 
 
+def unit_key(tech: str, c: dict) -> str:
+    """What one re-solve of candidate ``c`` covers: its piezohydraulic part
+    combination (every material and compensator), else the design itself."""
+    return piezo_key(c) if tech == "piezohydraulic" else c["id"]
+
+
 def whole(tech: str, req, catalog, loads) -> list[dict]:
     """Every candidate of ``tech`` re-solved for ``req`` and ``catalog``
     (the technology's stages of ``solve``)."""

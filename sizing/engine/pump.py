@@ -110,34 +110,21 @@ def _screened(req, catalog, gs, loads) -> tuple:
 SIMULATED_MARGINS = ("speed",)
 
 
-def first_complying(req, catalog, loads: list[float], batch: int = 4) -> PumpDesign | None:
-    """The lightest pump design (first objective) that complies, simulated
-    only as far as the answer needs: the rows inside the envelope that pass
-    every static check the simulation does not replace, lightest first, a
-    ``batch`` at a time, at most ``SIMULATED`` of them as in a solve; None
-    when none complies (no simulation at all when no row passes the
-    screen). What a re-solve (``resolve.py``) asks of the pump."""
+def could_comply(req, catalog, loads: list[float]) -> bool:
+    """Whether some pump row inside the envelope passes every static check
+    the simulation does not replace: when none does, no simulated pump can
+    comply, and a re-solve (``resolve.py``) need not simulate."""
     if not (catalog.valves and catalog.accumulators and catalog.stacks):
-        return None
+        return False
     gs, _ = screen.groups(req, catalog)
     if not gs:
-        return None
+        return False
     R, st, M, met, valid, outside = _screened(req, catalog, gs, loads)
     ok = valid & (outside == "")
     for k, v in M.items():
         if k not in SIMULATED_MARGINS:
             ok &= np.nan_to_num(v, nan=-1.0) >= 0
-    first = met[OBJECTIVE_KEYS[req.objectives.minimize[0]]]
-    order = [int(i) for i in np.flatnonzero(ok)[np.argsort(first[ok], kind="stable")]][:SIMULATED]
-    screened = _Screen(gs, R, st, M, met)
-    for start in range(0, len(order), batch):
-        chosen = order[start:start + batch]
-        sims = _simulate(req, gs, R, st, chosen, loads)
-        for k, i in enumerate(chosen):
-            d = _design(req, screened, i, _sim_cases(sims, k, loads, st["speeds"], i))
-            if all(v >= 0 for v in d.margins.values()):
-                return d
-    return None
+    return bool(ok.any())
 
 
 def _nothing(ruled: dict) -> PumpOutcome:

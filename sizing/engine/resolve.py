@@ -19,10 +19,9 @@ cheap without changing its answer:
 
 A re-solve is asked one question at a time (does this design still comply
 at this value?) and answers for its whole part combination. The piezo
-pump is asked for its lightest complying design (``pump.first_complying``):
-its static screen runs over every row, and the simulation only over the
-rows that pass every check it does not replace, lightest first, until one
-complies.
+pump is re-solved whole, but only its static screen runs when no row
+passes every check the simulation does not replace
+(``pump.could_comply``): then no design can comply.
 """
 from __future__ import annotations
 
@@ -103,13 +102,16 @@ def units(tech: str, req, catalog, loads, cs: list[dict]) -> list[dict]:
 
 
 def pump_lightest(req, catalog, loads) -> tuple[str, float] | None:
-    """The lightest complying pump (id, first objective), None when none
-    complies (``pump.first_complying``)."""
-    from .pump import first_complying
-    d = first_complying(req, catalog, loads)
-    if d is None:
+    """The pump's best complying design (id, first objective), None when
+    none complies: the static screen alone when no row passes every check
+    the simulation does not replace (``pump.could_comply``), else the
+    solve's own pump stage."""
+    from . import solve as stages
+    from .pump import could_comply
+    if not could_comply(req, catalog, loads):
         return None
-    return d.id, float(d.metrics.get(OBJECTIVE_KEYS[req.objectives.minimize[0]], math.inf))
+    v = verdict_of(req, stages._piezo_pump(req, catalog, loads, None)[0].candidates)
+    return (v.best, v.objective) if v.feasible else None
 
 
 def dc_parts_of(catalog, alive: tuple):

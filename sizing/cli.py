@@ -133,8 +133,20 @@ def solve(requirements: Path = typer.Argument(..., help="requirements.toml (docs
             typer.echo(results["summary"]["comparison"]["text"])
         if results["summary"].get("comparison", {}).get("recommendation"):
             typer.echo(results["summary"]["comparison"]["recommendation"])
+        _echo_flips(results["summary"].get("comparison", {}).get("technologies", {}))
         typer.echo(f"{out}/report.html, results.json, candidates.csv written "
                    f"({results['runtime_s']:.1f} s)")
+
+
+def _echo_flips(technologies: dict) -> None:
+    """What would flip each verdict, re-solved, in the user's units."""
+    from .engine.flip import flip_text
+    for tech, t in technologies.items():
+        flips = t.get("flips")
+        if flips is None:
+            continue
+        shown = sorted(flips, key=lambda f: (f["to"] is None, f["changes"] != "feasibility"))
+        typer.echo(f"what would flip {tech} (re-solved, to 1 %): " + "; ".join(flip_text(f) for f in shown))
 
 
 def _solve(requirements, out, catalog, baseline, quiet, detail="summary", robust=None, fast=False):

@@ -212,12 +212,33 @@ class Search:
 
     def tightening_flip(self, tech: str, probe: Probe, end: float) -> float | None:
         """Where a technology feasible today stops complying, stricter: the
-        largest flip of its feasible part combinations. The most slack
-        combination's own flip is bisected; then the others are re-solved
-        at once at that value, and only one that still complies there is
-        bisected further (from that value), until none does."""
+        largest flip of its feasible designs' (``_largest_flip``), confirmed
+        by re-solving the whole technology there. A solve simulates only
+        some of the designs that pass its screen, so the whole re-solve can
+        find one that still complies: the search goes on from it."""
+        alive, start = self.today[tech].alive, probe.value
+        while True:
+            to = self._largest_flip(tech, probe, end, alive, start)
+            if to is None:
+                return None
+            req, catalog = probe.apply(self.req, self.catalog, to)
+            self.solves += 1
+            alive = []
+            for c in resolve.whole(tech, req, catalog, self.loads):
+                ok, driver = verdict(c["margins"])
+                if ok and (probe.holding is None or resolve.holds(c, probe.holding)):
+                    alive.append(dict(c, feasible=True, driver=driver))
+            if not alive:
+                return to
+            start = to
+
+    def _largest_flip(self, tech: str, probe: Probe, end: float, alive, start: float) -> float | None:
+        """The largest flip, from ``start``, of the designs ``alive`` (feasible
+        at ``start``): the most slack combination's own flip is bisected;
+        then the others are re-solved at once at that value, and only one
+        that still complies there is bisected further, until none does."""
         groups: dict[str, list] = {}
-        for c in sorted(self.today[tech].alive, key=_slack, reverse=True):
+        for c in sorted(alive, key=_slack, reverse=True):
             groups.setdefault(resolve.unit_key(tech, c), []).append(c)
         if probe.holding is not None:
             groups = {k: g for k, g in groups.items() if resolve.holds(g[0], probe.holding)}
@@ -225,11 +246,12 @@ class Search:
         at_end = self.solve_at(tech, probe, end, every)
         if any(at_end[c["id"]][0] for c in every):
             return None
-        start, survivors = probe.value, list(groups.values())
+        survivors, first = list(groups.values()), start == probe.value
         while survivors:           # a combination that fails at ``start`` fails at every stricter value
             group, others = survivors[0], survivors[1:]
             fails = lambda x, group=group: not self._complies(tech, probe, x, group)    # noqa: E731
-            start = bisect(fails, probe, end, start) if start == probe.value else gallop(fails, probe, end, start)
+            start = bisect(fails, probe, end, start) if first else gallop(fails, probe, end, start)
+            first = False
             rest = [c for g in others for c in g]
             found = self.solve_at(tech, probe, start, rest) if rest else {}
             survivors = [g for g in others if any(found[c["id"]][0] for c in g)]

@@ -136,8 +136,8 @@ class Search:
     changed), per value, what each design re-solved there gave
     ({id: (feasible, first objective)})."""
 
-    def __init__(self, req, catalog, loads, candidates: list[dict]):
-        self.req, self.catalog, self.loads = req, catalog, loads
+    def __init__(self, req, catalog, loads, candidates: list[dict], stages):
+        self.req, self.catalog, self.loads, self.stages = req, catalog, loads, stages
         self.key = resolve.OBJECTIVE_KEYS[req.objectives.minimize[0]]
         self.solved = {t: [c for c in candidates if c["technology"] == t]
                        for t in dict.fromkeys(c["technology"] for c in candidates)}
@@ -170,7 +170,7 @@ class Search:
         req, catalog = probe.apply(self.req, self.catalog, x)
         self.solves += 1
         found = self.known.setdefault((tech, probe.field), {}).setdefault(x, {})
-        for fresh in resolve.units(tech, req, catalog, self.loads, cs):
+        for fresh in resolve.units(self.stages, tech, req, catalog, self.loads, cs):
             ok, driver = verdict(fresh["margins"])
             found[fresh["id"]] = (ok, _objective(fresh, self.key), _slack(dict(fresh, driver=driver)))
         for c in cs:
@@ -224,7 +224,7 @@ class Search:
             req, catalog = probe.apply(self.req, self.catalog, to)
             self.solves += 1
             alive = []
-            for c in resolve.whole(tech, req, catalog, self.loads):
+            for c in resolve.whole(self.stages, tech, req, catalog, self.loads):
                 ok, driver = verdict(c["margins"])
                 if ok and (probe.holding is None or resolve.holds(c, probe.holding)):
                     alive.append(dict(c, feasible=True, driver=driver))
@@ -278,7 +278,7 @@ class Search:
         if (tech, probe.field) not in self.pool:
             req, catalog = probe.apply(self.req, self.catalog, end)
             self.solves += 1
-            fresh = resolve.whole(tech, req, catalog, self.loads)
+            fresh = resolve.whole(self.stages, tech, req, catalog, self.loads)
             ok = [(verdict(c["margins"])[0], c) for c in fresh]
             self.known.setdefault((tech, probe.field), {})[end] = {c["id"]: (f, _objective(c, self.key))
                                                                   for f, c in ok}
@@ -290,7 +290,7 @@ class Search:
         if x not in known:
             req, catalog = probe.apply(self.req, self.catalog, x)
             self.solves += 1
-            known[x] = resolve.pump_lightest(req, catalog, self.loads)
+            known[x] = resolve.pump_lightest(self.stages, req, catalog, self.loads)
         return known[x]
 
     # --- the recommendation --------------------------------------------------
@@ -406,11 +406,12 @@ def recommendation_flips(search: Search, probes: list[Probe], feasibility: list[
     return out
 
 
-def flips(req, catalog, loads, candidates: list[dict], deciding: dict[str, list[str]]) -> tuple[dict, int]:
+def flips(req, catalog, loads, candidates: list[dict], deciding: dict[str, list[str]], stages) -> tuple[dict, int]:
     """Per technology its ``flips`` entries (docs/formats.md), and the
     number of re-solves they took. ``deciding``: per technology, the
-    assumed catalog values in its best design's binding margin."""
-    search = Search(req, catalog, loads, candidates)
+    assumed catalog values in its best design's binding margin;
+    ``stages``: the technologies' stages of the solve (``solve.technology_stages``)."""
+    search = Search(req, catalog, loads, candidates, stages)
     reqs = requirement_probes(req)
     out = {}
     for tech in search.today:

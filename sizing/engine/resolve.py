@@ -74,43 +74,40 @@ def unit_key(tech: str, c: dict) -> str:
     return piezo_key(c) if tech == "piezohydraulic" else c["id"]
 
 
-def whole(tech: str, req, catalog, loads) -> list[dict]:
+def whole(stages, tech: str, req, catalog, loads) -> list[dict]:
     """Every candidate of ``tech`` re-solved for ``req`` and ``catalog``
-    (the technology's stages of ``solve``)."""
-    from . import solve as stages
+    (``stages``: the technologies' stages of ``solve``, ``solve.technology_stages``)."""
     if tech == "piezohydraulic":
-        return stages._piezohydraulic(req, catalog, loads, None, "summary")[0].candidates
+        return stages.piezohydraulic(req, catalog, loads, None, "summary")[0].candidates
     if tech == "dc_motor":
-        return stages._dc_motor(req, catalog, loads, None, "summary")[0].candidates
+        return stages.dc_motor(req, catalog, loads, None, "summary")[0].candidates
     raise ValueError(f"no whole re-solve for {tech!r}")
 
 
-def units(tech: str, req, catalog, loads, cs: list[dict]) -> list[dict]:
+def units(stages, tech: str, req, catalog, loads, cs: list[dict]) -> list[dict]:
     """The candidates of the part combinations of candidates ``cs``
     re-solved for ``req`` and ``catalog``: piezohydraulic combinations
     re-sized (each with its materials and compensators), DC designs from
     parts (the combinations of their parts) or catalog DC actuators
     re-simulated."""
-    from . import solve as stages
     if tech == "piezohydraulic":
         keys = {piezo_key(c) for c in cs}
-        return stages._piezohydraulic(req, catalog, loads, None, "summary",
+        return stages.piezohydraulic(req, catalog, loads, None, "summary",
                                       only=lambda combo: combo.key in keys)[0].candidates
     if tech == "dc_motor":
-        return stages._dc_motor(req, dc_parts_of(catalog, tuple(cs)), loads, None, "summary")[0].candidates
+        return stages.dc_motor(req, dc_parts_of(catalog, tuple(cs)), loads, None, "summary")[0].candidates
     raise ValueError(f"no re-solve by design for {tech!r}")
 
 
-def pump_lightest(req, catalog, loads) -> tuple[str, float] | None:
+def pump_lightest(stages, req, catalog, loads) -> tuple[str, float] | None:
     """The pump's best complying design (id, first objective), None when
     none complies: the static screen alone when no row passes every check
     the simulation does not replace (``pump.could_comply``), else the
     solve's own pump stage."""
-    from . import solve as stages
     from .pump import could_comply
     if not could_comply(req, catalog, loads):
         return None
-    v = verdict_of(req, stages._piezo_pump(req, catalog, loads, None)[0].candidates)
+    v = verdict_of(req, stages.piezo_pump(req, catalog, loads, None)[0].candidates)
     return (v.best, v.objective) if v.feasible else None
 
 

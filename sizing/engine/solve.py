@@ -26,6 +26,7 @@ import math
 import time
 from collections import Counter
 from dataclasses import dataclass, field
+from types import SimpleNamespace
 
 import numpy as np
 
@@ -144,12 +145,19 @@ def _results(req, requirements_sha256, catalog, cases, candidates, outcomes, dis
     }
 
 
+def technology_stages() -> SimpleNamespace:
+    """Each technology's stages of the solve, for the re-solves of the flips
+    (``resolve.py``): ``piezohydraulic``, ``dc_motor``, ``piezo_pump``."""
+    return SimpleNamespace(piezohydraulic=_piezohydraulic, dc_motor=_dc_motor, piezo_pump=_piezo_pump)
+
+
 def _with_flips(req, catalog, loads, candidates, summary) -> dict:
     """Re-solve what would flip each verdict (``flip.py``) and rebuild the
     comparison with it; returns what that cost."""
     start = time.perf_counter()
     techs = summary["comparison"]["technologies"]
-    found, solves = flips(req, catalog, loads, candidates, {t: e["deciding_assumed"] for t, e in techs.items()})
+    found, solves = flips(req, catalog, loads, candidates, {t: e["deciding_assumed"] for t, e in techs.items()},
+                          technology_stages())
     summary["comparison"] = technology_comparison(req, candidates, catalog, flips=found)
     return {"re_solves": solves, "seconds": time.perf_counter() - start}
 

@@ -55,8 +55,9 @@ def _feasible(tech, req, cat, loads, field, value) -> bool:
     """The technology re-solved whole (every combination, not only those
     the flip search narrowed to) with one requirement changed."""
     from sizing.engine import resolve
+    from sizing.engine.solve import technology_stages
     changed = req.model_copy(update={"requirements": req.requirements.model_copy(update={field: value})})
-    return resolve.verdict_of(changed, resolve.whole(tech, changed, cat, loads)).feasible
+    return resolve.verdict_of(changed, resolve.whole(technology_stages(), tech, changed, cat, loads)).feasible
 
 
 @pytest.mark.slow

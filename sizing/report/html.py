@@ -287,9 +287,13 @@ def _ruled_out_text(by_tech: dict, counts: dict | None = None) -> str:
         head = ", ".join(f"{_e(k)} {v:,}" for k, v in top[:3]) + (f", {len(top) - 3} other checks" if len(top) > 3 else "")
         rest = ", ".join(f"{_e(k)} {v:,}" for k, v in top)
         own = (counts or {}).get(tech) or {}
-        total = (f"{own['ruled_out_before_sizing']:,} of {own['combinations']:,} combinations ruled out before "
-                 f"sizing, {own['left_out']:,} designs left out after" if "left_out" in own
-                 else f"{sum(reasons.values()):,}")
+        if own.get("ruled_out_before_sizing"):
+            total = (f"{own['ruled_out_before_sizing']:,} of {own['combinations']:,} combinations ruled out before "
+                     f"sizing, {own['left_out']:,} designs left out after")
+        elif "left_out" in own:            # no sizing stage: the screen and the simulation leave them out
+            total = f"{own['left_out']:,} of {own['combinations']:,} combinations left out"
+        else:
+            total = f"{sum(reasons.values()):,}"
         lines.append(f"<li><b>{_e(TECH_LABELS.get(tech, tech) or 'all')}</b>: {total} "
                      f"({head}) <details><summary>every check</summary>{rest}</details></li>")
     if not lines:

@@ -166,9 +166,10 @@ def solve(requirements: Path = typer.Argument(..., help="requirements.toml (docs
           detail: str = typer.Option("summary", "--detail",
                                      help="summary: combinations ruled out before sizing counted by reason; "
                                           "full: a record of each in results.json."),
-          fast: bool = typer.Option(False, "--fast", help="Skip the probability of compliance under tolerance "
-                                                           "(compliance null; the nominal recommendation)."),
-          max_steps: Optional[float] = MaxStepsOpt):
+          max_steps: Optional[float] = MaxStepsOpt,
+          fast: bool = typer.Option(False, "--fast", help="Skip what would flip each verdict and the probability of "
+                                                          "compliance (flips and compliance null in results.json; the "
+                                                          "nominal recommendation): quicker iterations on the requirements.")):
     """Size, verify by simulation and rank every design for the requirements."""
     with use_limits(steps=max_steps):
         results = _solve(requirements, out, catalog, baseline, quiet, detail, robust, fast)
@@ -185,10 +186,22 @@ def solve(requirements: Path = typer.Argument(..., help="requirements.toml (docs
         knife = results.knife_edges()
         if knife:
             typer.echo(knife)
+        _echo_flips(results["summary"].get("comparison", {}).get("technologies", {}))
         typer.echo(f"{out}/report.html, results.json, candidates.csv written "
                    f"({results['runtime_s']:.1f} s"
                    + (f", and {results['compliance_s']:.1f} s for the probability of compliance"
                       if results.get("compliance_s") is not None else "") + ")")
+
+
+def _echo_flips(technologies: dict) -> None:
+    """What would flip each verdict, re-solved, in the user's units."""
+    from .engine.flip import flip_text
+    for tech, t in technologies.items():
+        flips = t.get("flips")
+        if flips is None:
+            continue
+        shown = sorted(flips, key=lambda f: (f["to"] is None, f["changes"] != "feasibility"))
+        typer.echo(f"what would flip {tech} (re-solved, to 1 %): " + "; ".join(flip_text(f) for f in shown))
 
 
 def _solve(requirements, out, catalog, baseline, quiet, detail="summary", robust=None, fast=False):

@@ -50,7 +50,8 @@ class SolveResult(Payload):
 
 def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-out",
           catalog_dir: str | Path | None = None, baseline: str | Path | None = None,
-          progress=None, detail: str = "summary", robust: str | Path | None = None, fast: bool = False) -> SolveResult:
+          progress=None, detail: str = "summary", robust: str | Path | None = None,
+          fast: bool = False) -> SolveResult:
     """Size, verify and rank designs for a requirements file (docs/formats.md).
 
     Writes results.json, candidates.csv and report.html into ``out_dir``
@@ -62,8 +63,9 @@ def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-ou
     sizing by reason (``summary.ruled_out``); "full" also records each one.
     ``robust``: a robust.json of these requirements; each design it studied
     gets its probability of compliance (``p_compliance``, ``p_ci95``).
-    ``fast``: no probability of compliance (``compliance`` null) and the
-    nominal recommendation, for quick iterations.
+    ``fast``: skip the probability of compliance (``compliance`` null; the
+    nominal recommendation) and what would flip each verdict (``flips``
+    null), for quick iterations on the requirements.
     Raises InputError for bad input before writing anything.
     """
     def compute():
@@ -83,7 +85,7 @@ def run_solve(requirements_path, catalog_dir=None, baseline=None, progress=None,
     old = _load_baseline(baseline) if baseline is not None else None
     studied = _load_robust(robust) if robust is not None else None
     one_of(detail, ("summary", "full"), "--detail")
-    out = run(req, sha, cat, progress=progress, detail=detail)
+    out = run(req, sha, cat, progress=progress, detail=detail, fast=fast)
     results = out.results
     results["catalog_dir"] = str(cat.folder.resolve())
     from ..studies import compliance

@@ -97,7 +97,7 @@ def run_robust(requirements_path, catalog_dir=None, samples: int = 1000, seed: i
     with _executor(scheduler, workers, cluster, progress) as ex:        # an unreachable scheduler fails here, first
         from ..engine.solve import solve as run                # (the engine's imports take seconds)
         from ..studies.robust import pick_designs, robust as study
-        solved = run(req, sha, cat, progress=progress)
+        solved = run(req, sha, cat, progress=progress, fast=True)      # the designs to study, not their flips
         results = solved.results
         picked = pick_designs(results, designs, technology)
         if not picked:

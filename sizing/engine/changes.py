@@ -215,8 +215,7 @@ def change_causes(baseline: dict, results: dict, changes: list[dict], catalog_di
     versions = [baseline.get("tool_version"), results.get("tool_version")]
     parts = []
     if reqs:
-        shown = ", ".join(f"{field_name(r['field'])} {_value(r['old'], r['field'])} -> {_value(r['new'], r['field'])}"
-                          for r in reqs[:3])
+        shown = ", ".join(requirement_words(reqs)[:3])
         parts.append(f"{len(reqs)} requirement value{'s' if len(reqs) > 1 else ''} changed ({shown}"
                      + (f" and {len(reqs) - 3} more" if len(reqs) > 3 else "") + ")")
     if catalog and any(catalog.values()):
@@ -224,9 +223,90 @@ def change_causes(baseline: dict, results: dict, changes: list[dict], catalog_di
     if versions[0] != versions[1]:
         parts.append(f"tool version {versions[0]} -> {versions[1]}")
     moved = len(changes)
-    text = ("; ".join(parts) or "no requirement, catalog or version change") + f": {moved} design{'s' if moved != 1 else ''} changed standing"
+    causes = ("; ".join(parts) or "no requirement, catalog or version change") + f": {moved} design{'s' if moved != 1 else ''} changed standing"
+    answer = answer_change(baseline, results)
+    techs = technology_changes(baseline, results)
     return {"requirements": reqs, "catalog": catalog, "tool_version": versions if versions[0] != versions[1] else None,
-            "designs_moved": moved, "text": text}
+            "designs_moved": moved, "answer": answer, "technologies": techs,
+            "text": ". ".join([answer, *techs, causes])}
+
+
+# requirement values people set, in their units: results.json key -> (name, unit, factor from SI)
+SHOWN = {"stroke_m": ("stroke", "mm", 1e3), "blocked_force_N": ("blocked force", "N", 1.0),
+         "speed_m_s": ("speed", "mm/s", 1e3), "max_temperature_degC": ("max temperature", "degC", 1.0),
+         "envelope.max_length": ("envelope max length", "mm", 1e3),
+         "envelope.max_diameter": ("envelope max diameter", "mm", 1e3),
+         "envelope.max_width": ("envelope max width", "mm", 1e3), "envelope.max_mass": ("envelope max mass", "kg", 1.0),
+         "min_natural_frequency_Hz": ("minimum natural frequency", "Hz", 1.0), "max_overshoot": ("max overshoot", "", 1.0)}
+# values derived from the others (stroke time = stroke / speed ...): listed after those people set
+DERIVED = ("stroke_time_s", "max_thermal_drift_m", "min_natural_frequency_Hz")
+OBJECTIVE_KEYS = {"mass": "mass_kg", "cost": "cost_usd", "volume": "volume_m3", "power": "power_W"}
+TECH_NAMES = {"piezohydraulic": "piezohydraulic", "dc_motor": "DC motor", "piezo_pump": "piezo pump"}
+
+
+def recommended(results: dict) -> dict | None:
+    """The design a results.json recommends: the technologies' best
+    feasible designs, the lightest in the first objective (``summary.
+    comparison.recommended`` where the results carry it)."""
+    comparison = (results.get("summary") or {}).get("comparison") or {}
+    if isinstance(comparison.get("recommended"), dict):
+        rec = comparison["recommended"]
+        tech = (comparison.get("technologies") or {}).get(rec.get("technology"), {})
+        return dict(tech, technology=rec.get("technology"), best=rec.get("id", tech.get("best")),
+                    name=rec.get("name", tech.get("name")))
+    key = OBJECTIVE_KEYS.get((results.get("objectives") or ["mass"])[0], "mass_kg")
+    feasible = [dict(t, technology=name) for name, t in (comparison.get("technologies") or {}).items() if t.get("feasible")]
+    value = lambda t: (t.get("metrics") or {}).get(key)      # noqa: E731
+    feasible = [t for t in feasible if isinstance(value(t), (int, float))]
+    return min(feasible, key=value) if feasible else None
+
+
+def _design_words(t: dict | None) -> str:
+    if t is None:
+        return "none (no technology meets every requirement)"
+    figures = ", ".join(_metric(k, v) for k, v in (t.get("metrics") or {}).items())
+    return f"{t.get('name') or t.get('best')} ({TECH_NAMES.get(t['technology'], t['technology'])}{', ' + figures if figures else ''})"
+
+
+def _metric(key: str, value) -> str:
+    if not isinstance(value, (int, float)):
+        return f"{key.split('_')[0]} n/a"
+    return {"mass_kg": f"{value:.4g} kg", "cost_usd": f"{value:,.0f} USD", "volume_m3": f"{value * 1e3:.3g} L",
+            "power_W": f"{value:.3g} W"}.get(key, f"{key} {value:.4g}")
+
+
+def answer_change(baseline: dict, results: dict) -> str:
+    """The first line of "What changed": whether the recommendation changed,
+    from which design to which."""
+    old, new = recommended(baseline), recommended(results)
+    if (old or {}).get("best") == (new or {}).get("best"):
+        return f"Recommendation unchanged: {_design_words(new)}"
+    return f"Recommendation changed: {_design_words(old)} -> {_design_words(new)}"
+
+
+def technology_changes(baseline: dict, results: dict) -> list[str]:
+    """Per technology, its best design and verdict before and after."""
+    old = ((baseline.get("summary") or {}).get("comparison") or {}).get("technologies") or {}
+    new = ((results.get("summary") or {}).get("comparison") or {}).get("technologies") or {}
+    lines = []
+    for tech in dict.fromkeys([*new, *old]):
+        a, b = old.get(tech), new.get(tech)
+        word = lambda t: ("absent" if t is None else      # noqa: E731
+                          f"{t.get('name') or t.get('best')} {'feasible' if t.get('feasible') else 'infeasible'}")
+        same = a is not None and b is not None and a.get("best") == b.get("best") and a.get("feasible") == b.get("feasible")
+        lines.append(f"{TECH_NAMES.get(tech, tech)}: {word(b)}" + (" (unchanged)" if same else f" (was {word(a)})"))
+    return lines
+
+
+def requirement_words(reqs: list[dict]) -> list[str]:
+    """The requirement changes in people's names and units, those they set
+    first, derived values after."""
+    def shown(r):
+        name, unit, factor = SHOWN.get(r["field"], (r["field"], "", 1.0))
+        value = lambda v: f"{v * factor:.4g}" if isinstance(v, (int, float)) else str(v)    # noqa: E731
+        return f"{name} {value(r['old'])} -> {value(r['new'])}{' ' + unit if unit else ''}"
+    first = [r for r in reqs if r["field"] not in DERIVED]
+    return [shown(r) for r in first] + [shown(r) for r in reqs if r["field"] in DERIVED]
 
 
 def _value(v, key: str = "") -> str:

@@ -8,7 +8,7 @@ import math
 
 from .assumed import assumed_clause, in_words
 from .describe import describe
-from .flip import flip
+from .flip import smallest
 
 LABELS = {"piezohydraulic": "piezohydraulic actuator", "dc_motor": "DC motor actuator",
           "piezo_pump": "piezo pump actuator"}
@@ -81,8 +81,10 @@ def _one_miss(members, keys, req=None, catalog=None):
     return None, None
 
 
-def technology_comparison(req, candidates: list[dict], catalog=None) -> dict:
-    """{technology: {best, feasible, binding, binding_margin, metrics}, text}."""
+def technology_comparison(req, candidates: list[dict], catalog=None, flips: dict | None = None) -> dict:
+    """{technology: {best, feasible, binding, binding_margin, metrics, flips, flip}, text}.
+    ``flips``: per technology its re-solved flips (``flip.flips``); None
+    when they were not computed (``solve --fast``)."""
     keys = [OBJECTIVE_KEYS[k] for k in req.objectives.minimize]
     out, lines = {}, []
     for tech, label in TECHNOLOGIES:
@@ -94,7 +96,8 @@ def technology_comparison(req, candidates: list[dict], catalog=None) -> dict:
         out[tech] = {"best": best["id"], "name": best.get("name", best["id"]), "feasible": ok, "binding": best.get("driver"), "binding_margin": m,
                      "metrics": {k: best["metrics"].get(k) for k in keys},
                      "n_feasible": sum(1 for c in members if c["feasible"])}
-        out[tech]["flip"] = flip(req, catalog, members)
+        out[tech]["flips"] = None if flips is None else flips.get(tech, [])
+        out[tech]["flip"] = smallest(out[tech]["flips"])
         held = _holding(best)
         if held is not None:
             out[tech]["holding"] = held
@@ -122,7 +125,7 @@ def technology_comparison(req, candidates: list[dict], catalog=None) -> dict:
                 lines.append(_one_miss_text(label, out[tech]["one_miss"], keys))
     for tech, label in TECHNOLOGIES:
         if tech in out:
-            lines.append(f"{label}: " + _rests_text(out[tech]) + "; " + _flip_text(out[tech]["flip"]))
+            lines.append(f"{label}: " + _rests_text(out[tech]) + "; " + _flip_text(out[tech]))
     held = [(LABELS[tech].removesuffix(" actuator"), out[tech]["holding"]) for tech, _ in TECHNOLOGIES
             if tech in out and "holding" in out[tech]]
     if held:
@@ -271,10 +274,12 @@ def _rests_text(entry) -> str:
     return text
 
 
-def _flip_text(f) -> str:
-    if f is None:
-        return "no single change of a requirement or catalog value is known to flip its verdict"
-    return f"what would flip its verdict: {f['text']}"
+def _flip_text(entry) -> str:
+    if entry["flips"] is None:
+        return "what would flip its verdict was not computed (solve --fast)"
+    if entry["flip"] is None:
+        return "no single requirement or deciding catalog value flips its verdict within the ranges searched"
+    return f"what would flip it: {entry['flip']['text']}"
 
 
 def format_metric(key, value) -> str:

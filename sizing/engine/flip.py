@@ -1,131 +1,469 @@
-"""What would flip a technology's verdict: the smallest single change of a
-requirement or of a catalog value that makes an infeasible technology
-feasible, or a feasible one infeasible.
+"""What would flip each technology's verdict, and the recommendation:
+found by re-solving, not read off the margins of designs already sized.
 
-Margins are linear in what sets them (``rank.floor_margin`` a / r - 1,
-``rank.ceiling_margin`` 1 - a / A, the temperature margin (rated - T) / T),
-so the value at which a margin m crosses zero is closed form:
+For each technology and each requirement (stroke, blocked force, speed,
+maximum temperature, each envelope limit given), and for each assumed
+catalog value in its best design's binding margin, the value is moved in
+the direction that can change the verdict (stricter for a feasible
+technology, looser for an infeasible one) and the technology is re-solved
+there (``resolve.py``: its own enumeration, sizing, screen and simulation).
+Bisection between today's value and the end of the range (a quarter to
+four times the value; the maximum temperature within ``TEMPERATURE_SPAN``
+degC of the requirement, never below ``COLD_LIMIT``) finds the value at
+which the verdict changes, to ``TOLERANCE`` of the value. Nothing changes
+at the end of the range: ``to`` is null and ``within`` says where it was
+looked for.
 
-    floor or temperature:  r' = r (1 + m)      (a requirement, or a rating a' = a / (1 + m))
-    ceiling:               A' = A (1 - m)
-    hold time (creep grows with it): h' = h / (1 - m)
+The recommendation (the lightest technology's best design, ``resolve.
+recommended``) is searched the same way for the recommended technology's
+requirements and catalog values, stricter only: it changes where that
+design stops being the best, or another technology's best overtakes it.
+When no technology is feasible, the recommendation changes where the first
+one becomes feasible (the smallest of their feasibility flips, no further
+solve).
 
-An infeasible technology flips when one design's only missed margin
-crosses zero: the smallest relaxation over its designs that miss exactly
-one check. A feasible one flips when every feasible design misses: the
-requirement tightened past the largest margin any of them has on it.
+Bisection assumes the verdict changes once in the range (feasibility is
+monotone in each requirement); the acceptance test re-solves on both sides
+of each flip.
 """
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
+from typing import Callable
+
+from . import resolve
+from .rank import verdict
+
+TOLERANCE = 0.01           # of the value; for the maximum temperature, of its value in degC
+RANGE = 4.0                # searched from value / RANGE to value x RANGE
+TEMPERATURE_SPAN = 150.0   # degC either side of a temperature
+COLD_LIMIT = -55.0         # degC, the usual military cold limit (MIL-STD-810 low temperature)
+# catalog fields whose larger value makes a design worse; any other field
+# (ratings, capacities, stiffness, efficiency) is worse smaller
+HIGHER_HURTS = ("capacitance", "mass", "inertia", "cost_usd", "resistance", "viscous_damping", "friction",
+                "leak", "thermal_expansion", "loss", "compliance", "backlash", "self_heating")
+
+# how a person reads each value: (unit shown, factor from SI)
+DISPLAY = {"stroke": ("mm", 1e3), "speed": ("mm/s", 1e3), "blocked_force": ("N", 1.0),
+           "max_temperature": ("degC", 1.0), "max_length": ("mm", 1e3), "max_diameter": ("mm", 1e3),
+           "max_width": ("mm", 1e3), "max_mass": ("kg", 1.0), "continuous_current": ("A", 1.0),
+           "max_current": ("A", 1.0), "pressure_rating": ("MPa", 1e-6), "capacity": ("cm^3", 1e6),
+           "max_frequency": ("Hz", 1.0), "capacitance": ("uF", 1e6), "peak_duration": ("ms", 1e3),
+           "max_winding_temperature": ("degC", 1.0)}
 
 
-def _requirements(req) -> dict[str, tuple[str, float, str]]:
-    """margin -> (what, today's value, how the margin moves with it)."""
-    r, o = req.requirements, req.options
-    return {
-        "stroke": ("requirement stroke", r.stroke, "floor"),
-        "blocked_force": ("requirement blocked_force", r.blocked_force, "floor"),
-        "speed": ("requirement speed", r.speed, "floor"),
-        "natural_frequency": ("option min_natural_frequency", req.natural_frequency, "floor"),
-        "temperature": ("requirement max_temperature", r.max_temperature, "floor"),
-        "thermal_drift": ("option max_drift_fraction", o.max_drift_fraction, "ceiling"),
-        "overshoot": ("option max_overshoot", o.max_overshoot, "ceiling"),
-        "compensator_hold": ("duty hold_time", req.duty.hold_time, "hold"),
-        "amplifier_units": ("option max_amplifier_units", float(o.max_amplifier_units), "rating"),
-    }
+@dataclass(frozen=True)
+class Probe:
+    """One value a flip moves: ``what`` people read, ``field`` (a
+    requirement's name or "part.field"), today's ``value`` (SI), ``stricter``
+    (+1: a larger value is harder to meet, -1: a smaller one), ``linear``
+    (a temperature: searched in degC steps), ``apply(req, catalog, x)``
+    -> (req, catalog) with the value x, and ``holding``: the catalog entry
+    it changes (None for a requirement)."""
+
+    what: str
+    field: str
+    value: float
+    stricter: int
+    linear: bool
+    apply: Callable
+    holding: str | None = None
+
+    def end(self, direction: int) -> float:
+        """The end of the range in ``direction`` (+1 larger, -1 smaller)."""
+        if self.linear:
+            return max(COLD_LIMIT, self.value + direction * TEMPERATURE_SPAN)
+        return self.value * RANGE ** direction
+
+    def close(self, a: float, b: float) -> bool:
+        if self.linear:
+            return abs(b - a) <= TOLERANCE * max(abs(self.value), 1.0)
+        return max(a, b) / min(a, b) <= 1.0 + TOLERANCE
+
+    def middle(self, a: float, b: float) -> float:
+        return 0.5 * (a + b) if self.linear else math.sqrt(a * b)
+
+    def shown(self, x: float) -> str:
+        unit, factor = DISPLAY.get(self.field.split(".")[-1], ("", 1.0))
+        value = x * factor
+        return f"{value:,.0f} {unit}".strip() if abs(value) >= 1e4 else f"{value:.4g} {unit}".strip()
 
 
-# margin -> (component kind, catalog field): a part's rating over what the design needs
-RATINGS = {"amplifier_continuous_current": ("amplifier", "continuous_current"),
-           "drive_current": ("amplifier", "max_current"),
-           "pressure": ("seal", "pressure_rating"),
-           "compensator_capacity": ("compensator", "capacity"),
-           "amplifier_temperature": ("amplifier", "max_temperature"),
-           "valve_resonance": ("valve", "max_frequency"),
-           "accumulator_capacity": ("accumulator", "capacity")}
+def _requirement(table: str, name: str, what: str, value, stricter: int, linear: bool = False) -> Probe:
+    def apply(req, catalog, x):
+        part = getattr(req, table)
+        return req.model_copy(update={table: part.model_copy(update={name: x})}), catalog
+    return Probe(what, name, float(value), stricter, linear, apply)
 
 
-def _moved(value: float, margin: float, how: str) -> float:
-    if how in ("floor",):
-        return value * (1.0 + margin)
-    if how == "rating":
-        return value / (1.0 + margin)
-    if how == "ceiling":
-        return value * (1.0 - margin)
-    return value / (1.0 - margin) if margin < 1.0 else math.inf     # hold
+def requirement_probes(req) -> list[Probe]:
+    """The requirements and each envelope limit given."""
+    r, env = req.requirements, req.envelope
+    probes = [_requirement("requirements", "stroke", "requirement stroke", r.stroke, +1),
+              _requirement("requirements", "blocked_force", "requirement blocked_force", r.blocked_force, +1),
+              _requirement("requirements", "speed", "requirement speed", r.speed, +1),
+              _requirement("requirements", "max_temperature", "requirement max_temperature", r.max_temperature, +1,
+                           linear=True)]
+    for name in ("max_length", "max_diameter", "max_width", "max_mass"):
+        if getattr(env, name) is not None:
+            probes.append(_requirement("envelope", name, f"envelope {name}", getattr(env, name), -1))
+    return probes
 
 
-# how a person reads each changed value: (unit shown, factor from SI)
-DISPLAY = {"requirement stroke": ("mm", 1e3), "requirement speed": ("mm/s", 1e3), "requirement blocked_force": ("N", 1.0),
-           "requirement max_temperature": ("degC", 1.0), "duty hold_time": ("s", 1.0),
-           "option min_natural_frequency": ("Hz", 1.0), "continuous_current": ("A", 1.0), "max_current": ("A", 1.0),
-           "pressure_rating": ("MPa", 1e-6), "capacity": ("cm^3", 1e6), "max_temperature": ("degC", 1.0),
-           "max_frequency": ("Hz", 1.0)}
+def catalog_probes(catalog, deciding: list[str]) -> list[Probe]:
+    """The assumed catalog values ("part.field") in a binding margin."""
+    probes = []
+    for key in deciding:
+        ident, _, name = key.rpartition(".")
+        try:
+            value = getattr(catalog.get(ident)[1], name)
+        except (KeyError, AttributeError):
+            continue
+        if not isinstance(value, (int, float)) or not math.isfinite(value) or value == 0:
+            continue
+
+        def apply(req, cat, x, ident=ident, name=name):
+            return req, resolve.with_value(cat, ident, name, x)
+        hurts = +1 if any(word in name for word in HIGHER_HURTS) else -1
+        probes.append(Probe(f"assumed {ident} {name}", key, float(value), hurts, "temperature" in name, apply, ident))
+    return probes
 
 
-def _shown(what: str, value: float) -> str:
-    unit, factor = DISPLAY.get(what) or DISPLAY.get(what.split()[-1], ("", 1.0))
-    return f"{value * factor:.4g} {unit}".strip()
+class Search:
+    """The re-solves behind every flip of one solve. ``today``: each
+    technology's verdict as solved; ``known``: per (technology, value
+    changed), per value, what each design re-solved there gave
+    ({id: (feasible, first objective)})."""
 
+    def __init__(self, req, catalog, loads, candidates: list[dict], stages):
+        self.req, self.catalog, self.loads, self.stages = req, catalog, loads, stages
+        self.key = resolve.OBJECTIVE_KEYS[req.objectives.minimize[0]]
+        self.solved = {t: [c for c in candidates if c["technology"] == t]
+                       for t in dict.fromkeys(c["technology"] for c in candidates)}
+        self.today = {t: resolve.verdict_of(req, cs) for t, cs in self.solved.items()}
+        self.known: dict[tuple, dict[float, dict]] = {}
+        self.pool: dict[tuple, list] = {}
+        self.solves = 0
 
-def _change(what, old, new, design_id) -> dict:
-    rel = abs(new / old - 1.0) if old else math.inf
-    return {"what": what, "from": old, "to": new, "relative_change": rel, "design": design_id,
-            "text": f"{what} from {_shown(what, old)} to {_shown(what, new)} ({rel:.1%})"}
-
-
-def _relaxations(req, catalog, c) -> list[dict]:
-    """Single changes that make design ``c`` (missing exactly one check) feasible."""
-    missed = [k for k, v in c["margins"].items() if v is None or not v >= 0]
-    if len(missed) != 1 or c["margins"][missed[0]] is None or not math.isfinite(c["margins"][missed[0]]):
-        return []
-    key, m = missed[0], c["margins"][missed[0]]
-    out = []
-    reqs = _requirements(req)
-    if key in reqs:
-        what, value, how = reqs[key]
-        new = _moved(value, m, how) if how != "rating" else math.ceil(value / (1.0 + m) - 1e-9)
-        out.append(_change(what, value, new, c["id"]))
-    if key in RATINGS and catalog is not None:
-        kind, field = RATINGS[key]
-        part = _part(catalog, c.get("components", {}).get(kind))
-        value = getattr(part, field, None) if part is not None else None
-        if value:
-            new = value - m * abs(value) if field == "max_temperature" else value / (1.0 + m)
-            out.append(_change(f"{kind} {part.id} {field}", value, new, c["id"]))
-    return out
-
-
-def _part(catalog, ident):
-    try:
-        return catalog.get(ident)[1] if isinstance(ident, str) else None
-    except KeyError:
+    # --- designs at one value -----------------------------------------------
+    def known_at(self, tech: str, probe: Probe, x: float, c: dict) -> bool | None:
+        """Whether design ``c`` complies with the value ``x``, from what is
+        known without a re-solve: at ``x`` itself, at a stricter value where
+        it complied or at a looser one where it did not; None when unknown."""
+        if probe.holding is not None and not resolve.holds(c, probe.holding):
+            return bool(c["feasible"])                       # the change does not touch it
+        known = self.known.setdefault((tech, probe.field), {})
+        if x in known and c["id"] in known[x]:
+            return known[x][c["id"]][0]
+        s = self._strictness(probe, x)
+        for y, found in known.items():
+            ok = found.get(c["id"], (None,))[0]
+            if ok is True and self._strictness(probe, y) >= s or ok is False and self._strictness(probe, y) <= s:
+                return ok
         return None
 
+    def solve_at(self, tech: str, probe: Probe, x: float, cs: list[dict]) -> dict:
+        """Re-solve the combinations of designs ``cs`` with the value ``x``:
+        {id: (feasible, first objective)} of every design they give (a
+        design of ``cs`` that is not among them was ruled out)."""
+        req, catalog = probe.apply(self.req, self.catalog, x)
+        self.solves += 1
+        found = self.known.setdefault((tech, probe.field), {}).setdefault(x, {})
+        for fresh in resolve.units(self.stages, tech, req, catalog, self.loads, cs):
+            ok, driver = verdict(fresh["margins"])
+            found[fresh["id"]] = (ok, _objective(fresh, self.key), _slack(dict(fresh, driver=driver)))
+        for c in cs:
+            found.setdefault(c["id"], (False, math.inf, -math.inf))
+        return found
 
-def _tightenings(req, feasible: list[dict]) -> list[dict]:
-    """Requirement changes that make every feasible design miss."""
+    def design_at(self, tech: str, probe: Probe, x: float, c: dict) -> tuple[bool, float]:
+        """(feasible, first objective) of design ``c`` with the value ``x``."""
+        if probe.holding is not None and not resolve.holds(c, probe.holding):
+            return bool(c["feasible"]), _objective(c, self.key)
+        found = self.known.get((tech, probe.field), {}).get(x, {})
+        return (found[c["id"]] if c["id"] in found else self.solve_at(tech, probe, x, [c])[c["id"]])[:2]
+
+    @staticmethod
+    def _strictness(probe: Probe, x: float) -> float:
+        return (x - probe.value) * probe.stricter
+
+    # --- one technology at one value -----------------------------------------
+    def feasible_at(self, tech: str, probe: Probe, x: float) -> bool:
+        """Whether ``tech`` has a complying design with the value ``x``."""
+        if tech == "piezo_pump":
+            return self._pump(probe, x) is not None
+        undecided = []
+        for c in self._pool(tech, probe, x):
+            ok = self.known_at(tech, probe, x, c)
+            if ok:
+                return True
+            if ok is None:
+                undecided.append(c)
+        if not undecided:
+            return False
+        # the most slack design first (it often still complies), then the rest at once
+        for batch in (undecided[:1], undecided[1:]):
+            if batch:
+                found = self.solve_at(tech, probe, x, batch)
+                if any(found[c["id"]][0] for c in batch):
+                    return True
+        return False
+
+    def tightening_flip(self, tech: str, probe: Probe, end: float) -> float | None:
+        """Where a technology feasible today stops complying, stricter: the
+        largest flip of its feasible designs' (``_largest_flip``), confirmed
+        by re-solving the whole technology there. A solve simulates only
+        some of the designs that pass its screen, so the whole re-solve can
+        find one that still complies: the search goes on from it."""
+        alive, start = self.today[tech].alive, probe.value
+        while True:
+            to = self._largest_flip(tech, probe, end, alive, start)
+            if to is None:
+                return None
+            req, catalog = probe.apply(self.req, self.catalog, to)
+            self.solves += 1
+            alive = []
+            for c in resolve.whole(self.stages, tech, req, catalog, self.loads):
+                ok, driver = verdict(c["margins"])
+                if ok and (probe.holding is None or resolve.holds(c, probe.holding)):
+                    alive.append(dict(c, feasible=True, driver=driver))
+            if not alive:
+                return to
+            start = to
+
+    def _largest_flip(self, tech: str, probe: Probe, end: float, alive, start: float) -> float | None:
+        """The largest flip, from ``start``, of the designs ``alive`` (feasible
+        at ``start``): the most slack combination's own flip is bisected;
+        then the others are re-solved at once at that value, and only one
+        that still complies there is bisected further, until none does."""
+        groups: dict[str, list] = {}
+        for c in sorted(alive, key=_slack, reverse=True):
+            groups.setdefault(resolve.unit_key(tech, c), []).append(c)
+        if probe.holding is not None:
+            groups = {k: g for k, g in groups.items() if resolve.holds(g[0], probe.holding)}
+        every = [c for g in groups.values() for c in g]
+        at_end = self.solve_at(tech, probe, end, every)
+        if any(at_end[c["id"]][0] for c in every):
+            return None
+        survivors, first = list(groups.values()), start == probe.value
+        while survivors:           # a combination that fails at ``start`` fails at every stricter value
+            group, others = survivors[0], survivors[1:]
+            fails = lambda x, group=group: not self._complies(tech, probe, x, group)    # noqa: E731
+            start = bisect(fails, probe, end, start) if first else gallop(fails, probe, end, start)
+            first = False
+            rest = [c for g in others for c in g]
+            found = self.solve_at(tech, probe, start, rest) if rest else {}
+            survivors = [g for g in others if any(found[c["id"]][0] for c in g)]
+            # the one with the most slack there is likely the last to fail: bisected next
+            survivors.sort(key=lambda g: max(found[c["id"]][2] for c in g), reverse=True)
+        return start
+
+    def _complies(self, tech: str, probe: Probe, x: float, group: list) -> bool:
+        known = [self.known_at(tech, probe, x, c) for c in group]
+        if any(known):
+            return True
+        if all(k is False for k in known):
+            return False
+        found = self.solve_at(tech, probe, x, group)
+        return any(found[c["id"]][0] for c in group)
+
+    def _pool(self, tech: str, probe: Probe, x: float) -> list:
+        """The designs that can comply at ``x``, most slack first: those
+        feasible today (stricter values), or those feasible at the loosest
+        value searched (looser values; one whole re-solve there)."""
+        if self._strictness(probe, x) >= 0 and self.today[tech].feasible:
+            return sorted(self.today[tech].alive, key=_slack, reverse=True)
+        end = probe.end(-probe.stricter)
+        if (tech, probe.field) not in self.pool:
+            req, catalog = probe.apply(self.req, self.catalog, end)
+            self.solves += 1
+            fresh = resolve.whole(self.stages, tech, req, catalog, self.loads)
+            ok = [(verdict(c["margins"])[0], c) for c in fresh]
+            self.known.setdefault((tech, probe.field), {})[end] = {c["id"]: (f, _objective(c, self.key))
+                                                                  for f, c in ok}
+            self.pool[(tech, probe.field)] = sorted((c for f, c in ok if f), key=_slack, reverse=True)
+        return self.pool[(tech, probe.field)]
+
+    def _pump(self, probe: Probe, x: float):
+        known = self.known.setdefault(("piezo_pump", probe.field), {})
+        if x not in known:
+            req, catalog = probe.apply(self.req, self.catalog, x)
+            self.solves += 1
+            known[x] = resolve.pump_lightest(self.stages, req, catalog, self.loads)
+        return known[x]
+
+    # --- the recommendation --------------------------------------------------
+    def recommended(self) -> tuple[str, dict] | None:
+        """(technology, design) recommended today: the technologies' best
+        (by rank), the lightest of them in the first objective."""
+        feasible = [(v.objective, t) for t, v in self.today.items() if v.feasible]
+        if not feasible:
+            return None
+        tech = min(feasible)[1]
+        best = self.today[tech].best
+        return tech, next(c for c in self.solved[tech] if c["id"] == best)
+
+    def recommendation_changes(self, probe: Probe, x: float) -> bool:
+        """Whether the design recommended today is not recommended at a
+        stricter ``x``: it no longer complies, or another technology's
+        complying design is lighter in the first objective."""
+        lead, d0 = self.recommended()
+        ok, mine = self.design_at(lead, probe, x, d0)
+        if not ok:
+            return True
+        for tech, v in self.today.items():
+            if tech == lead or not v.feasible or v.objective >= mine:
+                continue              # stricter values only make it heavier
+            if tech == "piezo_pump":
+                found = self._pump(probe, x)
+                if found is not None and found[1] < mine:
+                    return True
+                continue
+            for c in sorted(v.alive, key=lambda c: _objective(c, self.key)):
+                if _objective(c, self.key) >= mine:
+                    break
+                ok, value = self.design_at(tech, probe, x, c)
+                if ok and value < mine:
+                    return True
+        return False
+
+
+def _objective(c: dict, key: str) -> float:
+    value = (c.get("metrics") or {}).get(key)
+    return float(value) if value is not None else math.inf
+
+
+def _slack(c: dict) -> float:
+    """A design's smallest margin (its driver's): the most slack is tried first."""
+    m = c["margins"].get(c.get("driver")) if c.get("driver") else None
+    return m if m is not None and math.isfinite(m) else -math.inf
+
+
+def bisect(changed: Callable[[float], bool], probe: Probe, end: float, start: float | None = None) -> float | None:
+    """The value nearest ``start`` (today's value by default), to the
+    tolerance, at which ``changed`` holds, between ``start`` (where it does
+    not) and ``end``; None when it does not hold at ``end``."""
+    if not changed(end):
+        return None
+    a, b = (probe.value if start is None else start), end
+    while not probe.close(a, b):
+        m = probe.middle(a, b)
+        if changed(m):
+            b = m
+        else:
+            a = m
+    return b
+
+
+def gallop(changed: Callable[[float], bool], probe: Probe, end: float, start: float) -> float:
+    """``bisect`` from ``start`` where the change is expected close by (the
+    next combination of a technology, just past the last one's flip): steps
+    of 1, 2, 4 ... tolerances until it holds, then bisection in the last step."""
+    step, a = 2.0 * TOLERANCE, start
+    while True:
+        b = (a + step * max(abs(probe.value), 1.0) * probe.stricter if probe.linear
+             else a * (1.0 + step) ** probe.stricter)
+        if (b - end) * probe.stricter >= 0:
+            return bisect(changed, probe, end, a)
+        if changed(b):
+            return bisect(changed, probe, b, a)
+        a, step = b, 2.0 * step
+
+
+def _entry(probe: Probe, to: float | None, end: float, changes: str) -> dict:
+    return {"what": probe.what, "field": probe.field, "from": probe.value, "to": to, "changes": changes,
+            "method": "re-solve", "tolerance": TOLERANCE, "within": sorted([probe.value, end])}
+
+
+def technology_flips(search: Search, tech: str, probes: list[Probe]) -> list[dict]:
+    """Where ``tech``'s feasibility changes, one entry per probe."""
+    today = search.today[tech]
     out = []
-    for key, (what, value, how) in _requirements(req).items():
-        if how == "rating":
+    for probe in probes:
+        end = probe.end(probe.stricter if today.feasible else -probe.stricter)
+        if probe.holding is not None and today.feasible and any(
+                not resolve.holds(c, probe.holding) for c in today.alive):
+            out.append(_entry(probe, None, end, "feasibility"))   # a feasible design without the part survives
             continue
-        margins = [c["margins"].get(key) for c in feasible]
-        if any(m is None or not math.isfinite(m) for m in margins):
-            continue                          # a design that does not depend on it survives any change
-        worst = max(margins, key=lambda m: m)
-        best = max(feasible, key=lambda c: c["margins"][key])
-        out.append(_change(what, value, _moved(value, worst, how), best["id"]))
+        if today.feasible and tech != "piezo_pump":
+            to = search.tightening_flip(tech, probe, end)
+        else:
+            to = bisect(lambda x: search.feasible_at(tech, probe, x) != today.feasible, probe, end)
+        out.append(_entry(probe, to, end, "feasibility"))
     return out
 
 
-def flip(req, catalog, members: list[dict]) -> dict | None:
-    """The smallest single change that flips the verdict of a technology
-    whose designs are ``members``; None when no single change is known to."""
-    feasible = [c for c in members if c.get("feasible")]
-    if feasible:
-        options = _tightenings(req, feasible)
+def recommendation_flips(search: Search, probes: list[Probe], feasibility: list[dict]) -> list[dict]:
+    """Where the recommended design changes, one entry per probe (stricter
+    values); it changes at the latest where its technology's feasibility does."""
+    ends = {f["field"]: f["to"] for f in feasibility if f["to"] is not None}
+    out = []
+    for probe in probes:
+        end = ends.get(probe.field, probe.end(probe.stricter))
+        to = bisect(lambda x: search.recommendation_changes(probe, x), probe, end)
+        out.append(_entry(probe, to, probe.end(probe.stricter), "recommendation"))
+    return out
+
+
+def flips(req, catalog, loads, candidates: list[dict], deciding: dict[str, list[str]], stages) -> tuple[dict, int]:
+    """Per technology its ``flips`` entries (docs/formats.md), and the
+    number of re-solves they took. ``deciding``: per technology, the
+    assumed catalog values in its best design's binding margin;
+    ``stages``: the technologies' stages of the solve (``solve.technology_stages``)."""
+    search = Search(req, catalog, loads, candidates, stages)
+    reqs = requirement_probes(req)
+    out = {}
+    for tech in search.today:
+        probes = reqs + catalog_probes(catalog, deciding.get(tech, []))
+        out[tech] = technology_flips(search, tech, probes)
+    lead = search.recommended()
+    if lead is not None:
+        probes = reqs + catalog_probes(catalog, deciding.get(lead[0], []))
+        out[lead[0]] += recommendation_flips(search, probes, out[lead[0]])
     else:
-        options = [x for c in members for x in _relaxations(req, catalog, c)]
-    options = [o for o in options if math.isfinite(o["relative_change"])]
-    return min(options, key=lambda o: o["relative_change"]) if options else None
+        out = _first_feasible(out)
+    return out, search.solves
+
+
+def _first_feasible(out: dict) -> dict:
+    """No technology feasible: the recommendation changes where the first
+    one becomes feasible, the nearest of their feasibility flips."""
+    out = {t: list(entries) for t, entries in out.items()}
+    fields = {e["field"] for entries in out.values() for e in entries}
+    for field in fields:
+        found = [(abs(_relative(e)), t, e) for t, entries in out.items() for e in entries
+                 if e["field"] == field and e["to"] is not None]
+        if found:
+            _, tech, e = min(found, key=lambda f: f[0])
+            out[tech].append(dict(e, changes="recommendation"))
+    return out
+
+
+def _relative(e: dict) -> float:
+    """How far ``to`` is from ``from``, relative (degC for a temperature)."""
+    a, b = e["from"], e["to"]
+    return (b - a) / max(abs(a), 1.0) if "temperature" in e["field"] else b / a - 1.0
+
+
+def smallest(entries: list[dict] | None) -> dict | None:
+    """The flip that needs the smallest change, with a line people read
+    (results.json ``flip``); None when nothing flips in range."""
+    found = [e for e in entries or [] if e["to"] is not None]
+    if not found:
+        return None
+    e = min(found, key=lambda e: abs(_relative(e)))
+    return dict(e, relative_change=abs(_relative(e)), text=flip_text(e))
+
+
+def flip_text(e: dict) -> str:
+    """One flip as people read it, in their units."""
+    probe = Probe(e["what"], e["field"], e["from"], 0, False, None)
+    name = e["what"].removeprefix("requirement ")
+    what = "the recommendation changes" if e["changes"] == "recommendation" else "the verdict flips"
+    if e["to"] is None:
+        lo, hi = e["within"]
+        return f"{name}: nothing flips between {probe.shown(lo)} and {probe.shown(hi)}"
+    sign = "+" if e["to"] > e["from"] else "-"
+    return (f"{name} {probe.shown(e['from'])} -> {probe.shown(e['to'])} ({sign}{abs(_relative(e)):.0%}"
+            f"{' of its degC' if 'temperature' in e['field'] else ''}): {what}")

@@ -63,13 +63,7 @@ def pump_designs(req, catalog, loads: list[float], progress=None, step_factor: f
     gs, ruled = screen.groups(req, catalog)
     if not gs:
         return _nothing(ruled)
-    R = screen.rows(req, catalog, gs)
-    st = screen.figures(req, R, loads)
-    st.update(screen.drive(req, gs, R, st))
-    M = screen.margins(req, gs, R, st, loads)
-    met = screen.metrics(req, gs, R, st)
-    valid = np.isfinite(st["cylinder_diameter_m"])
-    outside = screen.envelope(req, R, st, met) if valid.any() else np.full(len(valid), "", dtype=object)
+    R, st, M, met, valid, outside = _screened(req, catalog, gs, loads)
     records = _envelope_records(gs, R, outside)
     valid &= outside == ""
     G = np.vstack([np.where(np.isfinite(v), v, -np.inf) for v in M.values()])
@@ -103,6 +97,40 @@ def pump_designs(req, catalog, loads: list[float], progress=None, step_factor: f
         {"combinations": int(len(R["group"])), "groups": len(gs), "simulated": len(chosen),
          "screen_feasible": int((worst >= 0).sum()), "parts_not_rated": ruled,
          "outside_envelope": int((outside != "").sum())}))
+
+
+def _screened(req, catalog, gs, loads) -> tuple:
+    """The static screen over every row: rows, figures, margins, metrics,
+    which rows have a bore and why a row leaves the envelope ("" inside)."""
+    R = screen.rows(req, catalog, gs)
+    st = screen.figures(req, R, loads)
+    st.update(screen.drive(req, gs, R, st))
+    M = screen.margins(req, gs, R, st, loads)
+    met = screen.metrics(req, gs, R, st)
+    valid = np.isfinite(st["cylinder_diameter_m"])
+    outside = screen.envelope(req, R, st, met) if valid.any() else np.full(len(valid), "", dtype=object)
+    return R, st, M, met, valid, outside
+
+
+# the margin the cycle simulation replaces (``_design``): the others are final after the screen
+SIMULATED_MARGINS = ("speed",)
+
+
+def could_comply(req, catalog, loads: list[float]) -> bool:
+    """Whether some pump row inside the envelope passes every static check
+    the simulation does not replace: when none does, no simulated pump can
+    comply, and a re-solve (``resolve.py``) need not simulate."""
+    if not (catalog.valves and catalog.accumulators and catalog.stacks):
+        return False
+    gs, _ = screen.groups(req, catalog)
+    if not gs:
+        return False
+    R, st, M, met, valid, outside = _screened(req, catalog, gs, loads)
+    ok = valid & (outside == "")
+    for k, v in M.items():
+        if k not in SIMULATED_MARGINS:
+            ok &= np.nan_to_num(v, nan=-1.0) >= 0
+    return bool(ok.any())
 
 
 def _nothing(ruled: dict) -> PumpOutcome:

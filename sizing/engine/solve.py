@@ -25,6 +25,7 @@ import math
 import time
 from collections import Counter
 from dataclasses import dataclass, field
+from types import SimpleNamespace
 
 import numpy as np
 
@@ -36,7 +37,9 @@ from . import assumed, names, piezo_designs
 from .candidate import design_candidate, pruned_candidate, ruled_out_record
 from .dc_candidate import actuator_candidate, parts_candidate
 from .dc_candidates import actuator_designs
+from .comparison import technology_comparison
 from .dc_sizing import dc_parts_designs
+from .flip import flips
 from .loads import load_cases
 from .piezo import Candidates
 from .pump import pump_designs
@@ -86,13 +89,13 @@ class Outcome:
 
 
 def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, progress=None,
-          detail: str = "summary") -> SolveOutput:
+          detail: str = "summary", fast: bool = False) -> SolveOutput:
     """Run the whole search: each technology enumerates, sizes and verifies
     its designs (``_piezohydraulic``, ``_dc_motor``), then all are ranked in
     one list. ``progress(stage, done, total)`` is called while candidates are
     sized and simulated. ``detail``: "summary" counts the combinations ruled
     out before sizing by reason; "full" also keeps a record of each, with the
-    nominal figures of its parts."""
+    nominal figures of its parts. ``fast``: no flips (``flips`` null)."""
     start = time.perf_counter()
     cases = load_cases(req.load)
     loads = [c["load_N"] for c in cases]
@@ -109,9 +112,11 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
     stages = Stages.of(verified, dc_records, pumps)
     results = _results(req, requirements_sha256, catalog, cases, candidates, outcomes,
                        _disagreements(verified, {c["id"]: c["name"] for c in candidates}))
+    results["flips_cost"] = None if fast else _with_flips(req, catalog, loads, candidates, results["summary"])
     traces = _traces(req, candidates, stages, loads)
     if detail != "full":
         results = _keep_verified(results)
+    results["summary"]["counts"] = summary_counts(results)
     results["runtime_s"] = time.perf_counter() - start
     return SolveOutput(results=_clean(results), traces=traces, stages=stages)
 
@@ -140,9 +145,27 @@ def _results(req, requirements_sha256, catalog, cases, candidates, outcomes, dis
     }
 
 
-def _piezohydraulic(req, catalog, loads, progress, detail) -> tuple[Outcome, list[VerifiedDesign]]:
-    """Enumerate, size, build and verify the piezohydraulic designs."""
-    combos = enumerate_combos(req, catalog)
+def technology_stages() -> SimpleNamespace:
+    """Each technology's stages of the solve, for the re-solves of the flips
+    (``resolve.py``): ``piezohydraulic``, ``dc_motor``, ``piezo_pump``."""
+    return SimpleNamespace(piezohydraulic=_piezohydraulic, dc_motor=_dc_motor, piezo_pump=_piezo_pump)
+
+
+def _with_flips(req, catalog, loads, candidates, summary) -> dict:
+    """Re-solve what would flip each verdict (``flip.py``) and rebuild the
+    comparison with it; returns what that cost."""
+    start = time.perf_counter()
+    techs = summary["comparison"]["technologies"]
+    found, solves = flips(req, catalog, loads, candidates, {t: e["deciding_assumed"] for t, e in techs.items()},
+                          technology_stages())
+    summary["comparison"] = technology_comparison(req, candidates, catalog, flips=found)
+    return {"re_solves": solves, "seconds": time.perf_counter() - start}
+
+
+def _piezohydraulic(req, catalog, loads, progress, detail, only=None) -> tuple[Outcome, list[VerifiedDesign]]:
+    """Enumerate, size, build and verify the piezohydraulic designs
+    (``only(combo)``: the combinations to keep, for a re-solve)."""
+    combos = [c for c in enumerate_combos(req, catalog) if only is None or only(c)]
     to_size = [c for c in combos if not c.pruned]
     pruned = [c for c in combos if c.pruned]
     brief = PiezoBrief.of(req)               # what the stages read of the requirements, once
@@ -303,6 +326,32 @@ def _keep_verified(results: dict) -> dict:
         counts[why] = counts.get(why, 0) + n
     return dict(results, candidates=[dict(c, rank=rank) for rank, c in enumerate(kept, start=1)],
                 summary=dict(summary, ruled_out=ruled, ruled_out_by_technology=by_tech))
+
+
+def summary_counts(results: dict) -> dict:
+    """Every count the terminal and the report show, in one place
+    (results.json ``summary.counts``): per technology the combinations
+    enumerated, those ruled out before sizing, the designs left out
+    before ranking (by reason in ``summary.ruled_out_by_technology``), those
+    ranked in ``candidates`` and the feasible ones; the piezohydraulic
+    combinations sized and designs simulated; totals."""
+    raw, by_tech = results["counts"], results["summary"]["ruled_out_by_technology"]
+    cands = results["candidates"]
+    stages = {"piezohydraulic": raw, "dc_motor": raw.get("dc_parts") or {}, "piezo_pump": raw.get("piezo_pump") or {}}
+    out = {}
+    for tech, own in stages.items():
+        ranked = [c for c in cands if c["technology"] == tech]
+        catalog_units = sum(1 for c in ranked if "actuator" in (c.get("components") or {}))
+        before = int(own.get("pruned", 0)) if tech == "piezohydraulic" else 0
+        out[tech] = {"combinations": int(own.get("combinations", 0)) + catalog_units,
+                     "ruled_out_before_sizing": before,
+                     "left_out": int(sum(by_tech.get(tech, {}).values())) - before,
+                     "simulated": int(own.get("simulated", 0)),
+                     "ranked": len(ranked), "feasible": sum(1 for c in ranked if c["feasible"])}
+    out["piezohydraulic"]["sized"] = int(raw.get("sized", 0))
+    out["ranked"] = len(cands)
+    out["feasible"] = sum(1 for c in cands if c["feasible"])
+    return out
 
 
 def _pruned_reason(combo: Combo) -> str:

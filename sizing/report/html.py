@@ -150,6 +150,17 @@ def _checks_table(cands: list[dict]) -> str:
 
 def _pruned_table(results: dict) -> str:
     pruned = [c for c in results["candidates"] if c.get("stage") == "pruned" and c["technology"] == "piezohydraulic"]
+    counted = ((results["summary"].get("counts") or {}).get("piezohydraulic") or {}).get("ruled_out_before_sizing", 0)
+    if counted and not pruned:        # counted by reason, not recorded (solve --detail full records each)
+        reasons = (results["summary"].get("ruled_out_by_technology") or {}).get("piezohydraulic") or {}
+        rows = "".join(f"<tr><td class='l'>{_e(k)}</td><td>{v:,}</td></tr>" for k, v in reasons.items())
+        return (f"<p>{counted:,} piezohydraulic combinations were ruled out before sizing; they are counted by the "
+                f"requirement each misses most, not recorded one by one (<code>sizing solve --detail full</code> "
+                f"keeps a record of each with its margins). Left out before ranking, by reason (combinations "
+                f"before sizing, designs after):</p><table><tr><th class='l'>ruled out by</th><th>count</th></tr>"
+                f"{rows}</table>" + _dc_pruned_table(results))
+    if not pruned:
+        return "<p>No combination was ruled out before sizing.</p>" + _dc_pruned_table(results)
     by = Counter((c["components"]["stack"], c["driver"]) for c in pruned)
     rows = "".join(f"<tr><td class='l'>{_e(s)}</td><td class='l'>{_e(d)}</td><td>{n}</td></tr>"
                    for (s, d), n in sorted(by.items()))
@@ -186,8 +197,13 @@ def _changes(results: dict, limit: int = 60) -> str:
         cid = ch.get("id", "")
         items.append(f"<li><b title='{_e(cid)}'>{_e(names.get(cid) or ch.get('name') or cid)}</b>: {_e(text)}</li>")
     more = f"<p>... and {len(changes) - limit} more in results.json (\"changes\").</p>" if len(changes) > limit else ""
-    cause = (results.get("changes_summary") or {}).get("text")
+    summary = results.get("changes_summary") or {}
+    cause = summary.get("text")
     lead = f"<div class='box'><b>{_e(cause)}</b></div>" if cause else ""
+    if summary.get("answer"):
+        lead = (f"<div class='box'><b>{_e(summary['answer'])}</b><ul>"
+                + "".join(f"<li>{_e(t)}</li>" for t in summary.get("technologies", [])) + "</ul>"
+                + _e(cause.split(". ")[-1]) + "</div>")
     return (f"<h2>What changed</h2>{lead}<p>{len(changes)} candidates changed standing against the baseline "
             f"(most important first):</p><ul>{''.join(items)}</ul>{more}")
 
@@ -239,15 +255,14 @@ def _answer(summary: dict) -> str:
         deciding = t.get("deciding_assumed_words") or t.get("deciding_assumed") or []
         rests = (f"{len(t.get('rests_on_assumed') or [])} assumed values; in its binding margin: "
                  + (_e("; ".join(deciding)) if deciding else "none"))
-        f = t.get("flip")
-        flip = _e(f["text"]) if f else "none known"
+        flip = _flips_cell(t)
         rows.append(f"<tr><td class='l'><b>{_e(TECH_LABELS.get(tech, tech))}</b></td><td class='l'>{'feasible' if t.get('feasible') else 'infeasible'}"
                     f"</td><td class='l' title='{_e(t.get('best'))}'><b>{_e(t.get('name') or t.get('best'))}</b>"
                     f"{_description(t)}<br>{_e(metrics)}</td>"
                     f"<td class='l'>{binding}</td>"
                     f"<td class='l'>{rests}</td><td class='l'>{flip}</td></tr>")
     by_tech = summary.get("ruled_out_by_technology") or {"": summary.get("ruled_out") or {}}
-    ruled_text = _ruled_out_text(by_tech)
+    ruled_text = _ruled_out_text(by_tech, summary.get("counts") or {})
     sourced = (summary.get("dc_sourced") or {}).get("text")
     if sourced:
         ruled_text = f"{_e(sourced)}</p><p>{ruled_text}"
@@ -282,17 +297,39 @@ def _description(t: dict) -> str:
     return f"<br><span class='words'>{_e(t['description'])}</span>" if t.get("description") else ""
 
 
-def _ruled_out_text(by_tech: dict) -> str:
-    """Per technology, how many designs were left out and the three checks
-    that left out most; the whole count by check one click away."""
+def _flips_cell(t: dict) -> str:
+    """What would flip a technology's verdict (and the recommendation), in
+    people's units: each value that flips, then the ranges where none does."""
+    from ..engine.flip import flip_text
+    flips = t.get("flips")
+    if flips is None:
+        return "not computed (solve --fast)" if "flips" in t else (_e(t["flip"]["text"]) if t.get("flip") else "none known")
+    found = sorted((f for f in flips if f.get("to") is not None), key=lambda f: f["changes"] != "feasibility")
+    none = [f for f in flips if f.get("to") is None]
+    return "<br>".join([_e(flip_text(f)) for f in found] + [_e(flip_text(f)) for f in none]) or "nothing examined"
+
+
+def _ruled_out_text(by_tech: dict, counts: dict | None = None) -> str:
+    """Per technology, how many combinations were ruled out before sizing
+    and how many designs were left out before ranking (``summary.counts``)
+    and the three checks that left out most; the whole count by check one
+    click away."""
     lines = []
-    for tech, counts in by_tech.items():
-        if not counts:
+    for tech, reasons in by_tech.items():
+        if not reasons:
             continue
-        top = sorted(counts.items(), key=lambda kv: -kv[1])
+        top = sorted(reasons.items(), key=lambda kv: -kv[1])
         head = ", ".join(f"{_e(k)} {v:,}" for k, v in top[:3]) + (f", {len(top) - 3} other checks" if len(top) > 3 else "")
         rest = ", ".join(f"{_e(k)} {v:,}" for k, v in top)
-        lines.append(f"<li><b>{_e(TECH_LABELS.get(tech, tech) or 'all')}</b>: {sum(counts.values()):,} "
+        own = (counts or {}).get(tech) or {}
+        if own.get("ruled_out_before_sizing"):
+            total = (f"{own['ruled_out_before_sizing']:,} of {own['combinations']:,} combinations ruled out before "
+                     f"sizing, {own['left_out']:,} designs left out after")
+        elif "left_out" in own:            # no sizing stage: the screen and the simulation leave them out
+            total = f"{own['left_out']:,} of {own['combinations']:,} combinations left out"
+        else:
+            total = f"{sum(reasons.values()):,}"
+        lines.append(f"<li><b>{_e(TECH_LABELS.get(tech, tech) or 'all')}</b>: {total} "
                      f"({head}) <details><summary>every check</summary>{rest}</details></li>")
     if not lines:
         return ""
@@ -350,6 +387,9 @@ def render(results: dict, traces: list[dict]) -> str:
     loads = ", ".join(f"{c['load_N']:.0f} N" + (f" ({c['dynamic_pressure_Pa'] / 1e3:g} kPa)" if "dynamic_pressure_Pa" in c else "")
                       for c in results["load_cases"])
     counts = results["counts"]
+    ph = (summary.get("counts") or {}).get("piezohydraulic") or {
+        "combinations": counts["combinations"], "ruled_out_before_sizing": counts["pruned"], "sized": counts["sized"],
+        "simulated": counts["simulated"]}      # a results.json written before summary.counts
     stamp = (f"sizing {_e(results['tool_version'])} &middot; requirements sha256 {_e(results['requirements_sha256'])}"
              f" &middot; catalog sha256 {_e(results['catalog_sha256'])} &middot; solved in {results.get('runtime_s', 0):.1f} s")
     body = f"""
@@ -359,8 +399,8 @@ def render(results: dict, traces: list[dict]) -> str:
 <p>Requirements: stroke {req['stroke_m'] * 1e3:g} mm, blocked force {req['blocked_force_N'] / 1e3:g} kN,
 speed {req['speed_m_s'] * 1e3:g} mm/s (stroke within {req['stroke_time_s']:g} s), every component to
 {req['max_temperature_degC']:g} degC. Load cases: {_e(loads)}. Objectives: minimise {_e(', '.join(results['objectives']))}.
-{counts['combinations']} piezohydraulic combinations ({counts['pruned']} ruled out before sizing,
-{counts['sized']} sized by geometric programs, {counts['simulated']} verified by simulation) and
+{ph['combinations']:,} piezohydraulic combinations ({ph['ruled_out_before_sizing']:,} ruled out before sizing,
+{ph['sized']:,} sized by geometric programs, {ph['simulated']:,} designs verified by simulation) and
 {_count(sum(1 for c in dc if 'actuator' in c['components']), 'catalog DC actuator')};
 {_dc_parts_line(counts)}.</p>
 {headline}

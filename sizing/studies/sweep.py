@@ -97,7 +97,7 @@ def run_point(task: PointTask) -> dict:
     from ..engine.solve import solve            # imported here: the engine's imports take seconds
     req = parse_requirements(task.data, task.path)
     sha = hashlib.sha256(json.dumps(task.data, sort_keys=True, default=str).encode()).hexdigest()
-    results = solve(req, sha, task.catalog).results
+    results = solve(req, sha, task.catalog, fast=True).results     # a point needs feasibility, not flips
     return point_summary(results, task.varied)
 
 

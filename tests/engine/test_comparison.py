@@ -56,24 +56,26 @@ def test_infeasible_side_is_counted_by_its_lightest_one_miss_design_with_what_it
     assert "lighter than" not in slow["recommendation"]
 
 
-def test_what_would_flip_each_verdict():
-    """A feasible technology flips when every feasible design misses: the
-    requirement tightened past the largest margin on it (speed +10 % and
-    +25 %: 0.1 m/s -> 0.125 m/s, 25 %). An infeasible one flips when one
-    design's only miss closes: blocked force -4 % (2500 N -> 2400 N) beats
-    stroke -20 % (40 mm -> 32 mm)."""
+def test_the_flip_shown_is_the_smallest_re_solved_one():
+    """``flip`` is the entry of ``flips`` that needs the smallest change
+    (speed +25 % beats stroke +50 %); nothing flips in range: null, said so;
+    flips not computed (``solve --fast``): null, said so."""
     req, _ = load_requirements(STUDIES / "seed-requirements.toml")
-    cands = [
-        _cand("dc-a", "dc_motor", True, {"speed": 0.1, "stroke": 0.5}, 2.0, 1),
-        _cand("dc-b", "dc_motor", True, {"speed": 0.25, "stroke": 0.6}, 3.0, 2),
-        _cand("ph-a", "piezohydraulic", False, {"blocked_force": -0.04, "stroke": 0.2}, 100.0, 3),
-        _cand("ph-b", "piezohydraulic", False, {"stroke": -0.2, "blocked_force": 0.1}, 90.0, 4),
-        _cand("ph-c", "piezohydraulic", False, {"stroke": -0.01, "speed": -0.01}, 80.0, 5),   # two misses
-    ]
-    out = technology_comparison(req, cands)["technologies"]
-    dc, ph = out["dc_motor"]["flip"], out["piezohydraulic"]["flip"]
-    assert dc["what"] == "requirement speed" and dc["to"] == pytest.approx(0.125) and dc["relative_change"] == pytest.approx(0.25)
-    assert ph["what"] == "requirement blocked_force" and ph["to"] == pytest.approx(2400.0) and ph["design"] == "ph-a"
+    cands = [_cand("dc-a", "dc_motor", True, {"speed": 0.1, "stroke": 0.5}, 2.0, 1)]
+    entry = {"method": "re-solve", "tolerance": 0.01, "changes": "feasibility"}
+    flips = {"dc_motor": [dict(entry, what="requirement stroke", field="stroke", to=0.06, within=[0.04, 0.16], **{"from": 0.04}),
+                          dict(entry, what="requirement speed", field="speed", to=0.125, within=[0.1, 0.4], **{"from": 0.1}),
+                          dict(entry, what="requirement blocked_force", field="blocked_force", to=None,
+                               within=[2500.0, 10000.0], **{"from": 2500.0})]}
+    dc = technology_comparison(req, cands, flips=flips)["technologies"]["dc_motor"]
+    assert dc["flip"]["field"] == "speed" and dc["flip"]["relative_change"] == pytest.approx(0.25)
+    assert dc["flip"]["text"].startswith("speed 100 mm/s -> 125 mm/s (+25%)")
+    from sizing.engine.flip import flip_text
+    assert flip_text(flips["dc_motor"][2]) == "blocked_force: nothing flips between 2500 N and 10,000 N"
+    none = technology_comparison(req, cands, flips={"dc_motor": flips["dc_motor"][2:]})
+    assert none["technologies"]["dc_motor"]["flip"] is None and "within the ranges searched" in none["text"]
+    fast = technology_comparison(req, cands)
+    assert fast["technologies"]["dc_motor"]["flips"] is None and "not computed (solve --fast)" in fast["text"]
 
 
 def test_the_recommendation_names_the_lighter_feasible_technology():

@@ -186,22 +186,12 @@ def solve(requirements: Path = typer.Argument(..., help="requirements.toml (docs
         knife = results.knife_edges()
         if knife:
             typer.echo(knife)
-        _echo_flips(results["summary"].get("comparison", {}).get("technologies", {}))
+        for line in results.flip_lines():
+            typer.echo(line)
         typer.echo(f"{out}/report.html, results.json, candidates.csv written "
                    f"({results['runtime_s']:.1f} s"
                    + (f", and {results['compliance_s']:.1f} s for the probability of compliance"
                       if results.get("compliance_s") is not None else "") + ")")
-
-
-def _echo_flips(technologies: dict) -> None:
-    """What would flip each verdict, re-solved, in the user's units."""
-    from .engine.flip import flip_text
-    for tech, t in technologies.items():
-        flips = t.get("flips")
-        if flips is None:
-            continue
-        shown = sorted(flips, key=lambda f: (f["to"] is None, f["changes"] != "feasibility"))
-        typer.echo(f"what would flip {tech} (re-solved, to 1 %): " + "; ".join(flip_text(f) for f in shown))
 
 
 def _solve(requirements, out, catalog, baseline, quiet, detail="summary", robust=None, fast=False):

@@ -36,6 +36,20 @@ class SolveResult(Payload):
         from ..report.text import knife_edge_text
         return knife_edge_text(self.results["summary"].get("comparison", {}))
 
+    def flip_lines(self) -> list[str]:
+        """What would flip each technology's verdict, re-solved, in the
+        user's units: one terminal line per technology (none with --fast)."""
+        from ..engine.comparison import LABELS
+        from ..engine.flip import flip_text
+        lines = []
+        for tech, t in self.results["summary"].get("comparison", {}).get("technologies", {}).items():
+            flips = t.get("flips")
+            if flips is None:
+                continue
+            shown = sorted(flips, key=lambda f: (f["to"] is None, f["changes"] != "feasibility"))
+            lines.append(f"what would flip the {LABELS.get(tech, tech)} (re-solved, to 1 %): " + "; ".join(flip_text(f) for f in shown))
+        return lines
+
     def files(self) -> dict:
         """results.json, candidates.csv, report.html, plotly.js and the
         catalog snapshot a later ``--baseline`` diffs against."""

@@ -502,7 +502,7 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
 
 
 class ChannelView:
-    """A candidate seen on one logged channel: its holdout NRMSE and
+    """A candidate as one logged channel shows it: its holdout NRMSE and
     residual block energies are that channel's; everything else is the
     candidate's."""
 

@@ -139,28 +139,13 @@ def pick(fits, seed: int = 0, floor: float = 0.0, settings: Settings = DEFAULT):
     if singles:
         single = singles[0]
         gain = explained(single.nrmse_holdout, best.nrmse_holdout, floor)
-        earned = ((gain >= settings.pair_gain and partner_substantial(single, best, floor))
-                  or removes_what_is_left(single, best, settings))
+        earned = gain >= settings.pair_gain or removes_what_is_left(single, best, settings)
         if (separation_p(best.residual_blocks, single.residual_blocks, seed) >= settings.alpha or not earned
                 or best.nrmse_train > single.nrmse_train
                 or not partner_identified(fits, best, single, seed, settings)
                 or not beyond_form(fits, best, single, settings)):
             return single
     return best
-
-
-def partner_substantial(single, pair, floor: float) -> bool:
-    """Whether the partner removes at least the floor's own energy beyond
-    its single on the holdout, single^2 - pair^2 >= floor^2: the rule an
-    effect named alone meets (Evidence.substantial), asked of the second
-    effect too. A partner that takes less is of the size of the single's
-    own form error, which any flexible family takes up: on the
-    independent generator's slew-limit and delay cases an air partner took
-    1.8e-6 to 3.9e-6 of the holdout energy beyond the single against a
-    floor's 4.1e-6 to 5.4e-6, while its true slew-limit and leak pair took
-    3.5e-5 against 4.4e-6. Not asked of a partner judged on a spectral
-    line (removes_what_is_left), as the line rule asks it of no effect."""
-    return single.nrmse_holdout ** 2 - pair.nrmse_holdout ** 2 >= floor ** 2
 
 
 def removes_what_is_left(single, pair, settings: Settings = DEFAULT) -> bool:

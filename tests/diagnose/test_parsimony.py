@@ -71,29 +71,3 @@ def test_candidates_ranked_on_the_holdout_are_separated_at_the_stated_level():
         two_sided += judge.separation_p(better, worse, seed=k, n_boot=400) < 0.05
     assert 0.075 < one_sided / trials < 0.14
     assert 0.025 < two_sided / trials < 0.075
-
-
-def test_a_partner_must_remove_the_floors_own_energy_beyond_its_single():
-    """By hand: a delay alone leaves 0.0022 and with an air partner 0.00174
-    against a floor of 0.00204 (0.0022^2 - 0.00174^2 = 1.81e-6 < 4.16e-6):
-    the single is taken although the pair removes all the single leaves
-    above the floor (gain 1 > PAIR_GAIN); a slew limit alone leaving 0.0061
-    and 0.00163 with a leak (3.45e-5 > 4.36e-6 at a floor of 0.00209):
-    the pair."""
-    delay = get("piezohydraulic", "sensor_delay")
-    air = next(e for e in library("piezohydraulic") if e.name == "fluid_compressibility")
-    slew = get("piezohydraulic", "amplifier_slew_limit")
-    leak = get("piezohydraulic", "leakage")
-    rng = np.random.default_rng(0)
-
-    def fit(effects, nrmse, train):
-        z = np.concatenate([e.unit({p.name: p.lo + 0.3 * (p.hi - p.lo) for p in e.params}) for e in effects])
-        return EffectFit(tuple(effects), z, train, nrmse_holdout=nrmse,
-                         residual_blocks=nrmse ** 2 / 40 * (1.0 + 0.01 * rng.normal(size=40)))
-
-    single, pair = fit((delay,), 0.0022, 0.0030), fit((delay, air), 0.00174, 0.0029)
-    assert not judge.partner_substantial(single, pair, 0.00204)
-    assert judge.pick([pair, single], floor=0.00204).name == "sensor_delay"
-    single, pair = fit((slew,), 0.0061, 0.0070), fit((slew, leak), 0.00163, 0.0020)
-    assert judge.partner_substantial(single, pair, 0.00209)
-    assert judge.pick([pair, single], floor=0.00209).name == "amplifier_slew_limit+leakage"

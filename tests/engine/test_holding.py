@@ -134,7 +134,7 @@ def test_with_the_screws_stiffness_required_the_verdict_names_it():
     from sizing.engine.solve import solve
     from sizing.io.catalog import load_catalog
     req, sha = load_requirements(STUDIES / "seed-requirements.toml")
-    plain = solve(req, sha, load_catalog()).results
+    plain = solve(req, sha, load_catalog(), fast=True).results      # verdicts only: no flips
     techs = plain["summary"]["comparison"]["technologies"]
     by_id = {c["id"]: c for c in plain["candidates"]}
     dc = by_id[techs["dc_motor"]["best"]]
@@ -146,7 +146,7 @@ def test_with_the_screws_stiffness_required_the_verdict_names_it():
         assert worst["travel_from_neutral_m"] == pytest.approx(worst["stroke_m"] - worst["rest_offset_m"], rel=1e-9)
     k_dc = dc["static"]["output_stiffness_N_m"]
     stiff = req.model_copy(update={"requirements": req.requirements.model_copy(update={"min_stiffness": k_dc})})
-    out = solve(stiff, sha, load_catalog()).results
+    out = solve(stiff, sha, load_catalog(), fast=True).results
     piezo = out["summary"]["comparison"]["technologies"]["piezohydraulic"]
     assert not piezo["feasible"] and piezo["binding"] == "stiffness"
     assert out["summary"]["comparison"]["technologies"]["dc_motor"]["feasible"]

@@ -431,16 +431,16 @@ def test_impossible_requirements_exit_0_and_name_the_blocker(tmp_path):
 def test_baseline_adds_what_changed(tmp_path):
     out1, out2 = tmp_path / "a", tmp_path / "b"
     base = STUDIES / "seed-requirements.toml"
-    assert run_cli("solve", base, "--out", out1, "--quiet")[0] == 0
+    assert run_cli("solve", base, "--out", out1, "--quiet", "--fast")[0] == 0
     harder = tmp_path / "harder.toml"
     harder.write_text(base.read_text().replace('"2.5 kN"', '"2.9 kN"'))
-    code, _, stderr = run_cli("solve", harder, "--out", out2, "--quiet", "--baseline", out1 / "results.json")
+    code, _, stderr = run_cli("solve", harder, "--out", out2, "--quiet", "--fast", "--baseline", out1 / "results.json")
     assert code == 0, stderr
     r = json.loads((out2 / "results.json").read_text())
     assert isinstance(r["changes"], list) and r["changes"]
     assert "What changed" in (out2 / "report.html").read_text()
     bad = tmp_path / "bad.json"
     bad.write_text("{not json")
-    code, _, stderr = run_cli("solve", base, "--out", tmp_path / "c", "--quiet", "--baseline", bad)
+    code, _, stderr = run_cli("solve", base, "--out", tmp_path / "c", "--quiet", "--fast", "--baseline", bad)
     assert code == 2 and "bad.json" in stderr
     assert not (tmp_path / "c").exists()

@@ -319,10 +319,10 @@ def test_solve_with_baseline_names_the_field(tmp_path):
     shutil.copytree(CATALOGS, new)
     _set_field(new, "stacks.toml", STACK, "stiffness", '"2.0e8 N/m"')
     req = CATALOGS.parent / "studies" / "seed-requirements.toml"
-    code, _, err = run_cli("solve", req, "--out", tmp_path / "base", "--catalog", old, "--quiet")
+    code, _, err = run_cli("solve", req, "--out", tmp_path / "base", "--catalog", old, "--quiet", "--fast")
     assert code == 0, err
     code, _, err = run_cli("solve", req, "--out", tmp_path / "after", "--catalog", new,
-                           "--baseline", tmp_path / "base" / "results.json", "--quiet")
+                           "--baseline", tmp_path / "base" / "results.json", "--quiet", "--fast")
     assert code == 0, err
     results = json.loads((tmp_path / "after" / "results.json").read_text())
     assert results["changes"], "halving the PI stack's stiffness must move the designs built on it"

@@ -102,7 +102,7 @@ def test_design_frequency_stays_below_the_valve_rating_and_resonance(seed_pumps)
 @pytest.fixture(scope="module")
 def seed_solve(tmp_path_factory):
     out = tmp_path_factory.mktemp("pump") / "o"
-    code, _, err = run_cli("solve", STUDIES / "seed-requirements.toml", "--out", out, "--quiet")
+    code, _, err = run_cli("solve", STUDIES / "seed-requirements.toml", "--out", out, "--quiet", "--fast")
     assert code == 0, err
     return json.loads((out / "results.json").read_text()), (out / "report.html").read_text()
 

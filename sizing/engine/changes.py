@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 
+from .rank import OBJECTIVE_KEYS
 from ..display import field_name, number, quantity
 
 # order of the events in the list, most important first
@@ -240,7 +241,6 @@ SHOWN = {"stroke_m": ("stroke", "mm", 1e3), "blocked_force_N": ("blocked force",
          "min_natural_frequency_Hz": ("minimum natural frequency", "Hz", 1.0), "max_overshoot": ("max overshoot", "", 1.0)}
 # values derived from the others (stroke time = stroke / speed ...): listed after those people set
 DERIVED = ("stroke_time_s", "max_thermal_drift_m", "min_natural_frequency_Hz")
-OBJECTIVE_KEYS = {"mass": "mass_kg", "cost": "cost_usd", "volume": "volume_m3", "power": "power_W"}
 TECH_NAMES = {"piezohydraulic": "piezohydraulic", "dc_motor": "DC motor", "piezo_pump": "piezo pump"}
 
 
@@ -307,11 +307,6 @@ def requirement_words(reqs: list[dict]) -> list[str]:
         return f"{name} {value(r['old'])} -> {value(r['new'])}{' ' + unit if unit else ''}"
     first = [r for r in reqs if r["field"] not in DERIVED]
     return [shown(r) for r in first] + [shown(r) for r in reqs if r["field"] in DERIVED]
-
-
-def _value(v, key: str = "") -> str:
-    """A requirement value under its results.json key ("stroke_m": 0.04 -> 40 mm)."""
-    return quantity(key, v) if isinstance(v, (int, float)) and not isinstance(v, bool) else str(v)
 
 
 def _with_unit(field: str, v, unit: str | None) -> str:

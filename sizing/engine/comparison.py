@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import math
 
+from .rank import OBJECTIVE_KEYS
 from .assumed import assumed_clause, in_words
 from .describe import describe
 from .flip import smallest
@@ -14,7 +15,6 @@ LABELS = {"piezohydraulic": "piezohydraulic actuator", "dc_motor": "DC motor act
           "piezo_pump": "piezo pump actuator"}
 TECHNOLOGIES = (("piezohydraulic", "piezohydraulic"), ("dc_motor", "DC motor"), ("piezo_pump", "piezo pump"))
 
-OBJECTIVE_KEYS = {"mass": "mass_kg", "cost": "cost_usd", "volume": "volume_m3", "power": "power_W"}
 STAGE_ORDER = {"pruned": 0, "gp_failed": 0, "gp_infeasible": 1, "sized": 2, "simulated": 3}
 
 

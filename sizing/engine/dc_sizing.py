@@ -28,7 +28,7 @@ from .dc import SETTLED, output_times
 from . import dc_search, dc_verdict, holding
 from .dc_parts import drives_for_supply, enumerate_parts, metrics, mountable, static_screen, temperature_margin
 from .dc_candidates import dc_duration
-from .rank import nondominated_levels, verdict
+from .rank import OBJECTIVE_KEYS, nondominated_levels, verdict
 from .records import DCDesign, DCParts, DCPartsOutcome, Simulation, frozen
 
 MAX_SIMULATED = 300     # designs simulated per solve (each under every load case)
@@ -36,7 +36,6 @@ REAL_SHARE = 1 / 3      # of the simulation budget, first for designs whose part
 NOT_SIMULATED = "not simulated (feasible, later Pareto level)"   # statically feasible, beyond the simulation budget
 MIN_SIMULATED = 24      # filled with the closest-to-feasible when fewer pass the screen
 SIM_CHUNK = 64          # rows (design x load case) per batched simulation
-OBJECTIVE_KEYS = {"mass": "mass_kg", "cost": "cost_usd", "volume": "volume_m3", "power": "power_W"}
 
 
 def duty_rms(t, current, period) -> np.ndarray:

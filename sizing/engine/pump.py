@@ -26,10 +26,9 @@ from ..physics.stack import derated_stroke
 from ..sim.pump import PumpModel, simulate
 from . import pump_screen as screen
 from .piezo import reference_bouc_wen, stack_bouc_wen
-from .rank import floor_margin, nondominated_levels
+from .rank import OBJECTIVE_KEYS, floor_margin, nondominated_levels
 from .records import PumpDesign, PumpOutcome, Simulation, frozen
 
-OBJECTIVE_KEYS = {"mass": "mass_kg", "cost": "cost_usd", "volume": "volume_m3", "power": "power_W"}
 MAX_FEASIBLE_SIMULATED = 24    # designs that pass the screen, verified by simulation
 MIN_CLOSEST_SIMULATED = 8      # and at least this many of the closest of those that do not,
 SIMULATED = 32                 # up to this many in all

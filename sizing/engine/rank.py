@@ -17,6 +17,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+# an objective named in requirements.toml -> the metric it minimises
+OBJECTIVE_KEYS = {"mass": "mass_kg", "cost": "cost_usd", "volume": "volume_m3", "power": "power_W"}
+
 
 def floor_margin(achieved: float, required: float) -> float:
     """achieved / required - 1 (negative: short of the requirement). Nothing

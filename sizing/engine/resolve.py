@@ -28,9 +28,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, fields, replace
 
-from .rank import standings
+from .rank import OBJECTIVE_KEYS, standings
 
-OBJECTIVE_KEYS = {"mass": "mass_kg", "cost": "cost_usd", "volume": "volume_m3", "power": "power_W"}
 DC_PARTS = {"motor": "motors", "screw": "screws", "gear": "gears", "drive": "drives", "actuator": "dc_actuators"}
 
 

@@ -44,7 +44,7 @@ from .loads import load_cases
 from .piezo import Candidates
 from .pump import pump_designs
 from .pump_candidate import pump_candidate
-from .rank import nondominated_levels, standings, verdict
+from .rank import OBJECTIVE_KEYS, nondominated_levels, standings, verdict
 from .records import DCDesign, DCPartsOutcome, PiezoBrief, PiezoDesign, Simulation, Stages, VerifiedDesign
 from .search import Combo, enumerate_combos
 from .solve_summary import _assumptions, _clean, _requirements_si, _summary, _traces
@@ -55,7 +55,6 @@ SIM_CHUNK = 32
 # compensation, not on what the simulation checks, and must not keep the
 # designs that pass everything else from being simulated first
 SCREEN_IGNORES = ("thermal_drift", "amplifier_continuous_current")
-OBJECTIVE_KEYS = {"mass": "mass_kg", "cost": "cost_usd", "volume": "volume_m3", "power": "power_W"}
 
 
 @dataclass(frozen=True)

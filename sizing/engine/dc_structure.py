@@ -70,6 +70,11 @@ LUG_MIN_THICKNESS = 2.0e-3    # m: thinnest lug (assumed)
 BEARING_LIFE_H = 200.0        # h: the same required life as the screw (dc_parts.REQUIRED_LIFE_H)
 BEARING_STATIC_SAFETY = 2.0   # C0 / P0 (ISO 76 practice for vibration and shock; the screw's THK 2.0 likewise)
 JOURNAL_OVER_SHAFT = 1.05     # bearing bore at most 1.05 x the shaft's mass-equivalent diameter
+# Members sized by a closed form (end plate, clevis) are sized for the force
+# plus this relative part: rounding in the closed form otherwise leaves a
+# member sized exactly to the force a part in 1e16 short of its own check
+# (margin -2e-16), which failed every design whose plate the stress set.
+SIZING_ROUNDING = 1e-9
 
 # Back-to-back pairs of single-row 40 degree angular contact ball bearings, SKF
 # 72 B / BECBP series: (designation, bore m, outer diameter m, width m, C N, C0 N, mass kg).
@@ -197,8 +202,9 @@ def size(values: dict, travel: float, peak_force, holding_force, rev_per_s, scre
     length = travel + nut + 2 * b["width_m"] + guide
     screw_k = values["screw_elastic_modulus"] * column.tube_area(values["screw_diameter"], 0.0) / screw_length
     h = housing(F, bore, length, screw_k)
-    caps = end_caps(F, h["outer_diameter_m"], bore, b["outer_diameter_m"], b["width_m"], r["outer_diameter_m"])
-    c = clevises(F)
+    F_sized = F * (1.0 + SIZING_ROUNDING)
+    caps = end_caps(F_sized, h["outer_diameter_m"], bore, b["outer_diameter_m"], b["width_m"], r["outer_diameter_m"])
+    c = clevises(F_sized)
     members = {"rod": r, "thrust_bearing": b, "housing": h, "end_caps": caps, "clevises": c}
     margins = {
         "rod_buckling": r["critical_load_N"] / F - 1.0,

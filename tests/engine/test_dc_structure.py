@@ -234,3 +234,28 @@ def test_a_24_v_braked_design_round_trips_through_evaluate(tmp_path):
     assert e["metrics"]["mass_kg"] == pytest.approx(c["metrics"]["mass_kg"], rel=0.005)
     for k, v in e["margins"].items():
         assert v == pytest.approx(c["margins"][k], rel=0.005, abs=0.005), k
+
+
+def test_end_cap_plate_and_clevis_hand_computed_and_sized_members_pass_their_check():
+    """45 kN on a 40 mm bore: q = 45000 / (pi 0.02^2) = 35.81 MPa, the
+    simply supported plate t = a sqrt(3 (3 + nu) q / (8 S_y)) = 0.02 x
+    sqrt(1.24875 x 35.81 / 276) = 8.05 mm (Roark table 11.2 case 10a). The
+    clevis pin: shear sqrt(2 F / (pi S_y / sqrt 3)) = 7.71 mm, bending
+    (8 / pi)^(1/4) sqrt(F / S_y) = 9.28 mm (binds); eye t = F / (d S_y) =
+    5.81 mm. Sized to the force, each member's margin is zero, never a
+    rounding below it (a margin of -2e-16 used to fail every design whose
+    plate the stress set)."""
+    F = 45000.0
+    caps = dc_structure.end_caps(np.array([F]), 0.06, 0.04, 0.035, 0.011, 0.02)
+    assert caps["plate_thickness_m"][0] == pytest.approx(8.05e-3, rel=2e-3)
+    c = dc_structure.clevises(np.array([F]))
+    assert c["pin_diameter_m"][0] == pytest.approx(9.28e-3, rel=2e-3)
+    assert c["eye_thickness_m"][0] == pytest.approx(5.81e-3, rel=3e-3)
+    assert c["capacity_N"][0] == pytest.approx(F, rel=1e-9)
+    forces = np.geomspace(500.0, 60000.0, 40)
+    out = dc_structure.size(_values(40, screw_mass_per_length=6.313, screw_nut_mass=0.64, screw_diameter=0.0289),
+                            0.055, forces, forces / 2, np.full(40, 2.0), 0.105)
+    for name in ("end_cap_stress", "clevis"):
+        m = out["margins"][name]
+        assert np.all(m >= 0), (name, m.min())
+        assert np.any(m < 1e-6), name          # some are sized by the force, not the floor

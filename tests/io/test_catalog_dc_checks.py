@@ -56,3 +56,22 @@ def test_validate_lists_the_warnings_and_passes():
     for ident in ("gen-bldc42-28v-h", "gen-bldc40-48v-h", "gen-bldc60-48v-h"):
         assert ident in err
     assert "motors-mgdb.toml: [[motor]] maxon-" in err          # a warning names the file the entry is in
+
+
+def test_large_ball_screws_follow_iso_3408_from_the_sourced_20_mm_screw():
+    """The 25, 32 and 40 mm ball screws are the sourced HIWIN R20-05K4
+    scaled at the same ball, lead and turns (ISO 3408-5: C_a ~ Z^(2/3),
+    C_0a ~ Z, Z ~ d_0): recomputed here from the sourced entry; with them a
+    20 kN design force has a screw whose static safety C_0 / F reaches 2."""
+    from sizing.io.catalog import load_catalog
+    cat = load_catalog()
+    base = cat.screws["hiwin-r20-05k4-fscdin"]
+    for d in (25, 32, 40):
+        s = cat.screws[f"ball-{d}x5"]
+        k = d / 20
+        assert s.dynamic_load_rating == pytest.approx(base.dynamic_load_rating * k ** (2 / 3), rel=1e-3)
+        assert s.static_load_rating == pytest.approx(base.static_load_rating * k, rel=1e-3)
+        assert s.lead == base.lead and s.diameter == pytest.approx(base.diameter + (d - 20) * 1e-3)
+        assert s.mass_per_length == pytest.approx(7850 * math.pi / 4 * (d * 1e-3) ** 2, rel=1e-3)
+        assert s.max_speed == pytest.approx(70000 / d * 2 * math.pi / 60, rel=1e-3)
+    assert max(s.static_load_rating for s in cat.screws.values()) / 20e3 >= 2.0

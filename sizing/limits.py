@@ -103,3 +103,11 @@ def dc_steps(duration_s: float, rate_hz: float, n_cases: int = 1, output_rate_hz
 def piezo_steps(duration_s: float, n_cases: int = 1) -> float:
     """Steps of a piezohydraulic simulation (sub-steps of at most 50 us)."""
     return float(n_cases) * duration_s * PIEZO_STEP_RATE_HZ
+
+
+def simulations_within(steps_each: float, wanted: int, spare_steps: float) -> int:
+    """How many simulations of ``steps_each`` steps fit in ``spare_steps``,
+    at most ``wanted`` (0 when not even one fits)."""
+    if not steps_each > 0:
+        return int(wanted)
+    return int(min(wanted, max(spare_steps, 0.0) // steps_each))

@@ -48,7 +48,7 @@ from .rank import OBJECTIVE_KEYS, nondominated_levels, standings, verdict
 from .records import DCDesign, DCPartsOutcome, PiezoBrief, PiezoDesign, Simulation, Stages, VerifiedDesign
 from .search import Combo, enumerate_combos
 from .solve_summary import _assumptions, _clean, _requirements_si, _summary, _traces
-from .verify import simulate_cases
+from .verify import SETTLE_TIME_S, simulate_cases
 
 SIM_CHUNK = 32
 # margins the simulation order ignores: they depend on the duty or the
@@ -170,7 +170,8 @@ def _piezohydraulic(req, catalog, loads, progress, detail, only=None) -> tuple[O
     brief = PiezoBrief.of(req)               # what the stages read of the requirements, once
     sized = piezo_designs.size(brief, catalog, to_size, progress)
     designs = piezo_designs.resize_passive(brief, catalog, piezo_designs.designs(brief, catalog, sized))
-    verified = [VerifiedDesign(d, sim) for d, sim in zip(designs, _simulate(req, designs, loads, progress))]
+    budget = piezo_simulation_budget(req, catalog, len(loads))
+    verified = [VerifiedDesign(d, sim) for d, sim in zip(designs, _simulate(req, designs, loads, progress, budget))]
     candidates = []
     if detail == "full":
         candidates = [pruned_candidate(c, nominal)
@@ -185,6 +186,8 @@ def _piezohydraulic(req, catalog, loads, progress, detail, only=None) -> tuple[O
     counts = {"combinations": len(combos), "pruned": len(pruned), "sized": len(to_size),
               "gp_feasible": sum(1 for d in designs if d.gp.success),
               "simulated": sum(1 for v in verified if v.simulation is not None)}
+    if budget < req.options.max_simulated:     # the step limit, not options.max_simulated, capped it
+        counts["simulations_within_step_limit"] = budget
     return Outcome("piezohydraulic", candidates, Counter(_pruned_reason(c) for c in pruned), tuple(records),
                    counts), verified
 
@@ -213,11 +216,34 @@ def _piezo_pump(req, catalog, loads, progress) -> tuple[Outcome, tuple]:
 
 
 # --- verification ---------------------------------------------------------
-def _simulate(req, designs: list[PiezoDesign], loads, progress) -> list[Simulation | None]:
+def dc_actuator_steps(req, catalog) -> float:
+    """Simulation steps of the catalog's DC actuators over every load case."""
+    from ..limits import dc_steps
+    from .dc import output_rate
+    from .dc_candidates import dc_duration
+    if not req.options.dc_motors:
+        return 0.0
+    T, n = dc_duration(req), len(load_cases(req.load))
+    return float(sum(dc_steps(T, act.pid.rate, n, output_rate(T)) for act in catalog.dc_actuators.values()))
+
+
+def piezo_simulation_budget(req, catalog, n_loads: int) -> int:
+    """How many piezohydraulic designs are simulated: ``options.max_simulated``,
+    or fewer when their steps (stroke time plus settling at 20 kHz, per load
+    case) would pass the step limit (``--max-steps``) left after the DC
+    actuators'; 0 when not even one fits (a slow, long stroke: 100 mm at
+    3 mm/s is 1.3e6 steps a design). The designs not simulated stay
+    unverified, never feasible."""
+    from ..limits import current, piezo_steps, simulations_within
+    each = piezo_steps(req.stroke_time + SETTLE_TIME_S, max(n_loads, 1))
+    return simulations_within(each, req.options.max_simulated, current().steps - dc_actuator_steps(req, catalog))
+
+
+def _simulate(req, designs: list[PiezoDesign], loads, progress, budget=None) -> list[Simulation | None]:
     """Simulate the sized designs under every load case: the statically
     feasible ones on the Pareto front first, then the next fronts, then the
-    rest, up to ``options.max_simulated``. Per design, its simulation or
-    None (not simulated)."""
+    rest, up to ``budget`` (default ``options.max_simulated``). Per design,
+    its simulation or None (not simulated)."""
     out: list[Simulation | None] = [None] * len(designs)
     pool = [i for i, d in enumerate(designs) if d.gp.success and d.built and d.ruled_out is None]
     if not pool:
@@ -229,7 +255,7 @@ def _simulate(req, designs: list[PiezoDesign], loads, progress) -> list[Simulati
     level = np.full(len(pool), 10**6)
     if ok.any():
         level[ok] = nondominated_levels(F[ok])
-    chosen = [pool[j] for j in np.lexsort((level, ~ok))[: req.options.max_simulated]]
+    chosen = [pool[j] for j in np.lexsort((level, ~ok))[: req.options.max_simulated if budget is None else budget]]
     # designs that differ only in the structure material have the same force
     # path (the material screen keeps the members' stiffness) and so the same
     # dynamics: simulate one of each and share the result

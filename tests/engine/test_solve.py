@@ -305,6 +305,8 @@ def test_seed_solve_end_to_end(tmp_path, seed_requirements):
     assert r["requirements_sha256"] == seed_requirements[1]
     for c in r["candidates"]:
         assert CONTRACT_KEYS <= set(c), c["id"]
+        # no margin is infinite: an unrated part is ruled out of a check, never passed with inf
+        assert all(math.isfinite(v) for v in c["margins"].values()), (c["id"], c["margins"])
     sized = [c for c in r["candidates"] if c["technology"] == "piezohydraulic" and c["stage"] in ("sized", "simulated")]
     assert sized
     # every piezohydraulic candidate, pruned ones with their nominal geometry included

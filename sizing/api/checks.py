@@ -17,8 +17,8 @@ def n_loads(load) -> int:
 def check_evaluate_steps(design, cat: Catalog, file: str) -> None:
     """Refuse a design whose simulation would need more steps than the
     limit: duration x rate x load cases."""
-    from ..engine.dc import output_rate
-    from ..engine.verify import SETTLE_TIME_S
+    from ..technologies.dc_motor.actuator import output_rate
+    from ..technologies.piezohydraulic.verify import SETTLE_TIME_S
     from ..limits import check_steps, dc_steps, piezo_steps
     if isinstance(design, PiezoDesignFile):
         ramp = design.ramp_time if design.ramp_time is not None else design.rise_time
@@ -33,9 +33,9 @@ def check_evaluate_steps(design, cat: Catalog, file: str) -> None:
 def check_solve_steps(req, cat: Catalog, file: str) -> None:
     """Refuse requirements whose verification would need more steps than
     the limit: simulated candidates x load cases x stroke time."""
-    from ..engine.dc import output_rate
-    from ..engine.dc_candidates import dc_duration
-    from ..engine.verify import SETTLE_TIME_S
+    from ..technologies.dc_motor.actuator import output_rate
+    from ..technologies.dc_motor.catalog_actuators import dc_duration
+    from ..technologies.piezohydraulic.verify import SETTLE_TIME_S
     from ..limits import check_steps, dc_steps, piezo_steps
     n = n_loads(req.load)
     steps = piezo_steps(req.stroke_time + SETTLE_TIME_S, n * req.options.max_simulated)

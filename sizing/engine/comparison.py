@@ -167,7 +167,7 @@ def _holding_text(held: list) -> str:
 def pump_power(req, candidates) -> dict:
     """The pump's required output power (the largest load at the required
     speed) against the best demonstrated pump power (``pump.BEST_DEMONSTRATED_POWER_W``)."""
-    from .pump import BEST_DEMONSTRATED_POWER_W, BEST_DEMONSTRATED_SOURCE
+    from ..technologies.piezo_pump.designs import BEST_DEMONSTRATED_POWER_W, BEST_DEMONSTRATED_SOURCE
     loads = [k["load_N"] for c in candidates if c["technology"] == "piezo_pump"
              for k in (c.get("simulated") or {}).get("cases", [])]
     required = max(loads, default=0.0) * req.requirements.speed

@@ -33,22 +33,23 @@ from .. import __version__
 from ..errors import SimulationError
 from ..io.catalog import Catalog
 from ..io.requirements import RequirementsFile
-from . import assumed, names, piezo_designs
-from .candidate import design_candidate, pruned_candidate, ruled_out_record
-from .dc_candidate import actuator_candidate, parts_candidate
-from .dc_candidates import actuator_designs
+from . import assumed, names
+from ..technologies.piezohydraulic import designs as piezo_designs
+from ..technologies.piezohydraulic.record import design_candidate, pruned_candidate, ruled_out_record
+from ..technologies.dc_motor.record import actuator_candidate, parts_candidate
+from ..technologies.dc_motor.catalog_actuators import actuator_designs
 from .comparison import technology_comparison
-from .dc_sizing import dc_parts_designs
+from ..technologies.dc_motor.from_parts import dc_parts_designs
 from .flip import flips
 from .loads import load_cases
-from .piezo import Candidates
-from .pump import pump_designs
-from .pump_candidate import pump_candidate
+from ..technologies.piezohydraulic.parts import Candidates
+from ..technologies.piezo_pump.designs import pump_designs
+from ..technologies.piezo_pump.record import pump_candidate
 from .rank import OBJECTIVE_KEYS, nondominated_levels, standings, verdict
 from .records import DCDesign, DCPartsOutcome, PiezoBrief, PiezoDesign, Simulation, Stages, VerifiedDesign
-from .search import Combo, enumerate_combos
+from ..technologies.piezohydraulic.search import Combo, enumerate_combos
 from .solve_summary import _assumptions, _clean, _requirements_si, _summary, _traces
-from .verify import simulate_cases
+from ..technologies.piezohydraulic.verify import simulate_cases
 
 SIM_CHUNK = 32
 # margins the simulation order ignores: they depend on the duty or the

@@ -10,13 +10,13 @@ import numpy as np
 
 from ..io.requirements import RequirementsFile
 from ..physics import stack as stack_phys
-from . import dc as dc_engine
-from .dc_candidates import dc_duration
-from .dc_verdict import dc_sourced
+from ..technologies.dc_motor import actuator as dc_engine
+from ..technologies.dc_motor.catalog_actuators import dc_duration
+from ..technologies.dc_motor.verdict import dc_sourced
 from ..sim.dc_motor import DCMotorModel
 from .comparison import technology_comparison
 from .records import DCActuatorDesign
-from .verify import simulate_cases
+from ..technologies.piezohydraulic.verify import simulate_cases
 
 TRACE_POINTS = 600
 GROUPS = (("piezohydraulic", "uncompensated"), ("piezohydraulic", "passive"), ("piezohydraulic", "compensated"),

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 from scipy import stats
 
-from sizing.engine import dc_controller as ctl
+from sizing.technologies.dc_motor import controller as ctl
 from sizing.sim.dc_motor import DCMotorModel, simulate
 
 C1, C2, LEAD = -25.5552, 2987.02, 0.002   # the seed's plant (ARL-TR-10251 sec. 3.2)

@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from sizing.engine.pump_evaluate import evaluate_pump
+from sizing.technologies.piezo_pump.evaluate import evaluate_pump
 from sizing.errors import InputError
 from sizing.io.catalog import load_catalog
 from sizing.io.design import PumpDesignFile

@@ -7,12 +7,13 @@ the step (``dc.SETTLED``); speed = that travel / the time to reach it.
 """
 from __future__ import annotations
 
-from ..io.catalog import Catalog
-from ..io.requirements import RequirementsFile
-from . import dc as dc_engine, holding
-from .rank import ceiling_margin, floor_margin
-from .records import DCActuatorDesign, Simulation, frozen
-from .search import temperature_margin
+from ...io.catalog import Catalog
+from ...io.requirements import RequirementsFile
+from ...engine import holding
+from . import actuator as dc_engine
+from ...engine.rank import ceiling_margin, floor_margin
+from ...engine.records import DCActuatorDesign, Simulation, frozen
+from ..piezohydraulic.search import temperature_margin
 
 
 def dc_duration(req: RequirementsFile) -> float:

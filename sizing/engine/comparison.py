@@ -10,10 +10,15 @@ from .rank import OBJECTIVE_KEYS
 from .assumed import assumed_clause, in_words
 from .describe import describe
 from .flip import smallest
+from ..technologies.registry import get as technology, technologies
 
-LABELS = {"piezohydraulic": "piezohydraulic actuator", "dc_motor": "DC motor actuator",
-          "piezo_pump": "piezo pump actuator"}
-TECHNOLOGIES = (("piezohydraulic", "piezohydraulic"), ("dc_motor", "DC motor"), ("piezo_pump", "piezo pump"))
+
+
+def actuator_noun(name: str) -> str:
+    """"DC motor actuator": what a technology's designs are called."""
+    tech = technology(name)
+    return tech.actuator if tech is not None else name
+
 
 STAGE_ORDER = {"pruned": 0, "gp_failed": 0, "gp_infeasible": 1, "sized": 2, "simulated": 3}
 
@@ -87,7 +92,8 @@ def technology_comparison(req, candidates: list[dict], catalog=None, flips: dict
     when they were not computed (``solve --fast``)."""
     keys = [OBJECTIVE_KEYS[k] for k in req.objectives.minimize]
     out, lines = {}, []
-    for tech, label in TECHNOLOGIES:
+    labelled = [(t.name, t.label) for t in technologies()]
+    for tech, label in labelled:
         members = [c for c in candidates if c["technology"] == tech and c.get("metrics")]
         if not members:
             continue
@@ -123,11 +129,10 @@ def technology_comparison(req, candidates: list[dict], catalog=None, flips: dict
                          f"misses {best['driver']} {_miss(m)}")
             if near is not None:
                 lines.append(_one_miss_text(label, out[tech]["one_miss"], keys))
-    for tech, label in TECHNOLOGIES:
+    for tech, label in labelled:
         if tech in out:
             lines.append(f"{label}: " + _rests_text(out[tech]) + "; " + _flip_text(out[tech]))
-    held = [(LABELS[tech].removesuffix(" actuator"), out[tech]["holding"]) for tech, _ in TECHNOLOGIES
-            if tech in out and "holding" in out[tech]]
+    held = [(label, out[tech]["holding"]) for tech, label in labelled if tech in out and "holding" in out[tech]]
     if held:
         lines.append(_holding_text(held))
     if "piezo_pump" in out:
@@ -135,7 +140,7 @@ def technology_comparison(req, candidates: list[dict], catalog=None, flips: dict
         lines.append(_pump_power_text(out["piezo_pump"]))
     for first, second in (("piezohydraulic", "dc_motor"), ("piezo_pump", "dc_motor")):
         if first in out and second in out:
-            lines.append(_ratio_line(out[first], out[second], keys, LABELS[first].removesuffix(" actuator")))
+            lines.append(_ratio_line(out[first], out[second], keys, technology(first).label))
     return {"technologies": out, "text": ". ".join(lines) + ("." if lines else ""),
             "recommendation": _recommendation(out, keys)}
 
@@ -243,15 +248,15 @@ def _recommendation(out: dict, keys: list[str], pick: tuple | None = None, claus
                 + _pump_clause(out) + ".")
     key = keys[0]
     tech, best = pick or min(feasible.items(), key=lambda kv: kv[1]["metrics"].get(key) or math.inf)
-    text = f"Choose the {LABELS.get(tech, tech)}: {best['name']} ({format_metric(key, best['metrics'].get(key))})"
+    text = f"Choose the {actuator_noun(tech)}: {best['name']} ({format_metric(key, best['metrics'].get(key))})"
     for other, entry in out.items():
         if other == tech:
             continue
         rival = _rival(entry)
         if rival and rival["metrics"].get(key) and best["metrics"].get(key):
             ratio = rival["metrics"][key] / best["metrics"][key]
-            what = (f"the best {LABELS.get(other, other)} design" if entry["feasible"] else
-                    f"the {LABELS.get(other, other)} design {rival['name']} with the "
+            what = (f"the best {actuator_noun(other)} design" if entry["feasible"] else
+                    f"the {actuator_noun(other)} design {rival['name']} with the "
                     f"{rival['needs']['amplifier_units']} amplifier units it needs")
             text += (f", {ratio:.3g} x lighter than {what}" if key == "mass_kg"
                      else f", {ratio:.3g} x better in {key.split('_')[0]} than {what}")

@@ -9,7 +9,7 @@ as a solved one would be:
 - piezohydraulic: the parts as one search combination
   (``search.combos_of``), the geometry, structure and drive of the file as
   a ``convex.SizingResult`` (amplifier units and ramp fixed by the file),
-  then ``solve.verify_sized``: static figures, margins, the simulation under
+  then ``piezohydraulic.stage.verify_sized``: static figures, margins, the simulation under
   every load case of the requirements, verdict. A passive spacer is derived
   again from the thermal budget, as the solve derives it;
 - DC from parts: ``dc_sizing.verify_parts`` with the file's controller and
@@ -70,7 +70,7 @@ def _verdict(cand: dict) -> dict:
 
 
 def _piezo(req, catalog: Catalog, designs: list[PiezoDesignFile], files: list[str], loads) -> list[dict]:
-    from .solve import verify_sized
+    from ..technologies.piezohydraulic.stage import verify_sized
     triples = [_triple(req, catalog, d, f) for d, f in zip(designs, files)]
     out = []
     for design, cands in zip(designs, verify_sized(req, catalog, triples, loads)):

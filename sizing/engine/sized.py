@@ -1,6 +1,6 @@
 """A solved design as ``sizing robust`` perturbs it, to re-run the solve's
 checks on perturbed parts: a piezohydraulic design as the (Combo, Variant,
-SizingResult) triple that ``solve.verify_sized`` re-verifies (the parts
+SizingResult) triple that ``piezohydraulic.stage.verify_sized`` re-verifies (the parts
 from the catalog, the geometry (R, wide bore, drive voltage) as sized); a
 DC design from parts as its parts and its settings (``DCPartsDesign``,
 re-verified by ``dc_sizing.verify_parts``). Taken from the solve's records

@@ -5,7 +5,7 @@ For each of the K best designs of ``sizing solve`` (piezohydraulic, and DC
 designs sized from parts), N samples of the tolerated catalog fields that
 apply to the design (``tolerances.py``) are drawn, and every sample is
 re-verified by the solve's own checks (piezohydraulic:
-``engine.solve.verify_sized``; DC: ``engine.dc_sizing.verify_parts``, with
+``piezohydraulic.stage.verify_sized``; DC: ``technologies.dc_motor.from_parts.verify_parts``, with
 the controller and drive limits kept as designed on the nominal parts:
 static figures, margins and a full dynamic simulation under every load
 case). Work is split into tasks of one design x
@@ -33,7 +33,7 @@ from ..engine.rank import nondominated_levels
 from ..technologies.dc_motor.catalog_actuators import dc_duration
 from ..technologies.dc_motor.from_parts import verify_parts
 from ..engine.sized import DCPartsDesign, study_designs
-from ..engine.solve import verify_sized
+from ..technologies.piezohydraulic.stage import verify_sized
 from ..technologies.piezohydraulic.verify import SETTLE_TIME_S
 from ..io.design import PumpDesignFile
 from .executor import Executor, task_seed

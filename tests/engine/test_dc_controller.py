@@ -1,4 +1,4 @@
-"""Controller gains of a DC design from its plant (engine/dc_controller.py)."""
+"""Controller gains of a DC design from its plant (technologies/dc_motor/controller.py)."""
 import math
 
 import numpy as np

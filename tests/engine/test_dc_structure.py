@@ -1,5 +1,5 @@
-"""The DC structure sized by the load (engine/dc_structure.py) and the
-frameless-kit housing rule (engine/dc_parts.py), against hand numbers and
+"""The DC structure sized by the load (technologies/dc_motor/structure.py) and the
+frameless-kit housing rule (technologies/dc_motor/parts.py), against hand numbers and
 the data they come from."""
 import math
 import tomllib

@@ -1,4 +1,4 @@
-"""The piezo pump in the seed solve (engine/pump.py, pump_screen.py): the
+"""The piezo pump in the seed solve (technologies/piezo_pump/designs.py, pump_screen.py): the
 designs it verifies, the contract's fields, the bound no design beats, the
 agreement of the two models and the three-technology verdict."""
 from __future__ import annotations
@@ -197,7 +197,7 @@ def test_seed_designs_converge_when_the_step_halves(seed_pumps):
 
 def test_the_closest_design_block_round_trips_through_evaluate(seed_pumps):
     """The closest pump's results.json ``design`` block, evaluated on its
-    own (engine/pump_evaluate.py), reproduces its metrics and margins."""
+    own (technologies/piezo_pump/evaluate.py), reproduces its metrics and margins."""
     from sizing.technologies.piezo_pump.evaluate import evaluate_pump
     from sizing.io.design import PumpDesignFile
     req, (out, candidates) = seed_pumps

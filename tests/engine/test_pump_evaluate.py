@@ -1,4 +1,4 @@
-"""``sizing evaluate`` on a piezo pump design (engine/pump_evaluate.py): a
+"""``sizing evaluate`` on a piezo pump design (technologies/piezo_pump/evaluate.py): a
 frequency sweep of the seed's closest pump, the reeds' and the line's
 dynamics moving the flow's peak, warnings above the valve's rating and the
 refusal at its wetted resonance."""

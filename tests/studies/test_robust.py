@@ -13,7 +13,7 @@ from sizing.technologies.piezohydraulic import designs as piezo_designs
 from sizing.engine.records import PiezoBrief
 from sizing.engine.evaluate import load_cases
 from sizing.technologies.piezohydraulic.search import enumerate_combos
-from sizing.engine.solve import verify_sized
+from sizing.technologies.piezohydraulic.stage import verify_sized
 from sizing.io.requirements import load_requirements
 from sizing.studies.executor import Executor, task_seed
 from sizing.studies.robust import robust
@@ -324,7 +324,7 @@ def test_dc_designs_from_the_solve_records_match_the_results_json_reading(tmp_pa
 
 def test_dc_screw_efficiency_tolerance_gives_the_closed_form_probability(tmp_path):
     # Closed form for the DC path: the blocked force of a DC design from parts is
-    # F = min(2 pi eta_s eta_g N k_t i_max / l, 2 pi eta_s T_gear / l) (engine/dc_parts.py), so
+    # F = min(2 pi eta_s eta_g N k_t i_max / l, 2 pi eta_s T_gear / l) (technologies/dc_motor/parts.py), so
     # both terms, and F, are proportional to the screw efficiency eta_s. A relative normal
     # spread s on eta_s (capped at 1, which only clips the upper tail) and a nominal margin m
     # give P(blocked force) = P(1 + s z >= 1 / (1 + m)) = Phi(m / ((1 + m) s)).

@@ -1,6 +1,6 @@
 """The DC motor option on the same requirements, load cases and metrics.
 
-Each catalog DC actuator is simulated (``engine/dc.py``: seed eq. 13-14 with
+Each catalog DC actuator is simulated (``technologies/dc_motor/actuator.py``: seed eq. 13-14 with
 the load term of docs/models.md and the catalog's PID) for a step of the
 required stroke under each load case. A stroke counts as reached at 98 % of
 the step (``dc.SETTLED``); speed = that travel / the time to reach it.

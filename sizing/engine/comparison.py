@@ -1,4 +1,4 @@
-"""The two technologies side by side: for each, its best design, the check
+"""The technologies side by side: for each, its best design, the check
 that binds it (its smallest margin: the design driver when feasible, the
 blocking requirement when not), and how far the best of each is from the
 other in every objective."""
@@ -135,12 +135,13 @@ def technology_comparison(req, candidates: list[dict], catalog=None, flips: dict
     held = [(label, out[tech]["holding"]) for tech, label in labelled if tech in out and "holding" in out[tech]]
     if held:
         lines.append(_holding_text(held))
-    if "piezo_pump" in out:
-        out["piezo_pump"].update(pump_power(req, candidates))
-        lines.append(_pump_power_text(out["piezo_pump"]))
-    for first, second in (("piezohydraulic", "dc_motor"), ("piezo_pump", "dc_motor")):
-        if first in out and second in out:
-            lines.append(_ratio_line(out[first], out[second], keys, technology(first).label))
+    for t in technologies():                # a technology's own figures beside its verdict
+        if t.name in out and t.comparison_fields is not None:
+            out[t.name].update(t.comparison_fields(req, candidates))
+            lines.append(t.comparison_words(out[t.name]))
+    for t in technologies():
+        if t.name in out and t.compared_with in out:
+            lines.append(_ratio_line(out[t.name], out[t.compared_with], keys, t.label, technology(t.compared_with).label))
     return {"technologies": out, "text": ". ".join(lines) + ("." if lines else ""),
             "recommendation": _recommendation(out, keys)}
 
@@ -169,23 +170,6 @@ def _holding_text(held: list) -> str:
     return f"holding the surface under the largest load ({load:.0f} N), output stiffness at rest: " + "; ".join(parts)
 
 
-def pump_power(req, candidates) -> dict:
-    """The pump's required output power (the largest load at the required
-    speed) against the best demonstrated pump power (``pump.BEST_DEMONSTRATED_POWER_W``)."""
-    from ..technologies.piezo_pump.designs import BEST_DEMONSTRATED_POWER_W, BEST_DEMONSTRATED_SOURCE
-    loads = [k["load_N"] for c in candidates if c["technology"] == "piezo_pump"
-             for k in (c.get("simulated") or {}).get("cases", [])]
-    required = max(loads, default=0.0) * req.requirements.speed
-    return {"required_output_power_W": required, "best_demonstrated_power_W": BEST_DEMONSTRATED_POWER_W,
-            "best_demonstrated_source": BEST_DEMONSTRATED_SOURCE}
-
-
-def _pump_power_text(entry) -> str:
-    need, best = entry["required_output_power_W"], entry["best_demonstrated_power_W"]
-    return (f"the piezo pump must deliver {need:.3g} W at the output ({need / best:.2g} x the best demonstrated "
-            f"piezo pump, {best:.3g} W)")
-
-
 def _one_miss_text(label, entry, keys) -> str:
     figures = ", ".join(format_metric(k, entry["metrics"].get(k)) for k in keys)
     if entry.get("needs"):
@@ -205,10 +189,10 @@ def _rival(t):
     return near if near and near.get("comparable") else None
 
 
-def _ratio_line(a, b, keys, label) -> str:
-    """``label`` best over the DC best in every objective (like with like:
+def _ratio_line(a, b, keys, label, other) -> str:
+    """``label`` best over the ``other`` best in every objective (like with like:
     an infeasible side only through its one-miss design with what it needs)."""
-    sides = [(name, t, _rival(t)) for name, t in ((label, a), ("DC motor", b))]
+    sides = [(name, t, _rival(t)) for name, t in ((label, a), (other, b))]
     missing = [name for name, _, r in sides if r is None]
     if missing:
         return f"{' and '.join(missing)}: no design to compare like with like (none meets every check but the amplifier count)"
@@ -245,7 +229,7 @@ def _recommendation(out: dict, keys: list[str], pick: tuple | None = None, claus
     feasible = {t: e for t, e in out.items() if e["feasible"]}
     if not feasible or not keys:
         return ("No technology meets every requirement: see what blocks each and what would flip it"
-                + _pump_clause(out) + ".")
+                + _own_clauses(out) + ".")
     key = keys[0]
     tech, best = pick or min(feasible.items(), key=lambda kv: kv[1]["metrics"].get(key) or math.inf)
     text = f"Choose the {actuator_noun(tech)}: {best['name']} ({format_metric(key, best['metrics'].get(key))})"
@@ -263,12 +247,13 @@ def _recommendation(out: dict, keys: list[str], pick: tuple | None = None, claus
     deciding = best.get("deciding_assumed_words") or best.get("deciding_assumed") or []
     if deciding:
         text += f"; its binding check rests on {assumed_clause(deciding)}"
-    return text + clause + _pump_clause(out) + "."
+    return text + clause + _own_clauses(out) + "."
 
 
-def _pump_clause(out: dict) -> str:
-    entry = out.get("piezo_pump", {})
-    return "; " + _pump_power_text(entry) if "required_output_power_W" in entry else ""
+def _own_clauses(out: dict) -> str:
+    """The technologies' own figures (``comparison_words``), after the recommendation."""
+    return "".join("; " + t.comparison_words(out[t.name]) for t in technologies()
+                   if t.name in out and t.comparison_fields is not None)
 
 
 def _rests_text(entry) -> str:

@@ -1,10 +1,14 @@
 """Short human names of candidates (at most 32 characters): what an
 engineer would say of the design, the ``id`` staying the machines' key.
 
-    piezohydraulic   "17xP056.90 87257 PTFE-OR Al orif"   stacks, fluid, seal, structure, compensation
-    DC from parts    "DC MF0127008 R12-05K4 belt-2"    motor, screw, gear
-    DC catalog       "DC exlar-gsx20-0301"
-    piezo pump       "PP 1xP056.90 r6 p80 50Hz 0.5mpa" stacks, valve, piston, frequency (bias where it differs)
+Each technology names its own designs (``short_name`` of its registered
+``Technology``, in its folder's ``words.py``) from the helpers here, e.g.
+
+    "17xP056.90 87257 PTFE-OR Al orif"   stacks, fluid, seal, structure, compensation
+    "DC MF0127008 R12-05K4 belt-2"       motor, screw, gear
+    "PP 1xP056.90 r6 p80 50Hz 0.5mpa"    stacks, valve, piston, frequency (bias where it differs)
+
+and ``unique`` keeps them apart within one list.
 """
 from __future__ import annotations
 

@@ -10,7 +10,6 @@ import numpy as np
 
 from ..io.requirements import RequirementsFile
 from ..physics import stack as stack_phys
-from ..technologies.dc_motor.verdict import dc_sourced
 from ..technologies.registry import technologies
 from .comparison import technology_comparison
 
@@ -133,7 +132,7 @@ def _summary(req: RequirementsFile, candidates: list[dict], catalog, pruned=None
             "comparison": technology_comparison(req, candidates, catalog),
             "feasible": sum(1 for c in candidates if c["feasible"]),
             "pareto": [c["id"] for c in candidates if c["pareto"]],
-            "dc_sourced": dc_sourced(catalog, candidates)}
+            **{k: v for t in technologies() for k, v in t.summary_fields(catalog, candidates).items()}}
 
 
 STAGES = {"pruned": 0, "gp_failed": 0, "gp_infeasible": 1, "sized": 2, "simulated": 3}

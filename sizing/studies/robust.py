@@ -139,10 +139,9 @@ def pick_designs(results: dict, k: int, technology: str | None = None) -> list[d
     piezohydraulic designs, DC designs from parts (not the catalog's
     ready-made DC actuators); only ``technology``'s when given, and the
     simulated pumps only when asked for (``technology`` "piezo_pump")."""
-    out = [c for c in results["candidates"] if "design" in c and (
-        c["technology"] == "piezohydraulic" or (c["technology"] == "dc_motor" and c.get("variant") == "parts")
-        or (c["technology"] == "piezo_pump" and technology == "piezo_pump" and c.get("stage") == "simulated"))
-        and technology in (None, c["technology"])]
+    from ..technologies.registry import get
+    out = [c for c in results["candidates"] if "design" in c and (tech := get(c["technology"])) is not None
+           and tech.perturbable(c, technology) and technology in (None, c["technology"])]
     return out[:k]
 
 

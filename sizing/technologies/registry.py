@@ -11,11 +11,13 @@ from __future__ import annotations
 
 import importlib
 import pkgutil
+import threading
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
 _REGISTERED: dict[str, "Technology"] = {}
 _FOUND = False
+_FINDING = threading.RLock()        # solves may run in threads: the first finds the packages, the others wait
 
 
 def _nothing(*_args, **_kwargs):
@@ -65,7 +67,13 @@ class Technology:
     prunes_before_sizing: bool = False      # its ruled-out combinations count as "ruled out before sizing"
     extra_counts: tuple[str, ...] = ()      # its own counts ``summary.counts`` repeats
     results_fields: Callable = field(default=lambda catalog: {})    # results.json fields of its own
+    summary_fields: Callable = field(default=lambda catalog, candidates: {})    # results.json ``summary`` fields of its own
     in_every_sweep_point: bool = False      # sweep.json counts it at every point, with or without designs
+    compared_with: str = ""                 # the technology the comparison states its best against, ratio by ratio
+    comparison_fields: Callable | None = None   # (req, candidates) -> its own fields of the comparison's entry
+    comparison_words: Callable | None = None    # (its comparison entry) -> the sentence that states them
+    # (candidate, the technology robust was asked for or None) -> whether robust perturbs the candidate's parts
+    perturbable: Callable = field(default=lambda candidate, asked: False)
 
     @property
     def actuator(self) -> str:
@@ -111,9 +119,12 @@ def _find() -> None:
     global _FOUND
     if _FOUND:
         return
-    _FOUND = True
-    package = importlib.import_module(__package__)
-    for info in pkgutil.iter_modules(package.__path__):
-        if info.ispkg:
-            module = importlib.import_module(f"{__package__}.{info.name}.technology")
-            _REGISTERED.setdefault(module.TECHNOLOGY.name, module.TECHNOLOGY)
+    with _FINDING:
+        if _FOUND:
+            return
+        package = importlib.import_module(__package__)
+        found = [importlib.import_module(f"{__package__}.{info.name}.technology").TECHNOLOGY
+                 for info in pkgutil.iter_modules(package.__path__) if info.ispkg]
+        for technology in found:
+            _REGISTERED.setdefault(technology.name, technology)
+        _FOUND = True

@@ -7,6 +7,7 @@ from ...sim.dc_motor import DCMotorModel
 from ..registry import Group, Technology
 from . import actuator, stage, words
 from .catalog_actuators import dc_duration
+from .verdict import dc_sourced
 
 
 def supply_caveat(req, feasible: list[dict], catalog) -> str:
@@ -38,4 +39,6 @@ TECHNOLOGY = Technology(
     short_name=words.short_name, describe=words.describe,
     rests_on=("sizing.physics.dc_motor", "sizing.physics.motor", "sizing.physics.screw", "sizing.sim.dc_motor"),
     traces=traces, counts_key="dc_parts", in_every_sweep_point=True,
+    summary_fields=lambda catalog, candidates: {"dc_sourced": dc_sourced(catalog, candidates)},
+    perturbable=lambda candidate, asked: candidate.get("variant") == "parts",     # not the catalog's actuators
 )

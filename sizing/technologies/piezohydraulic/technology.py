@@ -48,5 +48,6 @@ TECHNOLOGY = Technology(
     traces=traces, disagreements=stage.disagreements,
     counts_key=None, prunes_before_sizing=True, extra_counts=("sized",),
     results_fields=lambda catalog: {"hysteresis_time_scales": designs.hysteresis_time_scales(catalog)},
-    in_every_sweep_point=True,
+    in_every_sweep_point=True, compared_with="dc_motor",
+    perturbable=lambda candidate, asked: True,
 )

@@ -58,8 +58,8 @@ def requirements(blocked_N, load_N, speed, stroke, supply=None):
 
 def best_design(data, catalog):
     """The lightest feasible DC design from parts (or None) and its record."""
-    from sizing.engine.dc_candidate import parts_candidate
-    from sizing.engine.dc_sizing import dc_parts_designs
+    from sizing.technologies.dc_motor.record import parts_candidate
+    from sizing.technologies.dc_motor.from_parts import dc_parts_designs
     from sizing.engine.evaluate import load_cases
     from sizing.engine.rank import verdict
     from sizing.io.requirements import parse_requirements

@@ -46,9 +46,9 @@ def main() -> int:
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as cache:
         os.environ["SIZING_CACHE_DIR"] = cache          # a cold cache first
-        from sizing.engine import dc_search
-        from sizing.engine.dc_candidate import parts_candidate
-        from sizing.engine.dc_sizing import dc_parts_designs
+        from sizing.technologies.dc_motor import search as dc_search
+        from sizing.technologies.dc_motor.record import parts_candidate
+        from sizing.technologies.dc_motor.from_parts import dc_parts_designs
         from sizing.engine.evaluate import load_cases
         from sizing.io.catalog import load_catalog
         from sizing.io.requirements import load_requirements

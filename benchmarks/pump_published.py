@@ -50,7 +50,7 @@ from pathlib import Path
 import numpy as np
 from scipy.optimize import brentq
 
-from sizing.engine import pump_screen
+from sizing.technologies.piezo_pump import screen as pump_screen
 from sizing.io.catalog import load_catalog
 from sizing.physics import pump
 from sizing.sim.pump import PumpModel, simulate

@@ -24,11 +24,11 @@ import sys
 import time
 from pathlib import Path
 
-from sizing.engine.dc_candidate import parts_candidate
-from sizing.engine.dc_sizing import dc_parts_designs
+from sizing.technologies.dc_motor.record import parts_candidate
+from sizing.technologies.dc_motor.from_parts import dc_parts_designs
 from sizing.engine.evaluate import load_cases
-from sizing.engine.pump import pump_designs
-from sizing.engine.pump_candidate import pump_candidate
+from sizing.technologies.piezo_pump.designs import pump_designs
+from sizing.technologies.piezo_pump.record import pump_candidate
 from sizing.engine.solve import solve
 from sizing.io.catalog import load_catalog
 from sizing.io.requirements import load_requirements

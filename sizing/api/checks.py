@@ -17,8 +17,8 @@ def n_loads(load) -> int:
 def check_evaluate_steps(design, cat: Catalog, file: str) -> None:
     """Refuse a design whose simulation would need more steps than the
     limit: duration x rate x load cases."""
-    from ..engine.dc import output_rate
-    from ..engine.verify import SETTLE_TIME_S
+    from ..technologies.dc_motor.actuator import output_rate
+    from ..technologies.piezohydraulic.verify import SETTLE_TIME_S
     from ..limits import check_steps, dc_steps, piezo_steps
     if isinstance(design, PiezoDesignFile):
         ramp = design.ramp_time if design.ramp_time is not None else design.rise_time
@@ -34,9 +34,9 @@ def check_solve_steps(req, cat: Catalog, file: str) -> None:
     """Refuse requirements whose DC verification would need more steps than
     the limit: catalog actuators x load cases x simulated time. The
     piezohydraulic designs are simulated within what is left
-    (``engine.solve.piezo_simulation_budget``): a slow, long stroke
+    (``technologies.piezohydraulic.stage.piezo_simulation_budget``): a slow, long stroke
     simulates fewer of them, or none, instead of stopping the solve."""
-    from ..engine.solve import dc_actuator_steps
+    from ..technologies.dc_motor.stage import dc_actuator_steps
     from ..limits import check_steps
     check_steps(dc_actuator_steps(req, cat), file, "[requirements].stroke",
                 "simulation steps (DC actuators x load cases x stroke / speed)")

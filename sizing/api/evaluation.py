@@ -41,7 +41,7 @@ def evaluate(design_path: str | Path, catalog_dir: str | Path | None = None,
     ``feasible``, ``driver`` and ``judged`` (the solve's metrics and
     static margins of the design, engine/judge.py)."""
     from ..engine.evaluate import evaluate_dc, evaluate_piezo
-    from ..engine.pump_evaluate import evaluate_pump
+    from ..technologies.piezo_pump.evaluate import evaluate_pump
     from ..io.design import PumpDesignFile
     from ..io.provenance import assumed_values
 

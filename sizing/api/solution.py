@@ -39,7 +39,7 @@ class SolveResult(Payload):
     def flip_lines(self) -> list[str]:
         """What would flip each technology's verdict, re-solved, in the
         user's units: one terminal line per technology (none with --fast)."""
-        from ..engine.comparison import LABELS
+        from ..engine.comparison import actuator_noun
         from ..engine.flip import flip_text
         lines = []
         for tech, t in self.results["summary"].get("comparison", {}).get("technologies", {}).items():
@@ -47,7 +47,7 @@ class SolveResult(Payload):
             if flips is None:
                 continue
             shown = sorted(flips, key=lambda f: (f["to"] is None, f["changes"] != "feasibility"))
-            lines.append(f"what would flip the {LABELS.get(tech, tech)} (re-solved, to 1 %): " + "; ".join(flip_text(f) for f in shown))
+            lines.append(f"what would flip the {actuator_noun(tech)} (re-solved, to 1 %): " + "; ".join(flip_text(f) for f in shown))
         return lines
 
     def files(self) -> dict:

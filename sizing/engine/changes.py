@@ -16,6 +16,7 @@ import math
 
 from .rank import OBJECTIVE_KEYS
 from ..display import field_name, number, quantity
+from ..technologies.registry import label
 
 # order of the events in the list, most important first
 EVENTS = ("entered_feasible", "left_feasible", "entered_pareto", "left_pareto",
@@ -241,7 +242,6 @@ SHOWN = {"stroke_m": ("stroke", "mm", 1e3), "blocked_force_N": ("blocked force",
          "min_natural_frequency_Hz": ("minimum natural frequency", "Hz", 1.0), "max_overshoot": ("max overshoot", "", 1.0)}
 # values derived from the others (stroke time = stroke / speed ...): listed after those people set
 DERIVED = ("stroke_time_s", "max_thermal_drift_m", "min_natural_frequency_Hz")
-TECH_NAMES = {"piezohydraulic": "piezohydraulic", "dc_motor": "DC motor", "piezo_pump": "piezo pump"}
 
 
 def recommended(results: dict) -> dict | None:
@@ -265,7 +265,7 @@ def _design_words(t: dict | None) -> str:
     if t is None:
         return "none (no technology meets every requirement)"
     figures = ", ".join(_metric(k, v) for k, v in (t.get("metrics") or {}).items())
-    return f"{t.get('name') or t.get('best')} ({TECH_NAMES.get(t['technology'], t['technology'])}{', ' + figures if figures else ''})"
+    return f"{t.get('name') or t.get('best')} ({label(t['technology'])}{', ' + figures if figures else ''})"
 
 
 def _metric(key: str, value) -> str:
@@ -294,7 +294,7 @@ def technology_changes(baseline: dict, results: dict) -> list[str]:
         word = lambda t: ("absent" if t is None else      # noqa: E731
                           f"{t.get('name') or t.get('best')} {'feasible' if t.get('feasible') else 'infeasible'}")
         same = a is not None and b is not None and a.get("best") == b.get("best") and a.get("feasible") == b.get("feasible")
-        lines.append(f"{TECH_NAMES.get(tech, tech)}: {word(b)}" + (" (unchanged)" if same else f" (was {word(a)})"))
+        lines.append(f"{label(tech)}: {word(b)}" + (" (unchanged)" if same else f" (was {word(a)})"))
     return lines
 
 

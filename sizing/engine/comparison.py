@@ -1,4 +1,4 @@
-"""The two technologies side by side: for each, its best design, the check
+"""The technologies side by side: for each, its best design, the check
 that binds it (its smallest margin: the design driver when feasible, the
 blocking requirement when not), and how far the best of each is from the
 other in every objective."""
@@ -10,10 +10,15 @@ from .rank import OBJECTIVE_KEYS
 from .assumed import assumed_clause, in_words
 from .describe import describe
 from .flip import smallest
+from ..technologies.registry import get as technology, technologies
 
-LABELS = {"piezohydraulic": "piezohydraulic actuator", "dc_motor": "DC motor actuator",
-          "piezo_pump": "piezo pump actuator"}
-TECHNOLOGIES = (("piezohydraulic", "piezohydraulic"), ("dc_motor", "DC motor"), ("piezo_pump", "piezo pump"))
+
+
+def actuator_noun(name: str) -> str:
+    """"DC motor actuator": what a technology's designs are called."""
+    tech = technology(name)
+    return tech.actuator if tech is not None else name
+
 
 STAGE_ORDER = {"pruned": 0, "gp_failed": 0, "gp_infeasible": 1, "sized": 2, "simulated": 3}
 
@@ -87,7 +92,8 @@ def technology_comparison(req, candidates: list[dict], catalog=None, flips: dict
     when they were not computed (``solve --fast``)."""
     keys = [OBJECTIVE_KEYS[k] for k in req.objectives.minimize]
     out, lines = {}, []
-    for tech, label in TECHNOLOGIES:
+    labelled = [(t.name, t.label) for t in technologies()]
+    for tech, label in labelled:
         members = [c for c in candidates if c["technology"] == tech and c.get("metrics")]
         if not members:
             continue
@@ -123,19 +129,19 @@ def technology_comparison(req, candidates: list[dict], catalog=None, flips: dict
                          f"misses {best['driver']} {_miss(m)}")
             if near is not None:
                 lines.append(_one_miss_text(label, out[tech]["one_miss"], keys))
-    for tech, label in TECHNOLOGIES:
+    for tech, label in labelled:
         if tech in out:
             lines.append(f"{label}: " + _rests_text(out[tech]) + "; " + _flip_text(out[tech]))
-    held = [(LABELS[tech].removesuffix(" actuator"), out[tech]["holding"]) for tech, _ in TECHNOLOGIES
-            if tech in out and "holding" in out[tech]]
+    held = [(label, out[tech]["holding"]) for tech, label in labelled if tech in out and "holding" in out[tech]]
     if held:
         lines.append(_holding_text(held))
-    if "piezo_pump" in out:
-        out["piezo_pump"].update(pump_power(req, candidates))
-        lines.append(_pump_power_text(out["piezo_pump"]))
-    for first, second in (("piezohydraulic", "dc_motor"), ("piezo_pump", "dc_motor")):
-        if first in out and second in out:
-            lines.append(_ratio_line(out[first], out[second], keys, LABELS[first].removesuffix(" actuator")))
+    for t in technologies():                # a technology's own figures beside its verdict
+        if t.name in out and t.comparison_fields is not None:
+            out[t.name].update(t.comparison_fields(req, candidates))
+            lines.append(t.comparison_words(out[t.name]))
+    for t in technologies():
+        if t.name in out and t.compared_with in out:
+            lines.append(_ratio_line(out[t.name], out[t.compared_with], keys, t.label, technology(t.compared_with).label))
     return {"technologies": out, "text": ". ".join(lines) + ("." if lines else ""),
             "recommendation": _recommendation(out, keys)}
 
@@ -164,23 +170,6 @@ def _holding_text(held: list) -> str:
     return f"holding the surface under the largest load ({load:.0f} N), output stiffness at rest: " + "; ".join(parts)
 
 
-def pump_power(req, candidates) -> dict:
-    """The pump's required output power (the largest load at the required
-    speed) against the best demonstrated pump power (``pump.BEST_DEMONSTRATED_POWER_W``)."""
-    from .pump import BEST_DEMONSTRATED_POWER_W, BEST_DEMONSTRATED_SOURCE
-    loads = [k["load_N"] for c in candidates if c["technology"] == "piezo_pump"
-             for k in (c.get("simulated") or {}).get("cases", [])]
-    required = max(loads, default=0.0) * req.requirements.speed
-    return {"required_output_power_W": required, "best_demonstrated_power_W": BEST_DEMONSTRATED_POWER_W,
-            "best_demonstrated_source": BEST_DEMONSTRATED_SOURCE}
-
-
-def _pump_power_text(entry) -> str:
-    need, best = entry["required_output_power_W"], entry["best_demonstrated_power_W"]
-    return (f"the piezo pump must deliver {need:.3g} W at the output ({need / best:.2g} x the best demonstrated "
-            f"piezo pump, {best:.3g} W)")
-
-
 def _one_miss_text(label, entry, keys) -> str:
     figures = ", ".join(format_metric(k, entry["metrics"].get(k)) for k in keys)
     if entry.get("needs"):
@@ -200,10 +189,10 @@ def _rival(t):
     return near if near and near.get("comparable") else None
 
 
-def _ratio_line(a, b, keys, label) -> str:
-    """``label`` best over the DC best in every objective (like with like:
+def _ratio_line(a, b, keys, label, other) -> str:
+    """``label`` best over the ``other`` best in every objective (like with like:
     an infeasible side only through its one-miss design with what it needs)."""
-    sides = [(name, t, _rival(t)) for name, t in ((label, a), ("DC motor", b))]
+    sides = [(name, t, _rival(t)) for name, t in ((label, a), (other, b))]
     missing = [name for name, _, r in sides if r is None]
     if missing:
         return f"{' and '.join(missing)}: no design to compare like with like (none meets every check but the amplifier count)"
@@ -240,30 +229,31 @@ def _recommendation(out: dict, keys: list[str], pick: tuple | None = None, claus
     feasible = {t: e for t, e in out.items() if e["feasible"]}
     if not feasible or not keys:
         return ("No technology meets every requirement: see what blocks each and what would flip it"
-                + _pump_clause(out) + ".")
+                + _own_clauses(out) + ".")
     key = keys[0]
     tech, best = pick or min(feasible.items(), key=lambda kv: kv[1]["metrics"].get(key) or math.inf)
-    text = f"Choose the {LABELS.get(tech, tech)}: {best['name']} ({format_metric(key, best['metrics'].get(key))})"
+    text = f"Choose the {actuator_noun(tech)}: {best['name']} ({format_metric(key, best['metrics'].get(key))})"
     for other, entry in out.items():
         if other == tech:
             continue
         rival = _rival(entry)
         if rival and rival["metrics"].get(key) and best["metrics"].get(key):
             ratio = rival["metrics"][key] / best["metrics"][key]
-            what = (f"the best {LABELS.get(other, other)} design" if entry["feasible"] else
-                    f"the {LABELS.get(other, other)} design {rival['name']} with the "
+            what = (f"the best {actuator_noun(other)} design" if entry["feasible"] else
+                    f"the {actuator_noun(other)} design {rival['name']} with the "
                     f"{rival['needs']['amplifier_units']} amplifier units it needs")
             text += (f", {ratio:.3g} x lighter than {what}" if key == "mass_kg"
                      else f", {ratio:.3g} x better in {key.split('_')[0]} than {what}")
     deciding = best.get("deciding_assumed_words") or best.get("deciding_assumed") or []
     if deciding:
         text += f"; its binding check rests on {assumed_clause(deciding)}"
-    return text + clause + _pump_clause(out) + "."
+    return text + clause + _own_clauses(out) + "."
 
 
-def _pump_clause(out: dict) -> str:
-    entry = out.get("piezo_pump", {})
-    return "; " + _pump_power_text(entry) if "required_output_power_W" in entry else ""
+def _own_clauses(out: dict) -> str:
+    """The technologies' own figures (``comparison_words``), after the recommendation."""
+    return "".join("; " + t.comparison_words(out[t.name]) for t in technologies()
+                   if t.name in out and t.comparison_fields is not None)
 
 
 def _rests_text(entry) -> str:

@@ -9,11 +9,13 @@ from ..errors import InputError
 from ..io.catalog import Catalog
 from ..io.design import DCDesignFile, PiezoDesignFile
 from ..physics import hydraulics, structure, thermal
-from . import dc as dc_engine, force_path, holding
+from . import holding
+from ..technologies.dc_motor import actuator as dc_engine
+from ..technologies.piezohydraulic import force_path
 from .loads import load_cases, surface_mass
-from .piezo import (DEFAULT_PRESSURE_RATING_PA, Candidates, part_row, reference_bouc_wen, stack_bouc_wen,
+from ..technologies.piezohydraulic.parts import (DEFAULT_PRESSURE_RATING_PA, Candidates, part_row, reference_bouc_wen, stack_bouc_wen,
                     structure_row)
-from .verify import FILL_TEMPERATURE_DEGC, metrics, ramp_time, seal_friction_at, simulate_cases, static_figures
+from ..technologies.piezohydraulic.verify import FILL_TEMPERATURE_DEGC, metrics, ramp_time, seal_friction_at, simulate_cases, static_figures
 
 RATIO_TOLERANCE = 0.01
 
@@ -168,7 +170,7 @@ def _worst(cases: list[dict]) -> dict:
 
 def evaluate_dc(design: DCDesignFile, catalog: Catalog, file: str) -> dict:
     if design.actuator is None:
-        from .dc_sizing import evaluate_parts
+        from ..technologies.dc_motor.from_parts import evaluate_parts
         cases = load_cases(design.load)
         parts = {kind: lookup(catalog, getattr(catalog, kind + "s"), getattr(design, kind), file, kind)
                  for kind in ("motor", "screw", "gear", "drive")}

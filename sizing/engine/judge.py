@@ -9,7 +9,7 @@ as a solved one would be:
 - piezohydraulic: the parts as one search combination
   (``search.combos_of``), the geometry, structure and drive of the file as
   a ``convex.SizingResult`` (amplifier units and ramp fixed by the file),
-  then ``solve.verify_sized``: static figures, margins, the simulation under
+  then ``piezohydraulic.stage.verify_sized``: static figures, margins, the simulation under
   every load case of the requirements, verdict. A passive spacer is derived
   again from the thermal budget, as the solve derives it;
 - DC from parts: ``dc_sizing.verify_parts`` with the file's controller and
@@ -27,12 +27,12 @@ import numpy as np
 from ..errors import InputError
 from ..io.catalog import Catalog
 from ..io.design import DCDesignFile, PiezoDesignFile
-from .convex import SizingResult
+from ..technologies.piezohydraulic.convex import SizingResult
 from .evaluate import geometry, lookup, structure_of
 from .loads import load_cases
 from .rank import verdict
 from .records import Variant
-from .search import combos_of
+from ..technologies.piezohydraulic.search import combos_of
 
 
 def judge(req, catalog: Catalog, design, file: str) -> dict:
@@ -70,7 +70,7 @@ def _verdict(cand: dict) -> dict:
 
 
 def _piezo(req, catalog: Catalog, designs: list[PiezoDesignFile], files: list[str], loads) -> list[dict]:
-    from .solve import verify_sized
+    from ..technologies.piezohydraulic.stage import verify_sized
     triples = [_triple(req, catalog, d, f) for d, f in zip(designs, files)]
     out = []
     for design, cands in zip(designs, verify_sized(req, catalog, triples, loads)):
@@ -101,15 +101,15 @@ def _triple(req, catalog: Catalog, design: PiezoDesignFile, file: str) -> tuple:
 
 
 def _dc_actuator(req, catalog: Catalog, design: DCDesignFile, file: str, loads) -> dict:
-    from .dc_candidates import actuator_design
+    from ..technologies.dc_motor.catalog_actuators import actuator_design
     act = lookup(catalog, catalog.dc_actuators, design.actuator, file, "actuator")
     d = actuator_design(req, act, loads)
     return {"margins": dict(d.margins), "metrics": dict(d.metrics)}
 
 
 def _dc_parts(req, catalog: Catalog, design: DCDesignFile, file: str, loads) -> dict:
-    from .dc_parts import metrics, static_screen
-    from .dc_sizing import dc_parts_designs, verify_parts
+    from ..technologies.dc_motor.parts import metrics, static_screen
+    from ..technologies.dc_motor.from_parts import dc_parts_designs, verify_parts
     from .records import DCParts
     from .sized import SETTINGS, parts_catalog, parts_design
     parts = DCParts(*(lookup(catalog, getattr(catalog, k + "s"), getattr(design, k), file, k).id
@@ -134,7 +134,7 @@ def _piezo_pump(req, catalog, design, file, loads) -> dict:
     """A pump design file judged against ``req``: its parts and settings
     with the requirements' stroke, speed, blocked force, duty and load in
     place of the file's own (``pump_evaluate.design_from_candidate``)."""
-    from .pump_evaluate import design_from_candidate, evaluate_pump
+    from ..technologies.piezo_pump.evaluate import design_from_candidate, evaluate_pump
     judged = design_from_candidate(req, {"design": design.model_dump(exclude={"stroke", "speed", "blocked_force",
                                                                               "strokes_per_second", "load"})})
     figures = evaluate_pump(judged, catalog, file)

@@ -1,21 +1,26 @@
 """Short human names of candidates (at most 32 characters): what an
 engineer would say of the design, the ``id`` staying the machines' key.
 
-    piezohydraulic   "17xP056.90 87257 PTFE-OR Al orif"   stacks, fluid, seal, structure, compensation
-    DC from parts    "DC MF0127008 R12-05K4 belt-2"    motor, screw, gear
-    DC catalog       "DC exlar-gsx20-0301"
-    piezo pump       "PP 1xP056.90 r6 p80 50Hz 0.5mpa" stacks, valve, piston, frequency (bias where it differs)
+Each technology names its own designs (``short_name`` of its registered
+``Technology``, in its folder's ``words.py``) from the helpers here, e.g.
+
+    "17xP056.90 87257 PTFE-OR Al orif"   stacks, fluid, seal, structure, compensation
+    "DC MF0127008 R12-05K4 belt-2"       motor, screw, gear
+    "PP 1xP056.90 r6 p80 50Hz 0.5mpa"    stacks, valve, piston, frequency (bias where it differs)
+
+and ``unique`` keeps them apart within one list.
 """
 from __future__ import annotations
 
-import re
 from collections import Counter
+
+from ..technologies import registry
 
 MAX_NAME = 32
 _MAKERS = ("pi-", "thorlabs-", "maxon-", "faulhaber-", "allied-", "gen-", "thk-", "hiwin-")
 
 
-def _short(part_id: str | None, keep: int = 14) -> str:
+def short_id(part_id: str | None, keep: int = 14) -> str:
     """A part id without its maker's prefix, at most ``keep`` characters."""
     text = str(part_id or "")
     for prefix in _MAKERS:
@@ -31,7 +36,7 @@ _WORDS = {"ptfe": "PTFE", "fkm": "FKM", "o": "O", "ring": "R", "spring": "S", "e
           "accumulator": "", "silicone": "sil", "mil": "", "prf": "", "iso": "", "vg": "VG", "mineral": ""}
 
 
-def _abbr(part_id: str | None, tokens: int = 2) -> str:
+def abbreviated(part_id: str | None, tokens: int = 2) -> str:
     """A few letters for a part: its first ``tokens`` id tokens, known words
     abbreviated, numbers kept short (mil-prf-87257 -> 87257, ptfe-o-ring -> PTFE-OR)."""
     out = []
@@ -46,52 +51,15 @@ def _abbr(part_id: str | None, tokens: int = 2) -> str:
     return "-".join(out)
 
 
-def _piezo(c: dict) -> str:
-    comp = c["components"]
-    stack = _short(comp.get("stack"))
-    stack = stack.upper().replace("-", "", 1) if re.match(r"^[a-z]-\d", stack) else stack
-    parts = [f"{comp.get('n_stacks')}x{stack}", _abbr(comp.get("fluid"), 1), _abbr(comp.get("seal"), 3),
-             _abbr(comp.get("material"), 1)]
-    variant = c.get("variant")
-    if variant == "passive":
-        parts.append("sp")
-    elif variant == "compensated":
-        parts.append(_abbr(comp.get("compensator"), 1))
-    return " ".join(p for p in parts if p)
-
-
-def _dc(c: dict) -> str:
-    comp = c["components"]
-    if "actuator" in comp:
-        return "DC " + _short(comp["actuator"], 28)
-    gear = comp.get("gear")
-    return " ".join(x for x in ("DC", _tokens(comp.get("motor"), 1).upper(), _tokens(comp.get("screw"), 2).upper(),
-                                _tokens(gear, 2) if gear else "") if x)
-
-
-def _tokens(part_id: str | None, n: int) -> str:
+def id_tokens(part_id: str | None, n: int) -> str:
     """The first ``n`` tokens of a part id after its maker (maxon-606793 -> 606793)."""
-    return "-".join(_short(part_id, 64).split("-")[:n])
-
-
-def _pump(c: dict) -> str:
-    """PP, stacks, valve (first letter and port mm), pump piston (mm) and
-    pumping frequency: "PP 1xP056.90 r6 p80 50Hz"; designs that differ only
-    in their accumulator add its bias (``unique``)."""
-    comp, d = c["components"], c.get("design", {})
-    stack = _short(comp.get("stack"))
-    stack = stack.upper().replace("-", "", 1) if re.match(r"^[a-z]-\d", stack) else stack
-    tokens = str(comp.get("valve") or "-").split("-")
-    f = float(d.get("pump_frequency", 0))
-    freq = f"{f / 1e3:.3g}kHz" if f >= 1e3 else f"{f:.0f}Hz"
-    return (f"PP {comp.get('n_stacks')}x{stack} {tokens[0][:1]}{tokens[-1].removesuffix('mm')} "
-            f"p{d.get('pump_diameter', 0) * 1e3:.0f} {freq}")
+    return "-".join(short_id(part_id, 64).split("-")[:n])
 
 
 def name(c: dict) -> str:
     """The candidate's short name, at most MAX_NAME characters."""
-    tech = c.get("technology")
-    text = _piezo(c) if tech == "piezohydraulic" else _pump(c) if tech == "piezo_pump" else _dc(c)
+    tech = registry.get(c.get("technology"))
+    text = tech.short_name(c) if tech is not None else str(c.get("id", ""))
     return text[:MAX_NAME]
 
 
@@ -134,7 +102,7 @@ def _difference(c: dict, group: list[dict]) -> str:
     comp = c.get("components", {})
     for key in comp:
         if len({str(g.get("components", {}).get(key)) for g in group}) > 1:
-            tokens = _short(str(comp[key]), 64).split("-")
+            tokens = short_id(str(comp[key]), 64).split("-")
             return tokens[min(1, len(tokens) - 1)][:8]        # servo-96v-12a -> 96v
     return ""
 

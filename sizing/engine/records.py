@@ -16,6 +16,7 @@ technology turns them into results.json records (``candidate.py``,
 from __future__ import annotations
 
 import math
+from collections import Counter
 from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Mapping
@@ -95,7 +96,7 @@ class PiezoDesign:
 
     @property
     def sized(self) -> tuple:
-        """What ``solve.verify_sized`` re-verifies: (Combo, Variant, SizingResult),
+        """What ``piezohydraulic.stage.verify_sized`` re-verifies: (Combo, Variant, SizingResult),
         the variant as built (``designs`` derives the spacer again)."""
         return self.combo, self.variant.as_built(), self.gp
 
@@ -300,3 +301,25 @@ class PiezoBrief:
                    min_stiffness=r.min_stiffness or 0.0, stroke_from=r.stroke_from,
                    edge_restraint=float(structure.edge_restraint(o.plate_edge, o.flange_restraint)))
 
+
+@dataclass(frozen=True)
+class Outcome:
+    """One technology's part of a solve: its candidate records (results.json
+    ``candidates``), what it ruled out without recording, by reason, the
+    one-line records of designs that are not designs (results.json
+    ``ruled_out``) and its own counts."""
+
+    technology: str
+    candidates: list
+    ruled_out: Counter = field(default_factory=Counter)
+    records: tuple = ()
+    counts: dict = field(default_factory=dict)
+
+    @property
+    def ruled_out_all(self) -> Counter:
+        return self.ruled_out + Counter(r["reason"] for r in self.records)
+
+
+def stages_of(records: dict) -> Stages:
+    """The ``Stages`` of a solve from each technology's records (by name)."""
+    return Stages.of(records.get("piezohydraulic", ()), records.get("dc_motor", ()), records.get("piezo_pump", ()))

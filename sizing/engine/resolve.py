@@ -103,7 +103,7 @@ def pump_lightest(stages, req, catalog, loads) -> tuple[str, float] | None:
     none complies: the static screen alone when no row passes every check
     the simulation does not replace (``pump.could_comply``), else the
     solve's own pump stage."""
-    from .pump import could_comply
+    from ..technologies.piezo_pump.designs import could_comply
     if not could_comply(req, catalog, loads):
         return None
     v = verdict_of(req, stages.piezo_pump(req, catalog, loads, None)[0].candidates)

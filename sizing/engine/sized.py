@@ -1,6 +1,6 @@
 """A solved design as ``sizing robust`` perturbs it, to re-run the solve's
 checks on perturbed parts: a piezohydraulic design as the (Combo, Variant,
-SizingResult) triple that ``solve.verify_sized`` re-verifies (the parts
+SizingResult) triple that ``piezohydraulic.stage.verify_sized`` re-verifies (the parts
 from the catalog, the geometry (R, wide bore, drive voltage) as sized); a
 DC design from parts as its parts and its settings (``DCPartsDesign``,
 re-verified by ``dc_sizing.verify_parts``). Taken from the solve's records
@@ -14,9 +14,9 @@ from dataclasses import dataclass
 from ..errors import InputError
 from ..io.catalog import Catalog
 from ..io.requirements import RequirementsFile
-from .convex import SizingResult
+from ..technologies.piezohydraulic.convex import SizingResult
 from .records import DCDesign, DCParts, Variant
-from .search import enumerate_combos
+from ..technologies.piezohydraulic.search import enumerate_combos
 
 
 def sized_designs(req: RequirementsFile, catalog: Catalog, candidates: list[dict]) -> list[tuple]:
@@ -93,7 +93,7 @@ def _dc_read_back(catalog: Catalog, cand: dict) -> DCPartsDesign:
 def parts_design(catalog: Catalog, parts: DCParts, settings: dict, duration: float | None) -> DCPartsDesign:
     """``parts`` as one row of ``dc_parts.PartArrays`` (enumerated from a
     catalog of these parts alone, so the row's values are the solve's)."""
-    from .dc_parts import enumerate_parts
+    from ..technologies.dc_motor.parts import enumerate_parts
     p = enumerate_parts(parts_catalog(catalog, parts))
     row = [i for i in range(len(p)) if p.gear[i] == parts.gear]
     return DCPartsDesign(p.take(row), settings, duration)
@@ -130,7 +130,7 @@ def study_designs(req: RequirementsFile, catalog: Catalog, candidates: list[dict
     (``read_back``)."""
     by_id = stages.by_id if stages is not None else {}
     dc = stages.dc if stages is not None else {}
-    from .pump_evaluate import design_from_candidate
+    from ..technologies.piezo_pump.evaluate import design_from_candidate
     return [by_id[c["id"]].sized if c["id"] in by_id
             else dc_parts_design(catalog, dc[c["id"]]) if isinstance(dc.get(c["id"]), DCDesign)
             else design_from_candidate(req, c) if c.get("technology") == "piezo_pump"

@@ -10,23 +10,15 @@ import numpy as np
 
 from ..io.requirements import RequirementsFile
 from ..physics import stack as stack_phys
-from . import dc as dc_engine
-from .dc_candidates import dc_duration
-from .dc_verdict import dc_sourced
-from ..sim.dc_motor import DCMotorModel
+from ..technologies.registry import technologies
 from .comparison import technology_comparison
-from .records import DCActuatorDesign
-from .verify import simulate_cases
 
 TRACE_POINTS = 600
-GROUPS = (("piezohydraulic", "uncompensated"), ("piezohydraulic", "passive"), ("piezohydraulic", "compensated"),
-          ("dc_motor", "catalog"), ("dc_motor", "parts"), ("piezo_pump", "pump"))
-LABELS = {("piezohydraulic", "uncompensated"): "piezohydraulic, as built (no thermal compensation)",
-          ("piezohydraulic", "passive"): "piezohydraulic, passive compensation (low-expansion spacer, longer frame)",
-          ("piezohydraulic", "compensated"): "piezohydraulic with thermal compensator",
-          ("dc_motor", "catalog"): "DC motor lead-screw actuators (catalog)",
-          ("dc_motor", "parts"): "DC motor actuators sized from parts (motor x screw x gear x drive)",
-          ("piezo_pump", "pump"): "piezo pump: stacks pumping through reed check valves into a cylinder"}
+
+
+def groups():
+    """((technology, variant), Group) of every registered technology's groups, in order."""
+    return tuple(((t.name, g.variant), g) for t in technologies() for g in t.groups)
 
 
 def _requirements_si(req: RequirementsFile) -> dict:
@@ -101,25 +93,26 @@ def _group(c) -> tuple[str, str]:
     return c["technology"], c.get("variant", "catalog")
 
 
-def _summary(req: RequirementsFile, candidates: list[dict], catalog, piezo_pruned=None) -> dict:
-    """Per technology group: counts, best, what blocks it. ``piezo_pruned``:
-    piezohydraulic combinations ruled out before sizing, counted by reason
+def _summary(req: RequirementsFile, candidates: list[dict], catalog, pruned=None) -> dict:
+    """Per technology group: counts, best, what blocks it. ``pruned``: per
+    technology, its combinations ruled out before sizing, counted by reason
     (they name the blocker of a group none of whose combinations was sized)."""
-    groups = []
-    for key in GROUPS:
+    out = []
+    for key, group in groups():
         members = [c for c in candidates if _group(c) == key]
         feasible = [c for c in members if c["feasible"]]
-        entry = {"technology": key[0], "variant": key[1], "label": LABELS[key], "n_candidates": len(members),
+        entry = {"technology": key[0], "variant": key[1], "label": group.label, "n_candidates": len(members),
                  "n_feasible": len(feasible)}
-        if not members and key[0] == "piezohydraulic" and piezo_pruned:
-            entry["blocking"] = piezo_pruned.most_common(1)[0][0]
+        ruled = (pruned or {}).get(key[0])
+        if not members and ruled:
+            entry["blocking"] = ruled.most_common(1)[0][0]
             entry["text"] = ("no feasible design: every combination was ruled out before sizing ("
-                             + ", ".join(f"{k}: {n}" for k, n in piezo_pruned.most_common()) + ")")
-            groups.append(entry)
+                             + ", ".join(f"{k}: {n}" for k, n in ruled.most_common()) + ")")
+            out.append(entry)
             continue
         if not members:
-            entry["text"] = "none in the catalog" if key[0] == "dc_motor" else "not evaluated"
-            groups.append(entry)
+            entry["text"] = group.empty
+            out.append(entry)
             continue
         best = min(members, key=lambda c: c["rank"])
         furthest = max(members, key=_progress_key)
@@ -127,38 +120,19 @@ def _summary(req: RequirementsFile, candidates: list[dict], catalog, piezo_prune
         entry["drivers"] = dict(Counter(c["driver"] for c in members if not c["feasible"]).most_common())
         if feasible:
             entry["text"] = f"{len(feasible)} feasible; best ranked {_label(best)} (driver: {best['driver']})"
-            if key[0] == "piezohydraulic":
-                entry["text"] += _amplifier_caveat(req, feasible, catalog)
-            if key == ("dc_motor", "parts") and req.requirements.supply_voltage is not None:
-                entry["text"] += f"; drives and windings chosen for the {req.requirements.supply_voltage:g} V supply"
+            entry["text"] += group.caveat(req, feasible, catalog)
         else:
             m = furthest["margins"][furthest["driver"]]
             entry["blocking"] = furthest["driver"]
             entry["closest"] = furthest["id"]
             entry["text"] = (f"no feasible design: blocked by {furthest['driver']} - the candidate that gets furthest, "
                              f"{_label(furthest)} ({furthest['stage']}), misses it {_pct(m)}")
-        groups.append(entry)
-    return {"groups": groups, "thermal": _thermal_statement(req, candidates),
+        out.append(entry)
+    return {"groups": out, "thermal": _thermal_statement(req, candidates),
             "comparison": technology_comparison(req, candidates, catalog),
             "feasible": sum(1 for c in candidates if c["feasible"]),
             "pareto": [c["id"] for c in candidates if c["pareto"]],
-            "dc_sourced": dc_sourced(catalog, candidates)}
-
-
-def _amplifier_caveat(req: RequirementsFile, feasible: list[dict], catalog) -> str:
-    """Feasible only because the amplifier sits in the electronics bay: say so
-    next to the verdict, not only among the assumptions."""
-    T = req.requirements.max_temperature
-    if req.options.amplifier_location != "bay":
-        return ""
-    ratings = {c["components"]["amplifier"]: catalog.amplifiers[c["components"]["amplifier"]].max_temperature
-               for c in feasible if c["components"].get("amplifier") in catalog.amplifiers}
-    below = {k: v for k, v in ratings.items() if v < T}
-    if not below or len(below) < len(ratings):
-        return ""
-    return (f"; every one relies on its amplifier sitting in an electronics bay at "
-            f"{req.options.electronics_bay_temperature:g} degC (rated {max(below.values()):g} degC at best, below "
-            f"{T:g} degC): with the amplifier at the actuator none is feasible")
+            **{k: v for t in technologies() for k, v in t.summary_fields(catalog, candidates).items()}}
 
 
 STAGES = {"pruned": 0, "gp_failed": 0, "gp_infeasible": 1, "sized": 2, "simulated": 3}
@@ -205,7 +179,7 @@ def _thermal_statement(req, candidates) -> str:
     return text
 
 
-def _downsample(t, y):
+def downsample(t, y):
     t, y = np.asarray(t), np.asarray(y)
     step = max(1, len(t) // TRACE_POINTS)
     return t[::step].tolist(), y[::step].tolist()
@@ -215,42 +189,25 @@ def _traces(req, candidates, stages, loads, top=3) -> list[dict]:
     """Time traces of the top designs: the best feasible ones, the best of
     each technology group, re-simulated with their traces kept. ``stages``:
     the solve's records (``records.Stages``)."""
-    by_key = {k: d for k, d in stages.by_id.items() if d.built}
     chosen = [c for c in candidates if c["feasible"]][:top]
-    for key in GROUPS:
+    for key, _ in groups():
         members = [c for c in candidates if _group(c) == key and c.get("stage") in ("simulated", "sized")]
         if members and members[0] not in chosen:
             chosen.append(members[0])
     out, known = [], set()
-    S = req.requirements.stroke
+    techs = {t.name: t for t in technologies()}
     for c in chosen:
         base = c["id"]
-        if base in known:
+        if base in known or c["technology"] not in techs:
             continue
         known.add(base)
-        if c["technology"] == "dc_motor":
-            d = stages.dc.get(base)
-            if isinstance(d, DCActuatorDesign):
-                sims = dc_engine.step_cases(d.actuator, S, loads, dc_duration(req), keep_traces=True)
-            elif d is not None and d.model:
-                params = dict(d.model)
-                sims = dc_engine.step_cases_for(lambda force: DCMotorModel(**params, load_force=force), S, loads,
-                                                dc_duration(req), keep_traces=True)
-            else:
-                continue
-            cases = []
-            for s in sims:
-                t, y = _downsample(s["t"], s["position_m"])
-                cases.append({"load_N": s["load_N"], "t": t, "position_m": y})
-        else:
-            d = by_key.get(base)
-            if d is None:
-                continue
-            sims = simulate_cases(d.cand, loads, np.array([d.ramp]), target_stroke=S, keep_traces=True)
-            cases = []
-            for s in sims:
-                t, y = _downsample(s["t"], s["position_m"][0])
-                cases.append({"load_N": float(s["load_N"][0]), "t": t, "position_m": y})
+        sims = techs[c["technology"]].traces(req, c, stages, loads)
+        if sims is None:
+            continue
+        cases = []
+        for s in sims:
+            t, y = downsample(s["t"], s["position_m"])
+            cases.append({"load_N": s["load_N"], "t": t, "position_m": y})
         out.append({"id": c["id"], "name": c.get("name", c["id"]), "technology": c["technology"],
                     "feasible": c["feasible"], "cases": cases})
     return out

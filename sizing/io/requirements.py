@@ -82,7 +82,7 @@ class OptionsTable(Strict):
 
     max_stacks: int = Field(20, ge=1, le=200)             # stack counts tried: 1..max_stacks
     # smallest oil gap in the wide chamber; None: the gap is sized, the stack
-    # stroke plus a clearance and a manufacturing tolerance (engine/verify.py)
+    # stroke plus a clearance and a manufacturing tolerance (technologies/piezohydraulic/verify.py)
     wide_gap: Optional[Qty("length", positive=True)] = None
     design_margin: Qty("dimensionless", nonnegative=True) = 0.05   # static sizing margin on stroke and force
     max_overshoot: Qty("dimensionless", positive=True) = 0.10      # simulated overshoot allowed

@@ -2,7 +2,7 @@
 
 Every formula uses only +, *, / and ** with positive constants, so the same
 function evaluates numpy arrays and builds cvxpy geometric-program
-expressions (posynomials) in ``engine/convex.py``.
+expressions (posynomials) in ``technologies/piezohydraulic/convex.py``.
 
 Assumed construction (stated in reports): 6061-T6 aluminium, design stress
 half the 276 MPa yield; pistons and end caps are simply supported circular
@@ -45,7 +45,7 @@ def narrow_piston_mass(narrow_area, stroke):
 def casing_mass(wide_area, narrow_area, pressure, wide_gap, stroke):
     """Wide cylinder wall + narrow cylinder wall. The end cap and the stack
     base plate are members of the force path, sized for stiffness and
-    stress in their own material (engine/force_path.py)."""
+    stress in their own material (technologies/piezohydraulic/force_path.py)."""
     wide_length = plate_thickness(wide_area, pressure) + wide_gap + 0.01
     narrow_length = stroke + ROD_EXTRA_LENGTH
     wide_wall = ALUMINIUM_DENSITY * 2 * math.pi * radius(wide_area) * wall_thickness(wide_area, pressure) * wide_length

@@ -6,6 +6,7 @@ import plotly.graph_objects as go
 from plotly.subplots import make_subplots
 
 from .layout import no_overprint
+from .words import tech_label
 
 UNITS = {"mass": ("mass_kg", 1.0, "mass (kg)"), "cost": ("cost_usd", 1.0, "cost (USD)"),
          "volume": ("volume_m3", 1e3, "volume (L)"), "power": ("power_W", 1.0, "peak power (W)")}
@@ -32,12 +33,14 @@ def hover_text(c: dict) -> str:
         ctl = c.get("controller") or {}
         head = (f"DC from parts: {comp['motor']}, {comp['screw']}, {comp['gear'] or 'no gear'}, {comp['drive']}"
                 f"<br>I-PD kp {ctl.get('kp', 0):.3g} A/m, ki {ctl.get('ki', 0):.3g} A/(m s), kd {ctl.get('kd', 0):.3g} A s/m")
-    else:
+    elif "n_stacks" in comp:
         ratio = comp.get("ratio")
         head = (f"{comp['n_stacks']} x {comp['stack']}, R = {ratio:.0f}<br>{comp['fluid']}, {comp['seal']}, "
                 f"{comp['amplifier']}" if ratio else f"{comp['n_stacks']} x {comp['stack']}")
         if c.get("variant") == "compensated":
             head += "<br>with thermal compensator"
+    else:                                   # a technology with no drawing of its own: its short name
+        head = f"{tech_label(c['technology'])} {c.get('name', c['id'])}"
     # the three smallest margins: what decides the design (the full list is in results.json)
     shown = sorted(c["margins"].items(), key=lambda kv: kv[1] if kv[1] is not None else -float("inf"))[:HOVER_MARGINS]
     margins = ", ".join(f"{k} {v:+.0%}" if v is not None else f"{k} n/a" for k, v in shown)
@@ -92,10 +95,15 @@ def pareto_figure(results: dict) -> go.Figure:
             key = "DC motor"
         elif c["technology"] == "piezo_pump":
             key = "piezo pump"
-        elif c.get("stage") in SHOWN_STAGES:
+        elif c["technology"] == "piezohydraulic":
+            if c.get("stage") not in SHOWN_STAGES:
+                continue
             key = f"piezohydraulic, {c.get('variant', 'uncompensated')}"
-        else:
-            continue
+        else:                               # any other technology: one marker of its own
+            key = tech_label(c["technology"])
+            for verdict, symbol in (("feasible", "hexagon"), ("infeasible", "hexagon-open")):
+                groups.setdefault(f"{key}, {verdict}", dict(symbol=symbol, color="#8c564b"))
+                pts.setdefault(f"{key}, {verdict}", ([], [], []))
         key += ", feasible" if c["feasible"] else ", infeasible"
         pts[key][0].append(m[xk] * xs)
         pts[key][1].append(m[yk] * ys)
@@ -114,7 +122,7 @@ def pareto_figure(results: dict) -> go.Figure:
     for tech, pts_ in fronts.items():
         front = _front_2d(pts_)
         fig.add_trace(go.Scatter(x=[p[0] for p in front], y=[p[1] for p in front], mode="lines",
-                                 name=f"{'DC motor' if tech == 'dc_motor' else tech} front (feasible)",
+                                 name=f"{tech_label(tech)} front (feasible)",
                                  line=dict(color="#d62728" if tech == "dc_motor" else "black", dash="dot"),
                                  hoverinfo="skip"))
     fig.update_layout(title=f"Designs in objective space ({xo} vs {yo}); hover for the design",

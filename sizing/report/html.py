@@ -8,6 +8,7 @@ from collections import Counter
 from ..display import requirement as display_requirement
 from ..engine.comparison import format_metric
 from .text import knife_edge_text
+from .words import tech_label
 from .bundle import plotly_tag
 
 from .figures import MARGIN_ORDER, comparison_figure, pareto_figure, traces_figure
@@ -107,6 +108,8 @@ def _design_table(cands: list[dict]) -> str:
                      f"piston {_num(d.get('pump_diameter'), 1e3, '{:.0f}')} mm, bore {_num(d.get('cylinder_diameter'), 1e3, '{:.0f}')} mm, "
                      f"{d.get('valve')}, bias {_num(d.get('bias_pressure'), 1e-6, '{:.2g}')} MPa, "
                      f"{_num(s.get('output_power_W'), fmt='{:.0f}')} W out, {_num(s.get('amplifier_power_VA'), fmt='{:.0f}')} VA drive, {d.get('amplifier')}")
+        elif c["technology"] != "piezohydraulic":      # no table of parts of its own: its parts by kind
+            parts = f"{tech_label(c['technology'])}: " + ", ".join(f"{v}" for v in (c.get("components") or {}).values())
         else:
             k = c["components"]
             parts = (f"{k['n_stacks']} x {k['stack']}, R = {_num(k['ratio'], fmt='{:.1f}')}, "
@@ -233,7 +236,6 @@ def _dc_parts_line(counts: dict) -> str:
             f"static screen, {p['simulated']} verified by simulation)")
 
 
-TECH_LABELS = {"piezohydraulic": "piezohydraulic", "dc_motor": "DC motor", "piezo_pump": "piezo pump"}
 
 
 def _answer(summary: dict) -> str:
@@ -256,7 +258,7 @@ def _answer(summary: dict) -> str:
         rests = (f"{len(t.get('rests_on_assumed') or [])} assumed values; in its binding margin: "
                  + (_e("; ".join(deciding)) if deciding else "none"))
         flip = _flips_cell(t)
-        rows.append(f"<tr><td class='l'><b>{_e(TECH_LABELS.get(tech, tech))}</b></td><td class='l'>{'feasible' if t.get('feasible') else 'infeasible'}"
+        rows.append(f"<tr><td class='l'><b>{_e(tech_label(tech))}</b></td><td class='l'>{'feasible' if t.get('feasible') else 'infeasible'}"
                     f"</td><td class='l' title='{_e(t.get('best'))}'><b>{_e(t.get('name') or t.get('best'))}</b>"
                     f"{_description(t)}<br>{_e(metrics)}</td>"
                     f"<td class='l'>{binding}</td>"
@@ -329,7 +331,7 @@ def _ruled_out_text(by_tech: dict, counts: dict | None = None) -> str:
             total = f"{own['left_out']:,} of {own['combinations']:,} combinations left out"
         else:
             total = f"{sum(reasons.values()):,}"
-        lines.append(f"<li><b>{_e(TECH_LABELS.get(tech, tech) or 'all')}</b>: {total} "
+        lines.append(f"<li><b>{_e(tech_label(tech) if tech else 'all')}</b>: {total} "
                      f"({head}) <details><summary>every check</summary>{rest}</details></li>")
     if not lines:
         return ""

@@ -4,12 +4,11 @@ their units (``sizing.display``)."""
 from __future__ import annotations
 
 from ..display import requirement
-
-TECH_LABELS = {"piezohydraulic": "piezohydraulic", "dc_motor": "DC motor", "piezo_pump": "piezo pump"}
+from ..technologies.registry import label
 
 
 def tech_label(tech: str) -> str:
-    return TECH_LABELS.get(tech, str(tech).replace("_", " "))
+    return label(tech)
 
 
 def design_name(d: dict | None) -> str:

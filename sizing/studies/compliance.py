@@ -51,8 +51,9 @@ def studied(cand: dict) -> bool:
     """Whether the tolerances can perturb the candidate's parts: sized
     piezohydraulic designs and DC designs from parts (``sizing robust``'s
     scope). The piezo pump joins here when its parts get a tolerance model."""
-    return "design" in cand and (cand["technology"] == "piezohydraulic"
-                                 or (cand["technology"] == "dc_motor" and cand.get("variant") == "parts"))
+    from ..technologies.registry import get
+    tech = get(cand["technology"])
+    return "design" in cand and tech is not None and tech.perturbable(cand, None)
 
 
 def not_estimated(cand: dict) -> dict:

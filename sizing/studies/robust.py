@@ -5,7 +5,7 @@ For each of the K best designs of ``sizing solve`` (piezohydraulic, and DC
 designs sized from parts), N samples of the tolerated catalog fields that
 apply to the design (``tolerances.py``) are drawn, and every sample is
 re-verified by the solve's own checks (piezohydraulic:
-``engine.solve.verify_sized``; DC: ``engine.dc_sizing.verify_parts``, with
+``piezohydraulic.stage.verify_sized``; DC: ``technologies.dc_motor.from_parts.verify_parts``, with
 the controller and drive limits kept as designed on the nominal parts:
 static figures, margins and a full dynamic simulation under every load
 case). Work is split into tasks of one design x
@@ -28,13 +28,13 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..engine.loads import load_cases
-from ..engine.piezo import reference_bouc_wen, stack_bouc_wen
+from ..technologies.piezohydraulic.parts import reference_bouc_wen, stack_bouc_wen
 from ..engine.rank import nondominated_levels
-from ..engine.dc_candidates import dc_duration
-from ..engine.dc_sizing import verify_parts
+from ..technologies.dc_motor.catalog_actuators import dc_duration
+from ..technologies.dc_motor.from_parts import verify_parts
 from ..engine.sized import DCPartsDesign, study_designs
-from ..engine.solve import verify_sized
-from ..engine.verify import SETTLE_TIME_S
+from ..technologies.piezohydraulic.stage import verify_sized
+from ..technologies.piezohydraulic.verify import SETTLE_TIME_S
 from ..io.design import PumpDesignFile
 from .executor import Executor, task_seed
 from .stats import sensitivity, wilson
@@ -109,8 +109,8 @@ def _verify_pump(task: BatchTask, tols: list[Tolerance], f: np.ndarray, temps) -
     """The pump's screen checks and cycle simulation (``pump_evaluate.verify_samples``)
     on each sample's perturbed parts, at the required maximum temperature;
     (per sample its verdict, simulated seconds)."""
-    from ..engine import pump_screen
-    from ..engine.pump_evaluate import verify_samples
+    from ..technologies.piezo_pump import screen as pump_screen
+    from ..technologies.piezo_pump.evaluate import verify_samples
     d, cat = task.design, task.catalog
     group = pump_screen.Group(cat.stacks[d.stack], d.n_stacks, cat.amplifiers[d.amplifier], cat.valves[d.valve],
                               cat.accumulators[d.accumulator], cat.fluids[d.fluid], cat.seals[d.seal])
@@ -139,10 +139,9 @@ def pick_designs(results: dict, k: int, technology: str | None = None) -> list[d
     piezohydraulic designs, DC designs from parts (not the catalog's
     ready-made DC actuators); only ``technology``'s when given, and the
     simulated pumps only when asked for (``technology`` "piezo_pump")."""
-    out = [c for c in results["candidates"] if "design" in c and (
-        c["technology"] == "piezohydraulic" or (c["technology"] == "dc_motor" and c.get("variant") == "parts")
-        or (c["technology"] == "piezo_pump" and technology == "piezo_pump" and c.get("stage") == "simulated"))
-        and technology in (None, c["technology"])]
+    from ..technologies.registry import get
+    out = [c for c in results["candidates"] if "design" in c and (tech := get(c["technology"])) is not None
+           and tech.perturbable(c, technology) and technology in (None, c["technology"])]
     return out[:k]
 
 

@@ -103,7 +103,8 @@ def run_point(task: PointTask) -> dict:
 
 def point_summary(results: dict, varied: dict) -> dict:
     cands = results["candidates"]
-    techs = sorted({c["technology"] for c in cands} | {"piezohydraulic", "dc_motor"})
+    from ..technologies.registry import technologies
+    techs = sorted({c["technology"] for c in cands} | {t.name for t in technologies() if t.in_every_sweep_point})
     feasible = {t: sum(1 for c in cands if c["technology"] == t and c.get("feasible")) for t in techs}
     best_by = {t: _brief(next((c for c in cands if c["technology"] == t and c.get("feasible")), None)) for t in techs}
     best = _brief(cands[0] if cands and cands[0].get("feasible") else None)

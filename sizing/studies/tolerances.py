@@ -4,7 +4,7 @@ A tolerance ``"kind.field" = s`` is a relative 1-sigma normal spread: each
 sample multiplies the field by ``1 + s z`` with z ~ N(0, 1), floored at
 ``FACTOR_FLOOR`` so a positive quantity stays positive (at s = 10 % that
 floor is 9.5 sigma away). The perturbed parts then go through the solve's
-own checks (``engine.solve.verify_sized``); nothing here computes physics
+own checks (``piezohydraulic.stage.verify_sized``); nothing here computes physics
 beyond picking the inputs.
 
 Two rules tie fields together:
@@ -115,7 +115,7 @@ def operating_temperatures(tols: list[Tolerance], f: np.ndarray, low: float, hig
 def perturbed_combo(combo, tols: list[Tolerance], row: np.ndarray, bouc_wen: BoucWen | None = None):
     """The combo with its parts' fields scaled by one sample's factors.
     ``bouc_wen``: the stack's parameters as the solve uses them (measured or
-    transferred, ``engine.piezo.stack_bouc_wen``), needed when a
+    transferred, ``technologies.piezohydraulic.parts.stack_bouc_wen``), needed when a
     ``stack.bouc_wen.*`` tolerance scales them."""
     updates = {"stack": {}, "fluid": {}, "seal": {}, "amplifier": {}}
     displacement, air, loop = 1.0, 0.0, {}

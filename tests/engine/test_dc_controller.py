@@ -1,11 +1,11 @@
-"""Controller gains of a DC design from its plant (engine/dc_controller.py)."""
+"""Controller gains of a DC design from its plant (technologies/dc_motor/controller.py)."""
 import math
 
 import numpy as np
 import pytest
 from scipy import stats
 
-from sizing.engine import dc_controller as ctl
+from sizing.technologies.dc_motor import controller as ctl
 from sizing.sim.dc_motor import DCMotorModel, simulate
 
 C1, C2, LEAD = -25.5552, 2987.02, 0.002   # the seed's plant (ARL-TR-10251 sec. 3.2)

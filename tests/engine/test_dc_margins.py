@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from sizing.engine import dc_parts
+from sizing.technologies.dc_motor import parts as dc_parts
 from sizing.engine.evaluate import load_cases
 from sizing.io.catalog import load_catalog
 from sizing.io.requirements import load_requirements

@@ -7,8 +7,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from sizing.engine import dc_parts, dc_sizing
-from sizing.engine.dc_candidate import parts_candidate
+from sizing.technologies.dc_motor import parts as dc_parts
+from sizing.technologies.dc_motor import from_parts as dc_sizing
+from sizing.technologies.dc_motor.record import parts_candidate
 from sizing.engine.evaluate import load_cases
 from sizing.io.catalog import load_catalog
 from sizing.io.requirements import load_requirements

@@ -1,5 +1,5 @@
-"""The DC structure sized by the load (engine/dc_structure.py) and the
-frameless-kit housing rule (engine/dc_parts.py), against hand numbers and
+"""The DC structure sized by the load (technologies/dc_motor/structure.py) and the
+frameless-kit housing rule (technologies/dc_motor/parts.py), against hand numbers and
 the data they come from."""
 import math
 import tomllib
@@ -8,7 +8,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from sizing.engine import dc_parts, dc_structure
+from sizing.technologies.dc_motor import parts as dc_parts
+from sizing.technologies.dc_motor import structure as dc_structure
 from sizing.physics import column
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -105,9 +106,9 @@ def test_frameless_housing_rule_refits_the_database():
 
 
 def _dc_records(data):
-    from sizing.engine.dc_candidate import actuator_candidate, parts_candidate
-    from sizing.engine.dc_candidates import actuator_designs
-    from sizing.engine.dc_sizing import dc_parts_designs
+    from sizing.technologies.dc_motor.record import actuator_candidate, parts_candidate
+    from sizing.technologies.dc_motor.catalog_actuators import actuator_designs
+    from sizing.technologies.dc_motor.from_parts import dc_parts_designs
     from sizing.engine.evaluate import load_cases
     from sizing.io.catalog import load_catalog
     from sizing.io.requirements import parse_requirements
@@ -174,7 +175,7 @@ def test_supply_voltage_chooses_the_drives_and_sets_the_bus():
 def test_output_samples_scale_with_the_duration():
     """The seed's 1.6 s response keeps 2 kHz; a 100 mm stroke at 3 mm/s
     (133 s simulated) keeps the same 3200 samples, 800 per stroke time."""
-    from sizing.engine import dc
+    from sizing.technologies.dc_motor import actuator as dc
     assert dc.output_rate(1.6) == dc.OUTPUT_RATE_HZ
     assert len(dc.output_times(1.6)) == 3201
     T = 4 * 0.1 / 0.003
@@ -213,8 +214,8 @@ def test_a_24_v_braked_design_round_trips_through_evaluate(tmp_path):
     """The design block of a design solved on a 24 V supply with a brake
     carries both; evaluated, it reproduces the mass and margins."""
     from sizing import api
-    from sizing.engine.dc_candidate import parts_candidate
-    from sizing.engine.dc_sizing import dc_parts_designs
+    from sizing.technologies.dc_motor.record import parts_candidate
+    from sizing.technologies.dc_motor.from_parts import dc_parts_designs
     from sizing.engine.rank import verdict
     from sizing.io.catalog import load_catalog
     from sizing.io.requirements import parse_requirements

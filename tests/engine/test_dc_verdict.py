@@ -8,8 +8,9 @@ from pathlib import Path
 
 import pytest
 
-from sizing.engine import dc_sizing, dc_verdict
-from sizing.engine.dc_candidate import actuator_candidate, parts_candidate
+from sizing.technologies.dc_motor import from_parts as dc_sizing
+from sizing.technologies.dc_motor import verdict as dc_verdict
+from sizing.technologies.dc_motor.record import actuator_candidate, parts_candidate
 from sizing.engine.evaluate import load_cases
 from sizing.engine.rank import verdict
 from sizing.io.catalog import load_catalog
@@ -99,7 +100,7 @@ def test_a_generic_part_is_not_real(solved):
 def test_the_lowest_ambient_rating_decides(solved):
     """A design bound by the ambient margin rests on the rating of the part
     rated lowest, not on every part's rating."""
-    from sizing.engine import dc_assumed
+    from sizing.technologies.dc_motor import assumed as dc_assumed
     _, cat, *_ = solved
     parts = {"motor": cat.motors["allied-mf0127008-48v"], "screw": cat.screws["ball-12x2"], "gear": None,
              "drive": cat.drives["servo-48v-10a"]}
@@ -114,7 +115,7 @@ def test_the_lowest_ambient_rating_decides(solved):
 def test_every_dc_candidate_says_what_it_rests_on(solved):
     """Catalog actuators too: a list, never null; each entry names a field of
     the part with an assumed status."""
-    from sizing.engine.dc_candidates import actuator_designs
+    from sizing.technologies.dc_motor.catalog_actuators import actuator_designs
     req, cat, loads, cands, _ = solved
     for c in [actuator_candidate(req, cat, d) for d in actuator_designs(req, cat, loads)] + cands:
         assert isinstance(c["rests_on_assumed"], list), c["id"]

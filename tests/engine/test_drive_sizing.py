@@ -8,7 +8,7 @@ import math
 
 import pytest
 
-from sizing.engine.piezo_designs import compensator_creep, effective_gap
+from sizing.technologies.piezohydraulic.designs import compensator_creep, effective_gap
 from sizing.engine.records import PiezoBrief
 from sizing.io.requirements import load_requirements
 from sizing.physics import amplifier, stack

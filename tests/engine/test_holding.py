@@ -10,7 +10,7 @@ import pytest
 
 from sizing import api
 from sizing.engine import holding
-from sizing.engine.convex import GPSizer
+from sizing.technologies.piezohydraulic.convex import GPSizer
 from sizing.io.requirements import load_requirements
 from sizing.physics import screw
 

@@ -17,7 +17,8 @@ import pytest
 
 from sizing.engine.loads import load_cases
 from sizing.engine.records import Variant
-from sizing.engine.solve import solve, verify_sized
+from sizing.engine.solve import solve
+from sizing.technologies.piezohydraulic.stage import verify_sized
 from sizing.io.catalog import load_catalog
 from sizing.io.requirements import load_requirements
 

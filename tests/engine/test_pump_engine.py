@@ -1,4 +1,4 @@
-"""The piezo pump in the seed solve (engine/pump.py, pump_screen.py): the
+"""The piezo pump in the seed solve (technologies/piezo_pump/designs.py, pump_screen.py): the
 designs it verifies, the contract's fields, the bound no design beats, the
 agreement of the two models and the three-technology verdict."""
 from __future__ import annotations
@@ -8,9 +8,9 @@ import json
 import numpy as np
 import pytest
 
-from sizing.engine import pump as pump_engine
+from sizing.technologies.piezo_pump import designs as pump_engine
 from sizing.engine.evaluate import load_cases
-from sizing.engine.pump_candidate import pump_candidate
+from sizing.technologies.piezo_pump.record import pump_candidate
 from sizing.io.catalog import load_catalog
 from sizing.io.requirements import load_requirements
 
@@ -132,7 +132,7 @@ def test_a_catalog_without_valves_sizes_no_pump(tmp_path):
 
 
 def test_a_diverged_cycle_simulation_is_a_failure_not_a_figure():
-    from sizing.engine.pump import DIVERGED_FACTOR, diverged
+    from sizing.technologies.piezo_pump.designs import DIVERGED_FACTOR, diverged
     case = {"load_N": 1210.0, "stroke_m": 0.04, "mean_speed_m_s": 0.1, "delivered_volume_m3": 1e-5,
             "peak_cylinder_pressure_Pa": 5e6}
     swept = 0.12                                   # m/s the pump sweeps (swept volume x f / bore)
@@ -197,8 +197,8 @@ def test_seed_designs_converge_when_the_step_halves(seed_pumps):
 
 def test_the_closest_design_block_round_trips_through_evaluate(seed_pumps):
     """The closest pump's results.json ``design`` block, evaluated on its
-    own (engine/pump_evaluate.py), reproduces its metrics and margins."""
-    from sizing.engine.pump_evaluate import evaluate_pump
+    own (technologies/piezo_pump/evaluate.py), reproduces its metrics and margins."""
+    from sizing.technologies.piezo_pump.evaluate import evaluate_pump
     from sizing.io.design import PumpDesignFile
     req, (out, candidates) = seed_pumps
     closest = max(candidates, key=lambda c: min(c["margins"].values()))

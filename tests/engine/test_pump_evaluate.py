@@ -1,4 +1,4 @@
-"""``sizing evaluate`` on a piezo pump design (engine/pump_evaluate.py): a
+"""``sizing evaluate`` on a piezo pump design (technologies/piezo_pump/evaluate.py): a
 frequency sweep of the seed's closest pump, the reeds' and the line's
 dynamics moving the flow's peak, warnings above the valve's rating and the
 refusal at its wetted resonance."""
@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from sizing.engine.pump_evaluate import evaluate_pump
+from sizing.technologies.piezo_pump.evaluate import evaluate_pump
 from sizing.errors import InputError
 from sizing.io.catalog import load_catalog
 from sizing.io.design import PumpDesignFile

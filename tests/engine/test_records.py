@@ -9,10 +9,10 @@ import tomllib
 
 import pytest
 
-from sizing.engine import piezo_designs
-from sizing.engine.candidate import design_candidate
+from sizing.technologies.piezohydraulic import designs as piezo_designs
+from sizing.technologies.piezohydraulic.record import design_candidate
 from sizing.engine.records import PiezoBrief, PiezoDesign, Simulation, VerifiedDesign
-from sizing.engine.search import enumerate_combos
+from sizing.technologies.piezohydraulic.search import enumerate_combos
 from sizing.engine.sized import sized_designs, study_designs
 from sizing.engine.solve import solve
 from sizing.io.requirements import parse_requirements

@@ -11,7 +11,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from sizing import api
-from sizing.engine.convex import GPSizer, SizingInput
+from sizing.technologies.piezohydraulic.convex import GPSizer, SizingInput
 from sizing.engine.rank import dominates, nondominated_levels, pareto_mask, rank_order, verdict
 from sizing.engine.solve import solve
 from sizing.io.catalog import Catalog, load_catalog

@@ -7,7 +7,8 @@ from pathlib import Path
 import pytest
 
 from sizing.api.checks import check_solve_steps
-from sizing.engine.solve import dc_actuator_steps, piezo_simulation_budget
+from sizing.technologies.dc_motor.stage import dc_actuator_steps
+from sizing.technologies.piezohydraulic.stage import piezo_simulation_budget
 from sizing.errors import InputError
 from sizing.io.catalog import load_catalog
 from sizing.io.requirements import parse_requirements
@@ -61,7 +62,7 @@ def test_the_dc_design_of_a_slow_long_stroke_is_simulated_and_found():
     """100 mm at 3 mm/s under 250 N (500 N blocked) at 40 degC: the DC parts
     are simulated over the 133 s the controller needs and a feasible design
     is found (about 90 s: the search and its simulations)."""
-    from sizing.engine.dc_sizing import dc_parts_designs
+    from sizing.technologies.dc_motor.from_parts import dc_parts_designs
     from sizing.engine.rank import verdict
     data = {"requirements": {"stroke": "100 mm", "blocked_force": 500.0, "speed": "3 mm/s",
                              "max_temperature": "40 degC"},

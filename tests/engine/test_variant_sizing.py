@@ -7,10 +7,10 @@ import math
 
 import pytest
 
-from sizing.engine import piezo_designs
-from sizing.engine.convex import GPSizer, SizingInput
+from sizing.technologies.piezohydraulic import designs as piezo_designs
+from sizing.technologies.piezohydraulic.convex import GPSizer, SizingInput
 from sizing.engine.records import PiezoBrief
-from sizing.engine.search import enumerate_combos
+from sizing.technologies.piezohydraulic.search import enumerate_combos
 from sizing.io.catalog import load_catalog
 from sizing.io.requirements import load_requirements
 from sizing.physics import amplifier, stack

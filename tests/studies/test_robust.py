@@ -9,11 +9,11 @@ import numpy as np
 import pytest
 from scipy.stats import norm
 
-from sizing.engine import piezo_designs
+from sizing.technologies.piezohydraulic import designs as piezo_designs
 from sizing.engine.records import PiezoBrief
 from sizing.engine.evaluate import load_cases
-from sizing.engine.search import enumerate_combos
-from sizing.engine.solve import verify_sized
+from sizing.technologies.piezohydraulic.search import enumerate_combos
+from sizing.technologies.piezohydraulic.stage import verify_sized
 from sizing.io.requirements import load_requirements
 from sizing.studies.executor import Executor, task_seed
 from sizing.studies.robust import robust
@@ -106,7 +106,7 @@ def _sized(req, catalog, cand):
 def test_perturbed_parts_carry_the_factor_and_the_air(small_catalog):
     stack = small_catalog.stacks["pi-p-056.90"]
     fluid = small_catalog.fluids["mil-prf-87257"]
-    from sizing.engine.search import Combo
+    from sizing.technologies.piezohydraulic.search import Combo
     combo = Combo(stack, 10, fluid, small_catalog.seals["ptfe-spring-energised"],
                   small_catalog.amplifiers["pi-e-481"], 1.0, stack.stroke)
     tols = [Tolerance("fluid.air_fraction", 0.01), Tolerance("stack.stiffness", 0.1), Tolerance("stack.stroke", 0.1)]
@@ -251,8 +251,8 @@ def test_bouc_wen_spreads_from_a_fit_and_their_effect(tmp_path, small_catalog):
     with pytest.raises(InputError, match=r"\[fit\].model"):
         bouc_wen_spreads(fit)
     # a factor on one parameter moves that parameter of the loop the solve uses, and no other
-    from sizing.engine.piezo import reference_bouc_wen, stack_bouc_wen
-    from sizing.engine.search import Combo
+    from sizing.technologies.piezohydraulic.parts import reference_bouc_wen, stack_bouc_wen
+    from sizing.technologies.piezohydraulic.search import Combo
     stack = small_catalog.stacks["pi-p-056.90"]
     bw = stack_bouc_wen(stack, reference_bouc_wen(small_catalog.stacks))[0]
     combo = Combo(stack, 10, small_catalog.fluids["mil-prf-87257"], small_catalog.seals["ptfe-spring-energised"],
@@ -290,8 +290,8 @@ def _with_dc_parts(catalog):
 
 def _dc_candidate(req, catalog, gear=None) -> dict:
     """The DC design of these parts as ``sizing solve`` sizes and verifies it."""
-    from sizing.engine.dc_candidate import parts_candidate
-    from sizing.engine.dc_sizing import dc_parts_designs
+    from sizing.technologies.dc_motor.record import parts_candidate
+    from sizing.technologies.dc_motor.from_parts import dc_parts_designs
     loads = [c["load_N"] for c in load_cases(req.load)]
     cands = [parts_candidate(req, catalog, d) for d in dc_parts_designs(req, catalog, loads).designs]
     return next(c for c in cands if c["components"]["gear"] == gear and c["stage"] == "simulated")
@@ -302,8 +302,8 @@ def test_dc_designs_from_the_solve_records_match_the_results_json_reading(tmp_pa
     back from its results.json candidate it has the same parts, part values,
     controller settings and step duration."""
     from sizing.engine import sized
-    from sizing.engine.dc_candidate import parts_candidate
-    from sizing.engine.dc_sizing import dc_parts_designs
+    from sizing.technologies.dc_motor.record import parts_candidate
+    from sizing.technologies.dc_motor.from_parts import dc_parts_designs
     from sizing.engine.records import Stages
     req, _ = load_requirements(_requirements(tmp_path))
     catalog = _dc_catalog("planetary32-3.5")
@@ -324,7 +324,7 @@ def test_dc_designs_from_the_solve_records_match_the_results_json_reading(tmp_pa
 
 def test_dc_screw_efficiency_tolerance_gives_the_closed_form_probability(tmp_path):
     # Closed form for the DC path: the blocked force of a DC design from parts is
-    # F = min(2 pi eta_s eta_g N k_t i_max / l, 2 pi eta_s T_gear / l) (engine/dc_parts.py), so
+    # F = min(2 pi eta_s eta_g N k_t i_max / l, 2 pi eta_s T_gear / l) (technologies/dc_motor/parts.py), so
     # both terms, and F, are proportional to the screw efficiency eta_s. A relative normal
     # spread s on eta_s (capped at 1, which only clips the upper tail) and a nominal margin m
     # give P(blocked force) = P(1 + s z >= 1 / (1 + m)) = Phi(m / ((1 + m) s)).

@@ -22,12 +22,12 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ..physics.stack import derated_stroke
-from ..sim.pump import PumpModel, simulate
-from . import pump_screen as screen
-from .piezo import reference_bouc_wen, stack_bouc_wen
-from .rank import OBJECTIVE_KEYS, floor_margin, nondominated_levels
-from .records import PumpDesign, PumpOutcome, Simulation, frozen
+from ...physics.stack import derated_stroke
+from ...sim.pump import PumpModel, simulate
+from . import screen
+from ..piezohydraulic.parts import reference_bouc_wen, stack_bouc_wen
+from ...engine.rank import OBJECTIVE_KEYS, floor_margin, nondominated_levels
+from ...engine.records import PumpDesign, PumpOutcome, Simulation, frozen
 
 MAX_FEASIBLE_SIMULATED = 24    # designs that pass the screen, verified by simulation
 MIN_CLOSEST_SIMULATED = 8      # and at least this many of the closest of those that do not,

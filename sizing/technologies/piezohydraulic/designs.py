@@ -11,15 +11,15 @@ from functools import lru_cache
 
 import numpy as np
 
-from ..io.catalog import Catalog
-from ..physics import bouc_wen, fluid as fluid_props
-from ..physics import amplifier, geometry, stack as stack_phys, structure, thermal
-from ..physics.bouc_wen import BoucWen
+from ...io.catalog import Catalog
+from ...physics import bouc_wen, fluid as fluid_props
+from ...physics import amplifier, geometry, stack as stack_phys, structure, thermal
+from ...physics.bouc_wen import BoucWen
 from . import force_path
 from .convex import GPSizer, SizingInput
-from .piezo import Candidates, part_row, reference_bouc_wen, stack_bouc_wen, structure_row
-from .rank import ceiling_margin, floor_margin
-from .records import PiezoBrief, PiezoDesign, Variant, frozen
+from .parts import Candidates, part_row, reference_bouc_wen, stack_bouc_wen, structure_row
+from ...engine.rank import ceiling_margin, floor_margin
+from ...engine.records import PiezoBrief, PiezoDesign, Variant, frozen
 from .search import Combo, temperature_margin
 from .convex import DEFAULT_MAX_MASS, NO_LIMIT
 from .verify import (GAP_CLEARANCE_M, GAP_TOLERANCE_M, STACK_SPACING_M, metrics, ramp_time,

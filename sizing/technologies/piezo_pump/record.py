@@ -3,9 +3,9 @@ pump"): the one place that turns a ``records.PumpDesign`` into its
 candidate dict."""
 from __future__ import annotations
 
-from ..physics import pump as pump_phys
-from . import holding
-from .records import PumpDesign
+from ...physics import pump as pump_phys
+from ...engine import holding
+from ...engine.records import PumpDesign
 
 
 def pump_candidate(req, d: PumpDesign) -> dict:

@@ -8,11 +8,12 @@ from __future__ import annotations
 
 import math
 
-from ..physics import fluid as fluid_props
-from ..physics import stack as stack_phys, structure, thermal
-from . import holding, piezo_designs
-from .rank import ceiling_margin, floor_margin
-from .records import PiezoDesign, Simulation, VerifiedDesign
+from ...physics import fluid as fluid_props
+from ...physics import stack as stack_phys, structure, thermal
+from ...engine import holding
+from . import designs as piezo_designs
+from ...engine.rank import ceiling_margin, floor_margin
+from ...engine.records import PiezoDesign, Simulation, VerifiedDesign
 from .search import Combo
 
 

@@ -20,9 +20,9 @@ from __future__ import annotations
 import itertools
 from dataclasses import dataclass, field
 
-from ..io.catalog import Amplifier, Catalog, Fluid, Seal, Stack
-from ..io.requirements import RequirementsFile
-from ..physics import stack as stack_phys
+from ...io.catalog import Amplifier, Catalog, Fluid, Seal, Stack
+from ...io.requirements import RequirementsFile
+from ...physics import stack as stack_phys
 
 
 

@@ -41,10 +41,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..physics import bearing as bearing_phys
-from ..physics import clevis as clevis_phys
-from ..physics import column
-from ..physics import structure as plate
+from ...physics import bearing as bearing_phys
+from ...physics import clevis as clevis_phys
+from ...physics import column
+from ...physics import structure as plate
 
 # Ultimate factor of safety on the largest force: 1.5 (14 CFR 25.303, CS 25.303),
 # applied against yield here (conservative: no credit for ultimate strength).

@@ -5,13 +5,13 @@ catalog actuator; ``records.DCDesign``, a design from parts) into the
 candidate dicts of results.json."""
 from __future__ import annotations
 
-from .dc_candidates import dc_duration
-from . import holding
-from .dc_assumed import resting
-from .dc_parts import MASS_PARTS
-from .dc_structure import structure_members
-from .records import DCActuatorDesign, DCDesign, Simulation
-from .sized import SETTINGS
+from .catalog_actuators import dc_duration
+from ...engine import holding
+from .assumed import resting
+from .parts import MASS_PARTS
+from .structure import structure_members
+from ...engine.records import DCActuatorDesign, DCDesign, Simulation
+from ...engine.sized import SETTINGS
 
 
 def _cases(sim: Simulation, stiffness: float) -> list[dict]:

@@ -5,7 +5,7 @@ on. Best: lowest mass among the feasible, then cost (the ranking's first
 objective; the seed's objectives are mass and cost)."""
 from __future__ import annotations
 
-from .assumed import assumed_clause, in_words
+from ...engine.assumed import assumed_clause, in_words
 
 REAL = ("sourced", "datasheet", "measured")
 

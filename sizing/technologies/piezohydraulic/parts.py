@@ -10,10 +10,10 @@ from dataclasses import dataclass, fields
 
 import numpy as np
 
-from ..io.catalog import Amplifier, Fluid, Seal, Stack
-from ..physics import fluid as fluid_props
-from ..physics import geometry, hydraulics, seals, stack as stack_phys
-from ..physics.bouc_wen import BoucWen, transfer
+from ...io.catalog import Amplifier, Fluid, Seal, Stack
+from ...physics import fluid as fluid_props
+from ...physics import geometry, hydraulics, seals, stack as stack_phys
+from ...physics.bouc_wen import BoucWen, transfer
 
 # Values used when a design names no fluid or seal (seed section 2.3.2-2.3.3).
 SEED_FRICTION_N = (10.0, 0.2)            # wide, narrow: seed's assumption

@@ -19,17 +19,19 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ..physics import motor as motor_phys
-from ..physics import screw as screw_phys
-from ..sim.dc_motor import DCMotorModel, simulate
-from ..sim.metrics import step_metrics
-from . import dc_controller as ctl
-from .dc import SETTLED, output_times
-from . import dc_search, dc_verdict, holding
-from .dc_parts import drives_for_supply, enumerate_parts, metrics, mountable, static_screen, temperature_margin
-from .dc_candidates import dc_duration
-from .rank import OBJECTIVE_KEYS, nondominated_levels, verdict
-from .records import DCDesign, DCParts, DCPartsOutcome, Simulation, frozen
+from ...physics import motor as motor_phys
+from ...physics import screw as screw_phys
+from ...sim.dc_motor import DCMotorModel, simulate
+from ...sim.metrics import step_metrics
+from . import controller as ctl
+from .actuator import SETTLED, output_times
+from ...engine import holding
+from . import search as dc_search
+from . import verdict as dc_verdict
+from .parts import drives_for_supply, enumerate_parts, metrics, mountable, static_screen, temperature_margin
+from .catalog_actuators import dc_duration
+from ...engine.rank import OBJECTIVE_KEYS, nondominated_levels, verdict
+from ...engine.records import DCDesign, DCParts, DCPartsOutcome, Simulation, frozen
 
 MAX_SIMULATED = 300     # designs simulated per solve (each under every load case)
 REAL_SHARE = 1 / 3      # of the simulation budget, first for designs whose parts all exist (dc_verdict)
@@ -319,7 +321,7 @@ def evaluate_parts(design, catalog, parts: dict, cases: list[dict]) -> dict:
     """``sizing evaluate`` of one design from parts: the same screen,
     controller and simulation as ``sizing solve`` (a one-design catalog)."""
     from dataclasses import replace
-    from ..io.requirements import design_requirements
+    from ...io.requirements import design_requirements
     one = replace(catalog, motors={parts["motor"].id: parts["motor"]}, screws={parts["screw"].id: parts["screw"]},
                   gears={parts["gear"].id: parts["gear"]} if parts["gear"] is not None else {},
                   drives={parts["drive"].id: parts["drive"]})

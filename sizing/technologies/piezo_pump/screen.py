@@ -16,12 +16,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..physics import amplifier as amp_phys, fluid as fluid_props, geometry, pump, stack as stack_phys
-from ..physics.bouc_wen import free_displacement
-from .convex import DEFAULT_MAX_MASS
-from .loads import surface_mass
-from .piezo import reference_bouc_wen, stack_bouc_wen
-from .search import temperature_margin
+from ...physics import amplifier as amp_phys, fluid as fluid_props, geometry, pump, stack as stack_phys
+from ...physics.bouc_wen import free_displacement
+from ..piezohydraulic.convex import DEFAULT_MAX_MASS
+from ...engine.loads import surface_mass
+from ..piezohydraulic.parts import reference_bouc_wen, stack_bouc_wen
+from ..piezohydraulic.search import temperature_margin
 
 PUMP_DIAMETERS = (0.008, 0.012, 0.016, 0.020, 0.025, 0.032, 0.040, 0.050, 0.063, 0.080)   # m
 FREQUENCIES = (50.0, 100.0, 150.0, 200.0, 300.0, 400.0, 600.0, 800.0, 1000.0)  # Hz

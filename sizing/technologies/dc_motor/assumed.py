@@ -9,8 +9,8 @@ catalog actuators of ``dc_candidates``).
 """
 from __future__ import annotations
 
-from .assumed import parts_of
-from .rank import verdict
+from ...engine.assumed import parts_of
+from ...engine.rank import verdict
 
 _LOAD_PATH = {"screw": {"lead", "efficiency"}, "gear": {"ratio", "efficiency"}}
 _THERMAL = {"motor": {"winding_resistance", "resistance_temperature_coefficient", "thermal_resistance",

@@ -1,18 +1,19 @@
 """The DC motor option on the same requirements, load cases and metrics.
 
-Each catalog DC actuator is simulated (``engine/dc.py``: seed eq. 13-14 with
+Each catalog DC actuator is simulated (``technologies/dc_motor/actuator.py``: seed eq. 13-14 with
 the load term of docs/models.md and the catalog's PID) for a step of the
 required stroke under each load case. A stroke counts as reached at 98 % of
 the step (``dc.SETTLED``); speed = that travel / the time to reach it.
 """
 from __future__ import annotations
 
-from ..io.catalog import Catalog
-from ..io.requirements import RequirementsFile
-from . import dc as dc_engine, holding
-from .rank import ceiling_margin, floor_margin
-from .records import DCActuatorDesign, Simulation, frozen
-from .search import temperature_margin
+from ...io.catalog import Catalog
+from ...io.requirements import RequirementsFile
+from ...engine import holding
+from . import actuator as dc_engine
+from ...engine.rank import ceiling_margin, floor_margin
+from ...engine.records import DCActuatorDesign, Simulation, frozen
+from ..piezohydraulic.search import temperature_margin
 
 
 def dc_duration(req: RequirementsFile) -> float:

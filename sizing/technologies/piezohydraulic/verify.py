@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..physics import amplifier, geometry, hydraulics, stack as stack_phys, structure, thermal
+from ...physics import amplifier, geometry, hydraulics, stack as stack_phys, structure, thermal
 from . import force_path
-from ..sim.metrics import final_value, step_metrics
-from ..sim.piezohydraulic import PiezoHydraulicModel, simulate
-from .piezo import Candidates
+from ...sim.metrics import final_value, step_metrics
+from ...sim.piezohydraulic import PiezoHydraulicModel, simulate
+from .parts import Candidates
 
 OUTPUT_RATE_HZ = 2000.0
 SETTLE_TIME_S = 0.25

@@ -8,15 +8,15 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..errors import InputError
-from ..io.requirements import RequirementsFile
-from ..physics import pump as pump_phys
-from ..limits import check_steps
-from ..sim.pump import simulate, stable_step
-from . import pump_screen as screen
-from .loads import load_cases
-from .piezo import reference_bouc_wen
-from .pump import _sim_cases, simulation_model
+from ...errors import InputError
+from ...io.requirements import RequirementsFile
+from ...physics import pump as pump_phys
+from ...limits import check_steps
+from ...sim.pump import simulate, stable_step
+from . import screen
+from ...engine.loads import load_cases
+from ..piezohydraulic.parts import reference_bouc_wen
+from .designs import _sim_cases, simulation_model
 
 
 def _part(catalog, kind: str, entry_id: str, file: str):
@@ -37,7 +37,7 @@ def pump_requirements(design) -> RequirementsFile:
 def design_from_candidate(req, cand: dict):
     """The pump design file a results.json pump candidate stands for, judged
     against ``req``'s stroke, speed, blocked force, duty and load."""
-    from ..io.design import PumpDesignFile
+    from ...io.design import PumpDesignFile
     r = req.requirements
     return PumpDesignFile.model_validate({
         **cand["design"], "stroke": r.stroke, "speed": r.speed, "blocked_force": r.blocked_force,

@@ -44,9 +44,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..physics import motor as motor_phys
-from ..physics import screw as screw_phys
-from . import dc_structure
+from ...physics import motor as motor_phys
+from ...physics import screw as screw_phys
+from . import structure as dc_structure
 
 # Assumed construction (README, DC sizing): stated here, used everywhere.
 TRAVEL_FACTOR = 1.10          # designed travel over the required stroke: 10 % for end stops and rigging (assumed)

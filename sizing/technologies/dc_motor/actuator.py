@@ -4,12 +4,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..io.catalog import DCActuator
-from ..physics import dc_motor
-from ..physics import motor as motor_phys
-from ..physics import screw as screw_phys
-from ..sim.dc_motor import DCMotorModel, simulate
-from ..sim.metrics import step_metrics
+from ...io.catalog import DCActuator
+from ...physics import dc_motor
+from ...physics import motor as motor_phys
+from ...physics import screw as screw_phys
+from ...sim.dc_motor import DCMotorModel, simulate
+from ...sim.metrics import step_metrics
 
 OUTPUT_RATE_HZ = 2000.0
 # Output samples of one simulated step response: the seed's 1.6 s at 2 kHz

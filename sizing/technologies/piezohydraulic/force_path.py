@@ -26,7 +26,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..physics import geometry, plate_fe, structure
+from ...physics import geometry, plate_fe, structure
 
 MECHANICAL = ("stacks", "spacer", "base_plate", "frame", "wide_piston")
 HYDRAULIC = ("oil_column", "compensator", "end_cap", "narrow_piston")

@@ -39,10 +39,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..physics import motor as motor_phys
-from ..physics import screw as screw_phys
-from . import dc_parts
-from .dc_parts import PartArrays, REQUIRED_LIFE_H, mountable, part_lists, parts_at
+from ...physics import motor as motor_phys
+from ...physics import screw as screw_phys
+from . import parts as dc_parts
+from .parts import PartArrays, REQUIRED_LIFE_H, mountable, part_lists, parts_at
 
 CHUNK = 100_000          # combinations per static-screen chunk
 NEAR_KEPT = 64           # infeasible combinations kept (closest first) for the simulation's minimum

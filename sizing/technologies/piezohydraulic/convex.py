@@ -52,8 +52,8 @@ from dataclasses import dataclass, field
 import cvxpy as cp
 import numpy as np
 
-from ..physics import geometry, structure
-from ..physics.stack import LARGE_SIGNAL_CAPACITANCE_FACTOR
+from ...physics import geometry, structure
+from ...physics.stack import LARGE_SIGNAL_CAPACITANCE_FACTOR
 
 CONSTRAINTS = ("stroke", "blocked_force", "pressure", "drive_current", "natural_frequency", "stiffness",
                "structure_out_of_range", "envelope_length", "envelope_diameter", "envelope_mass")

@@ -1,0 +1,1 @@
+"""The technologies the solve sizes and ranks, one package each."""

@@ -1,0 +1,44 @@
+"""The brushless DC motor lead-screw actuator as the solve and the stages
+after it see it (``registry.Technology``)."""
+from __future__ import annotations
+
+from ...engine.records import DCActuatorDesign
+from ...sim.dc_motor import DCMotorModel
+from ..registry import Group, Technology
+from . import actuator, stage, words
+from .catalog_actuators import dc_duration
+from .verdict import dc_sourced
+
+
+def supply_caveat(req, feasible: list[dict], catalog) -> str:
+    """Designs from parts: their drives and windings follow the supply."""
+    if req.requirements.supply_voltage is None:
+        return ""
+    return f"; drives and windings chosen for the {req.requirements.supply_voltage:g} V supply"
+
+
+def traces(req, c: dict, stages, loads) -> list[dict] | None:
+    """Design ``c`` re-simulated under every load case with its traces kept."""
+    d, S = stages.dc.get(c["id"]), req.requirements.stroke
+    if isinstance(d, DCActuatorDesign):
+        return actuator.step_cases(d.actuator, S, loads, dc_duration(req), keep_traces=True)
+    if d is not None and d.model:
+        params = dict(d.model)
+        return actuator.step_cases_for(lambda force: DCMotorModel(**params, load_force=force), S, loads,
+                                       dc_duration(req), keep_traces=True)
+    return None
+
+
+TECHNOLOGY = Technology(
+    name="dc_motor", label="DC motor", order=1,
+    part_kinds=("dc_actuator", "motor", "screw", "gear", "drive"),
+    solve=stage.solve,
+    groups=(Group("catalog", "DC motor lead-screw actuators (catalog)", empty="none in the catalog"),
+            Group("parts", "DC motor actuators sized from parts (motor x screw x gear x drive)",
+                  empty="none in the catalog", caveat=supply_caveat)),
+    short_name=words.short_name, describe=words.describe,
+    rests_on=("sizing.physics.dc_motor", "sizing.physics.motor", "sizing.physics.screw", "sizing.sim.dc_motor"),
+    traces=traces, counts_key="dc_parts", in_every_sweep_point=True,
+    summary_fields=lambda catalog, candidates: {"dc_sourced": dc_sourced(catalog, candidates)},
+    perturbable=lambda candidate, asked: candidate.get("variant") == "parts",     # not the catalog's actuators
+)

@@ -1,0 +1,1 @@
+"""The frequency-rectified piezohydraulic pump."""

@@ -1,0 +1,36 @@
+"""The frequency-rectified piezo pump as the solve and the stages after it
+see it (``registry.Technology``)."""
+from __future__ import annotations
+
+from ..registry import Group, Technology
+from . import stage, words
+from .designs import BEST_DEMONSTRATED_POWER_W, BEST_DEMONSTRATED_SOURCE
+
+
+def pump_power(req, candidates: list[dict]) -> dict:
+    """The pump's required output power (the largest load at the required
+    speed) against the best demonstrated pump power (``designs.BEST_DEMONSTRATED_POWER_W``)."""
+    loads = [k["load_N"] for c in candidates if c["technology"] == "piezo_pump"
+             for k in (c.get("simulated") or {}).get("cases", [])]
+    required = max(loads, default=0.0) * req.requirements.speed
+    return {"required_output_power_W": required, "best_demonstrated_power_W": BEST_DEMONSTRATED_POWER_W,
+            "best_demonstrated_source": BEST_DEMONSTRATED_SOURCE}
+
+
+def pump_power_words(entry: dict) -> str:
+    need, best = entry["required_output_power_W"], entry["best_demonstrated_power_W"]
+    return (f"the piezo pump must deliver {need:.3g} W at the output ({need / best:.2g} x the best demonstrated "
+            f"piezo pump, {best:.3g} W)")
+
+
+TECHNOLOGY = Technology(
+    name="piezo_pump", label="piezo pump", order=2,
+    part_kinds=("stack", "amplifier", "fluid", "seal", "valve", "accumulator"),
+    solve=stage.solve,
+    groups=(Group("pump", "piezo pump: stacks pumping through reed check valves into a cylinder"),),
+    short_name=words.short_name, describe=words.describe,
+    rests_on=("sizing.physics.pump", "sizing.physics.stack", "sizing.sim.pump"),
+    compared_with="dc_motor", comparison_fields=pump_power, comparison_words=pump_power_words,
+    # only when asked for: its parts have no tolerance model in the probability of compliance yet
+    perturbable=lambda candidate, asked: asked == "piezo_pump" and candidate.get("stage") == "simulated",
+)

@@ -1,0 +1,1 @@
+"""The piezohydraulic actuator: piezo stacks driving a hydraulic amplifier."""

@@ -1,0 +1,53 @@
+"""The piezohydraulic actuator as the solve and the stages after it see it
+(``registry.Technology``)."""
+from __future__ import annotations
+
+import numpy as np
+
+from ..registry import Group, Technology
+from . import designs, stage, words
+from .verify import simulate_cases
+
+
+def amplifier_caveat(req, feasible: list[dict], catalog) -> str:
+    """Feasible only because the amplifier sits in the electronics bay: say so
+    next to the verdict, not only among the assumptions."""
+    T = req.requirements.max_temperature
+    if req.options.amplifier_location != "bay":
+        return ""
+    ratings = {c["components"]["amplifier"]: catalog.amplifiers[c["components"]["amplifier"]].max_temperature
+               for c in feasible if c["components"].get("amplifier") in catalog.amplifiers}
+    below = {k: v for k, v in ratings.items() if v < T}
+    if not below or len(below) < len(ratings):
+        return ""
+    return (f"; every one relies on its amplifier sitting in an electronics bay at "
+            f"{req.options.electronics_bay_temperature:g} degC (rated {max(below.values()):g} degC at best, below "
+            f"{T:g} degC): with the amplifier at the actuator none is feasible")
+
+
+def traces(req, c: dict, stages, loads) -> list[dict] | None:
+    """Design ``c`` re-simulated under every load case with its traces kept."""
+    d = stages.by_id.get(c["id"])
+    if d is None or not d.built:
+        return None
+    sims = simulate_cases(d.cand, loads, np.array([d.ramp]), target_stroke=req.requirements.stroke, keep_traces=True)
+    return [{"load_N": float(s["load_N"][0]), "t": s["t"], "position_m": s["position_m"][0]} for s in sims]
+
+
+TECHNOLOGY = Technology(
+    name="piezohydraulic", label="piezohydraulic", order=0,
+    part_kinds=("stack", "fluid", "seal", "amplifier", "material", "compensator"),
+    solve=stage.solve,
+    groups=(Group("uncompensated", "piezohydraulic, as built (no thermal compensation)", caveat=amplifier_caveat),
+            Group("passive", "piezohydraulic, passive compensation (low-expansion spacer, longer frame)",
+                  caveat=amplifier_caveat),
+            Group("compensated", "piezohydraulic with thermal compensator", caveat=amplifier_caveat)),
+    short_name=words.short_name, describe=words.describe,
+    rests_on=("sizing.physics.stack", "sizing.physics.hydraulics", "sizing.physics.structure", "sizing.physics.thermal",
+              "sizing.sim.piezohydraulic"),
+    traces=traces, disagreements=stage.disagreements,
+    counts_key=None, prunes_before_sizing=True, extra_counts=("sized",),
+    results_fields=lambda catalog: {"hysteresis_time_scales": designs.hysteresis_time_scales(catalog)},
+    in_every_sweep_point=True, compared_with="dc_motor",
+    perturbable=lambda candidate, asked: True,
+)

@@ -1,0 +1,130 @@
+"""The registry of technologies: one ``Technology`` per folder of
+``sizing/technologies/``, which every stage that treats technologies alike
+iterates (the solve, the ranking's counts, the summary, the comparison,
+names, descriptions, the report, robust and sweep) instead of naming them.
+
+A technology's package registers itself in its ``technology`` module
+(``TECHNOLOGY = Technology(...)``); ``technologies()`` finds those modules
+the first time it is asked, and ``register`` adds one at run time (a
+technology written outside the package, as a test does)."""
+from __future__ import annotations
+
+import importlib
+import pkgutil
+import threading
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+_REGISTERED: dict[str, "Technology"] = {}
+_FOUND = False
+_FINDING = threading.RLock()        # solves may run in threads: the first finds the packages, the others wait
+
+
+def _nothing(*_args, **_kwargs):
+    return None
+
+
+def _no_words(*_args, **_kwargs) -> str:
+    return ""
+
+
+@dataclass(frozen=True)
+class Group:
+    """One group of a technology's designs in the summary (results.json
+    ``summary.groups``): the candidates whose ``variant`` is ``variant``."""
+
+    variant: str
+    label: str
+    empty: str = "not evaluated"            # the summary's words when the group has no design
+    caveat: Callable = _no_words            # (req, feasible candidates, catalog) -> words after the verdict
+
+
+@dataclass(frozen=True)
+class Technology:
+    """What the shared stages need of one technology.
+
+    ``solve(req, catalog, loads, progress, detail)`` enumerates, sizes and
+    verifies its designs and returns ``(records.Outcome, its records)``;
+    ``short_name(c)`` and ``describe(c, catalog)`` read a candidate dict
+    (results.json); ``traces(req, candidate, stages, loads)`` re-simulates
+    one design with its time traces kept (None: it has none);
+    ``disagreements(records, names)`` lists where its static screen and its
+    simulation disagree (results.json ``disagreements``)."""
+
+    name: str                               # results.json ``technology``
+    label: str                              # in tables and sentences: "DC motor"
+    order: int                              # where it stands among the others (results, tables)
+    part_kinds: tuple[str, ...]             # the catalog groups its designs draw on
+    solve: Callable
+    groups: tuple[Group, ...]
+    short_name: Callable[[dict], str]
+    describe: Callable[[dict, object], str]
+    rests_on: tuple[str, ...] = ()          # the models (modules of sizing.physics and sizing.sim) its figures rest on
+    noun: str = ""                          # "DC motor actuator" (defaults to label + " actuator")
+    traces: Callable = _nothing
+    disagreements: Callable = field(default=lambda records, names: [])
+    counts_key: str | None = ""             # where results.json ``counts`` holds its counts ("": its name; None: at the top)
+    prunes_before_sizing: bool = False      # its ruled-out combinations count as "ruled out before sizing"
+    extra_counts: tuple[str, ...] = ()      # its own counts ``summary.counts`` repeats
+    results_fields: Callable = field(default=lambda catalog: {})    # results.json fields of its own
+    summary_fields: Callable = field(default=lambda catalog, candidates: {})    # results.json ``summary`` fields of its own
+    in_every_sweep_point: bool = False      # sweep.json counts it at every point, with or without designs
+    compared_with: str = ""                 # the technology the comparison states its best against, ratio by ratio
+    comparison_fields: Callable | None = None   # (req, candidates) -> its own fields of the comparison's entry
+    comparison_words: Callable | None = None    # (its comparison entry) -> the sentence that states them
+    # (candidate, the technology robust was asked for or None) -> whether robust perturbs the candidate's parts
+    perturbable: Callable = field(default=lambda candidate, asked: False)
+
+    @property
+    def actuator(self) -> str:
+        return self.noun or f"{self.label} actuator"
+
+    def counts_of(self, counts: dict) -> dict:
+        """Its own counts in results.json ``counts``."""
+        if self.counts_key is None:
+            return counts
+        return counts.get(self.counts_key or self.name) or {}
+
+
+def register(technology: Technology) -> Technology:
+    """Add ``technology`` (or replace the one of that name)."""
+    _find()
+    _REGISTERED[technology.name] = technology
+    return technology
+
+
+def unregister(name: str) -> None:
+    _REGISTERED.pop(name, None)
+
+
+def technologies() -> tuple[Technology, ...]:
+    """Every registered technology, in order."""
+    _find()
+    return tuple(sorted(_REGISTERED.values(), key=lambda t: (t.order, t.name)))
+
+
+def get(name: str) -> Technology | None:
+    _find()
+    return _REGISTERED.get(name)
+
+
+def label(name: str) -> str:
+    """A technology's label, or its name in words when it is not registered."""
+    tech = get(name)
+    return tech.label if tech is not None else str(name).replace("_", " ")
+
+
+def _find() -> None:
+    """Import the ``technology`` module of every package here, once."""
+    global _FOUND
+    if _FOUND:
+        return
+    with _FINDING:
+        if _FOUND:
+            return
+        package = importlib.import_module(__package__)
+        found = [importlib.import_module(f"{__package__}.{info.name}.technology").TECHNOLOGY
+                 for info in pkgutil.iter_modules(package.__path__) if info.ispkg]
+        for technology in found:
+            _REGISTERED.setdefault(technology.name, technology)
+        _FOUND = True

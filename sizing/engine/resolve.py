@@ -67,10 +67,36 @@ def piezo_key(c: dict) -> str:
     return f"ph-{k['stack']}-n{k['n_stacks']}-{k['fluid']}-{k['seal']}-{k['amplifier']}"
 
 
+def variant_key(c: dict) -> tuple:
+    """A piezohydraulic candidate's part combination with its structure
+    material and compensator: what one geometric program sizes (its passive
+    variant is built from the as-built one)."""
+    k = c["components"]
+    return piezo_key(c), k.get("material"), k.get("compensator")
+
+
 def unit_key(tech: str, c: dict) -> str:
     """What one re-solve of candidate ``c`` covers: its piezohydraulic part
     combination (every material and compensator), else the design itself."""
     return piezo_key(c) if tech == "piezohydraulic" else c["id"]
+
+
+# margins a simulation replaces or adds (``candidate.sim_margins``): a design
+# left unsimulated that misses only these might comply once simulated
+SIMULATED = ("stroke", "speed", "overshoot", "stiffness")
+
+
+def unsettled(tech: str, candidates: list[dict]) -> list[dict] | None:
+    """The piezohydraulic designs a solve left open: sized, passing every
+    check a simulation does not replace, but not simulated (the solve
+    simulates at most ``options.max_simulated``). Every other design was
+    judged in full (simulated, or missing a check no simulation changes).
+    None for a technology whose solve does not record every design it
+    leaves unsimulated (the DC search counts those it drops)."""
+    if tech != "piezohydraulic":
+        return None
+    return [c for c in candidates if c.get("stage") == "sized"
+            and all(v >= 0 or k in SIMULATED for k, v in c["margins"].items())]
 
 
 def whole(stages, tech: str, req, catalog, loads) -> list[dict]:
@@ -91,8 +117,11 @@ def units(stages, tech: str, req, catalog, loads, cs: list[dict]) -> list[dict]:
     re-simulated."""
     if tech == "piezohydraulic":
         keys = {piezo_key(c) for c in cs}
-        return stages.piezohydraulic(req, catalog, loads, None, "summary",
-                                      only=lambda combo: combo.key in keys)[0].candidates
+        wanted = {variant_key(c) for c in cs}
+        return stages.piezohydraulic(
+            req, catalog, loads, None, "summary", only=lambda combo: combo.key in keys,
+            variants=lambda combo, v: (combo.key, v.material.id, v.compensator and v.compensator.id) in wanted,
+        )[0].candidates
     if tech == "dc_motor":
         return stages.dc_motor(req, dc_parts_of(catalog, tuple(cs)), loads, None, "summary")[0].candidates
     raise ValueError(f"no re-solve by design for {tech!r}")
@@ -108,6 +137,12 @@ def pump_lightest(stages, req, catalog, loads) -> tuple[str, float] | None:
         return None
     v = verdict_of(req, stages.piezo_pump(req, catalog, loads, None)[0].candidates)
     return (v.best, v.objective) if v.feasible else None
+
+
+def pump_could_comply(req, catalog, loads) -> bool:
+    """The pump's static screen alone (``pump.could_comply``)."""
+    from .pump import could_comply
+    return could_comply(req, catalog, loads)
 
 
 def dc_parts_of(catalog, alive: tuple):

@@ -33,7 +33,7 @@ from .. import __version__
 from ..errors import SimulationError
 from ..io.catalog import Catalog
 from ..io.requirements import RequirementsFile
-from . import assumed, names, piezo_designs
+from . import assumed, names, piezo_designs, stage_cache
 from .candidate import design_candidate, pruned_candidate, ruled_out_record
 from .dc_candidate import actuator_candidate, parts_candidate
 from .dc_candidates import actuator_designs
@@ -155,20 +155,23 @@ def _with_flips(req, catalog, loads, candidates, summary) -> dict:
     comparison with it; returns what that cost."""
     start = time.perf_counter()
     techs = summary["comparison"]["technologies"]
-    found, solves = flips(req, catalog, loads, candidates, {t: e["deciding_assumed"] for t, e in techs.items()},
-                          technology_stages())
+    with stage_cache.reuse():
+        found, solves = flips(req, catalog, loads, candidates, {t: e["deciding_assumed"] for t, e in techs.items()},
+                              technology_stages())
     summary["comparison"] = technology_comparison(req, candidates, catalog, flips=found)
     return {"re_solves": solves, "seconds": time.perf_counter() - start}
 
 
-def _piezohydraulic(req, catalog, loads, progress, detail, only=None) -> tuple[Outcome, list[VerifiedDesign]]:
+def _piezohydraulic(req, catalog, loads, progress, detail, only=None,
+                    variants=None) -> tuple[Outcome, list[VerifiedDesign]]:
     """Enumerate, size, build and verify the piezohydraulic designs
-    (``only(combo)``: the combinations to keep, for a re-solve)."""
-    combos = [c for c in enumerate_combos(req, catalog) if only is None or only(c)]
+    (``only(combo)``: the combinations to keep, ``variants(combo, variant)``:
+    the structure materials and compensators to size, for a re-solve)."""
+    combos = [c for c in _enumerated(req, catalog) if only is None or only(c)]
     to_size = [c for c in combos if not c.pruned]
     pruned = [c for c in combos if c.pruned]
     brief = PiezoBrief.of(req)               # what the stages read of the requirements, once
-    sized = piezo_designs.size(brief, catalog, to_size, progress)
+    sized = piezo_designs.size(brief, catalog, to_size, progress, variants)
     designs = piezo_designs.resize_passive(brief, catalog, piezo_designs.designs(brief, catalog, sized))
     verified = [VerifiedDesign(d, sim) for d, sim in zip(designs, _simulate(req, designs, loads, progress))]
     candidates = []
@@ -187,6 +190,16 @@ def _piezohydraulic(req, catalog, loads, progress, detail, only=None) -> tuple[O
               "simulated": sum(1 for v in verified if v.simulation is not None)}
     return Outcome("piezohydraulic", candidates, Counter(_pruned_reason(c) for c in pruned), tuple(records),
                    counts), verified
+
+
+def _enumerated(req, catalog) -> list[Combo]:
+    """``enumerate_combos``, read back inside ``stage_cache.reuse()`` for the
+    same requirements and catalog (the catalog is kept with it, so its id
+    names it while kept)."""
+    if not stage_cache.active():
+        return enumerate_combos(req, catalog)
+    key = ("combos", id(catalog), req.model_dump_json())
+    return stage_cache.cached(key, lambda: (catalog, enumerate_combos(req, catalog)))[1]
 
 
 def _dc_motor(req, catalog, loads, progress, detail) -> tuple[Outcome, tuple]:
@@ -238,10 +251,16 @@ def _simulate(req, designs: list[PiezoDesign], loads, progress) -> list[Simulati
         twins.setdefault(_dynamic_key(designs[i]), []).append(i)
     unique = [group[0] for group in twins.values()]
     S = req.requirements.stroke
+    if stage_cache.active():      # simulated before with the same input (a flip's re-solves)
+        for i in unique:
+            out[i] = stage_cache.lookup(stage_cache.simulation_key(designs[i], loads, S))
+        unique = [i for i in unique if out[i] is None]
     for start in range(0, len(unique), SIM_CHUNK):
         chunk = unique[start:start + SIM_CHUNK]
         for i, sim in zip(chunk, _simulate_chunk([designs[i] for i in chunk], loads, S)):
             out[i] = sim
+            if stage_cache.active():
+                stage_cache.remember(stage_cache.simulation_key(designs[i], loads, S), sim)
         _progress(progress, "simulating", min(start + SIM_CHUNK, len(unique)), len(unique))
     for group in twins.values():
         for i in group[1:]:

@@ -118,9 +118,11 @@ def units(stages, tech: str, req, catalog, loads, cs: list[dict]) -> list[dict]:
     if tech == "piezohydraulic":
         keys = {piezo_key(c) for c in cs}
         wanted = {variant_key(c) for c in cs}
+        parts = {tuple(c["components"][k] for k in ("stack", "fluid", "seal", "amplifier")) for c in cs}
         return stages.piezohydraulic(
             req, catalog, loads, None, "summary", only=lambda combo: combo.key in keys,
             variants=lambda combo, v: (combo.key, v.material.id, v.compensator and v.compensator.id) in wanted,
+            parts=parts,
         )[0].candidates
     if tech == "dc_motor":
         return stages.dc_motor(req, dc_parts_of(catalog, tuple(cs)), loads, None, "summary")[0].candidates
@@ -129,13 +131,13 @@ def units(stages, tech: str, req, catalog, loads, cs: list[dict]) -> list[dict]:
 
 def pump_lightest(stages, req, catalog, loads) -> tuple[str, float] | None:
     """The pump's best complying design (id, first objective), None when
-    none complies: the static screen alone when no row passes every check
-    the simulation does not replace (``pump.could_comply``), else the
-    solve's own pump stage."""
-    from .pump import could_comply
-    if not could_comply(req, catalog, loads):
-        return None
-    v = verdict_of(req, stages.piezo_pump(req, catalog, loads, None)[0].candidates)
+    none complies: of the rows the solve's pump stage would simulate, those
+    that pass every check the simulation does not replace, simulated
+    (``pump.complying_designs``: the same verdict and best design; the
+    static screen alone when no row passes those checks)."""
+    from .pump import complying_designs
+    from .pump_candidate import pump_candidate
+    v = verdict_of(req, [pump_candidate(req, d) for d in complying_designs(req, catalog, loads)])
     return (v.best, v.objective) if v.feasible else None
 
 

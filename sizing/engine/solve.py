@@ -46,7 +46,7 @@ from .pump import pump_designs
 from .pump_candidate import pump_candidate
 from .rank import OBJECTIVE_KEYS, nondominated_levels, standings, verdict
 from .records import DCDesign, DCPartsOutcome, PiezoBrief, PiezoDesign, Simulation, Stages, VerifiedDesign
-from .search import Combo, enumerate_combos
+from .search import Combo, combos_of, enumerate_combos
 from .solve_summary import _assumptions, _clean, _requirements_si, _summary, _traces
 from .verify import simulate_cases
 
@@ -163,11 +163,12 @@ def _with_flips(req, catalog, loads, candidates, summary) -> dict:
 
 
 def _piezohydraulic(req, catalog, loads, progress, detail, only=None,
-                    variants=None) -> tuple[Outcome, list[VerifiedDesign]]:
+                    variants=None, parts=None) -> tuple[Outcome, list[VerifiedDesign]]:
     """Enumerate, size, build and verify the piezohydraulic designs
     (``only(combo)``: the combinations to keep, ``variants(combo, variant)``:
-    the structure materials and compensators to size, for a re-solve)."""
-    combos = [c for c in _enumerated(req, catalog) if only is None or only(c)]
+    the structure materials and compensators to size, ``parts``: the
+    (stack, fluid, seal, amplifier) ids to enumerate, for a re-solve)."""
+    combos = [c for c in _enumerated(req, catalog, parts) if only is None or only(c)]
     to_size = [c for c in combos if not c.pruned]
     pruned = [c for c in combos if c.pruned]
     brief = PiezoBrief.of(req)               # what the stages read of the requirements, once
@@ -192,10 +193,15 @@ def _piezohydraulic(req, catalog, loads, progress, detail, only=None,
                    counts), verified
 
 
-def _enumerated(req, catalog) -> list[Combo]:
+def _enumerated(req, catalog, parts=None) -> list[Combo]:
     """``enumerate_combos``, read back inside ``stage_cache.reuse()`` for the
     same requirements and catalog (the catalog is kept with it, so its id
-    names it while kept)."""
+    names it while kept); only the combinations of ``parts`` when given."""
+    if parts is not None:
+        counts = range(1, req.options.max_stacks + 1)
+        return [c for s, f, seal, a in sorted(parts)
+                for c in combos_of(req, catalog.stacks[s], catalog.fluids[f], catalog.seals[seal],
+                                   catalog.amplifiers[a], counts)]
     if not stage_cache.active():
         return enumerate_combos(req, catalog)
     key = ("combos", id(catalog), req.model_dump_json())

@@ -18,10 +18,18 @@ cheap without changing its answer:
   re-solved.
 
 A re-solve is asked one question at a time (does this design still comply
-at this value?) and answers for its whole part combination. The piezo
-pump is re-solved whole, but only its static screen runs when no row
-passes every check the simulation does not replace
-(``pump.could_comply``): then no design can comply.
+at this value?) and answers for its whole part combination; a
+piezohydraulic one sizes only the structure materials and compensators of
+the designs asked about (each is a part combination of its own, sized by
+its own geometric program), and reads back, by their whole input, the
+programs, simulations and enumerations run before at the same value
+(``stage_cache.py``). A flip found this way is confirmed by re-solving the
+technology whole, except where today's solve judged every combination in
+full (``unsettled``): then only the combinations it left open and those
+feasible today can comply at a stricter value. The piezo pump is
+re-solved whole, but simulates only the rows its stage would simulate that
+pass every check the simulation does not replace
+(``pump.complying_designs``): the others cannot comply.
 """
 from __future__ import annotations
 
@@ -112,8 +120,8 @@ def whole(stages, tech: str, req, catalog, loads) -> list[dict]:
 def units(stages, tech: str, req, catalog, loads, cs: list[dict]) -> list[dict]:
     """The candidates of the part combinations of candidates ``cs``
     re-solved for ``req`` and ``catalog``: piezohydraulic combinations
-    re-sized (each with its materials and compensators), DC designs from
-    parts (the combinations of their parts) or catalog DC actuators
+    re-sized (the structure materials and compensators of ``cs``), DC designs from
+    parts (those of ``cs``, each simulated) or catalog DC actuators
     re-simulated."""
     if tech == "piezohydraulic":
         keys = {piezo_key(c) for c in cs}
@@ -125,7 +133,8 @@ def units(stages, tech: str, req, catalog, loads, cs: list[dict]) -> list[dict]:
             parts=parts,
         )[0].candidates
     if tech == "dc_motor":
-        return stages.dc_motor(req, dc_parts_of(catalog, tuple(cs)), loads, None, "summary")[0].candidates
+        rows = {tuple((c.get("components") or {}).get(k) for k in ("motor", "screw", "gear", "drive")) for c in cs}
+        return stages.dc_motor(req, dc_parts_of(catalog, tuple(cs)), loads, None, "summary", rows=rows)[0].candidates
     raise ValueError(f"no re-solve by design for {tech!r}")
 
 

@@ -153,13 +153,13 @@ def technology_stages() -> SimpleNamespace:
 def _with_flips(req, catalog, loads, candidates, summary) -> dict:
     """Re-solve what would flip each verdict (``flip.py``) and rebuild the
     comparison with it; returns what that cost."""
-    start = time.perf_counter()
+    start, cpu = time.perf_counter(), time.process_time()
     techs = summary["comparison"]["technologies"]
     with stage_cache.reuse():
         found, solves = flips(req, catalog, loads, candidates, {t: e["deciding_assumed"] for t, e in techs.items()},
                               technology_stages())
     summary["comparison"] = technology_comparison(req, candidates, catalog, flips=found)
-    return {"re_solves": solves, "seconds": time.perf_counter() - start}
+    return {"re_solves": solves, "seconds": time.perf_counter() - start, "cpu_seconds": time.process_time() - cpu}
 
 
 def _piezohydraulic(req, catalog, loads, progress, detail, only=None,
@@ -208,13 +208,14 @@ def _enumerated(req, catalog, parts=None) -> list[Combo]:
     return stage_cache.cached(key, lambda: (catalog, enumerate_combos(req, catalog)))[1]
 
 
-def _dc_motor(req, catalog, loads, progress, detail) -> tuple[Outcome, tuple]:
+def _dc_motor(req, catalog, loads, progress, detail, rows=None) -> tuple[Outcome, tuple]:
     """The catalog's DC actuators and those sized from parts; also their
-    records (the report's traces re-simulate them)."""
+    records (the report's traces re-simulate them). ``rows``: the only
+    designs from parts to size (``dc_parts_designs``), for a re-solve."""
     if not req.options.dc_motors:
         return Outcome("dc_motor", [], counts=_dc_counts(DCPartsOutcome())), ()
     actuators = actuator_designs(req, catalog, loads)
-    parts = dc_parts_designs(req, catalog, loads, progress)
+    parts = dc_parts_designs(req, catalog, loads, progress, rows=rows)
     dropped = detail != "full"          # a design ruled out before simulation is counted, not recorded
     kept = [d for d in parts.designs if not (dropped and d.stage == "pruned")]
     ruled = Counter(parts.ruled_out) + Counter(_dc_pruned_reason(d) for d in parts.designs

@@ -218,6 +218,8 @@ class Search:
         some of the designs that pass its screen, so the whole re-solve can
         find one that still complies: the search goes on from it."""
         alive, start = self.today[tech].alive, probe.value
+        if resolve.unsettled(tech, self.solved[tech]) is None and self._still_complying(tech, probe, end):
+            return None         # a whole re-solve at the end of the range still complies: nothing flips
         while True:
             to = self._largest_flip(tech, probe, end, alive, start)
             if to is None:

@@ -144,6 +144,7 @@ class Search:
         self.today = {t: resolve.verdict_of(req, cs) for t, cs in self.solved.items()}
         self.known: dict[tuple, dict[float, dict]] = {}
         self.pool: dict[tuple, list] = {}
+        self.screens: dict[str, dict[float, bool]] = {}
         self.solves = 0
 
     # --- designs at one value -----------------------------------------------
@@ -217,40 +218,67 @@ class Search:
         some of the designs that pass its screen, so the whole re-solve can
         find one that still complies: the search goes on from it."""
         alive, start = self.today[tech].alive, probe.value
+        if resolve.unsettled(tech, self.solved[tech]) is None and self._still_complying(tech, probe, end):
+            return None         # a whole re-solve at the end of the range still complies: nothing flips
         while True:
             to = self._largest_flip(tech, probe, end, alive, start)
             if to is None:
                 return None
-            req, catalog = probe.apply(self.req, self.catalog, to)
-            self.solves += 1
-            alive = []
-            for c in resolve.whole(self.stages, tech, req, catalog, self.loads):
-                ok, driver = verdict(c["margins"])
-                if ok and (probe.holding is None or resolve.holds(c, probe.holding)):
-                    alive.append(dict(c, feasible=True, driver=driver))
+            alive = self._still_complying(tech, probe, to)
             if not alive:
                 return to
             start = to
+
+    def _still_complying(self, tech: str, probe: Probe, x: float) -> list[dict]:
+        """The designs that comply with the value ``x`` in a re-solve of the
+        whole technology (those that hold the part, for a catalog value).
+        When today's solve judged every part combination in full
+        (``resolve.unsettled``: no design left unsimulated that a simulation
+        could make comply), only the combinations it left open and those
+        feasible today can comply at a stricter value, and those already
+        found failing there need no re-solve: the others are re-solved by
+        combination (every design simulated, more than a whole re-solve
+        would). Otherwise the whole technology is re-solved."""
+        req, catalog = probe.apply(self.req, self.catalog, x)
+        unsettled = resolve.unsettled(tech, self.solved[tech])
+        if unsettled is None:
+            self.solves += 1
+            fresh = resolve.whole(self.stages, tech, req, catalog, self.loads)
+        else:
+            cs = [c for c in (*self.today[tech].alive, *unsettled) if self.known_at(tech, probe, x, c) is not False]
+            if not cs:
+                return []
+            self.solves += 1
+            fresh = resolve.units(self.stages, tech, req, catalog, self.loads, cs)
+            found = self.known.setdefault((tech, probe.field), {}).setdefault(x, {})
+            for c in fresh:
+                ok, driver = verdict(c["margins"])
+                found[c["id"]] = (ok, _objective(c, self.key), _slack(dict(c, driver=driver)))
+        alive = []
+        for c in fresh:
+            ok, driver = verdict(c["margins"])
+            if ok and (probe.holding is None or resolve.holds(c, probe.holding)):
+                alive.append(dict(c, feasible=True, driver=driver))
+        return alive
 
     def _largest_flip(self, tech: str, probe: Probe, end: float, alive, start: float) -> float | None:
         """The largest flip, from ``start``, of the designs ``alive`` (feasible
         at ``start``): the most slack combination's own flip is bisected;
         then the others are re-solved at once at that value, and only one
-        that still complies there is bisected further, until none does."""
+        that still complies there is bisected further, until none does.
+        None when one still complies at the end of the range."""
         groups: dict[str, list] = {}
         for c in sorted(alive, key=_slack, reverse=True):
             groups.setdefault(resolve.unit_key(tech, c), []).append(c)
         if probe.holding is not None:
             groups = {k: g for k, g in groups.items() if resolve.holds(g[0], probe.holding)}
-        every = [c for g in groups.values() for c in g]
-        at_end = self.solve_at(tech, probe, end, every)
-        if any(at_end[c["id"]][0] for c in every):
-            return None
         survivors, first = list(groups.values()), start == probe.value
         while survivors:           # a combination that fails at ``start`` fails at every stricter value
             group, others = survivors[0], survivors[1:]
             fails = lambda x, group=group: not self._complies(tech, probe, x, group)    # noqa: E731
             start = bisect(fails, probe, end, start) if first else gallop(fails, probe, end, start)
+            if start is None:      # it still complies at the end of the range: nothing flips
+                return None
             first = False
             rest = [c for g in others for c in g]
             found = self.solve_at(tech, probe, start, rest) if rest else {}
@@ -292,6 +320,13 @@ class Search:
             self.solves += 1
             known[x] = resolve.pump_lightest(self.stages, req, catalog, self.loads)
         return known[x]
+
+    def pump_screen(self, probe: Probe, x: float) -> bool:
+        """Whether some pump row passes the static screen with the value ``x``."""
+        if x not in self.screens.setdefault(probe.field, {}):
+            req, catalog = probe.apply(self.req, self.catalog, x)
+            self.screens[probe.field][x] = resolve.pump_could_comply(req, catalog, self.loads)
+        return self.screens[probe.field][x]
 
     # --- the recommendation --------------------------------------------------
     def recommended(self) -> tuple[str, dict] | None:
@@ -356,15 +391,18 @@ def bisect(changed: Callable[[float], bool], probe: Probe, end: float, start: fl
     return b
 
 
-def gallop(changed: Callable[[float], bool], probe: Probe, end: float, start: float) -> float:
+def gallop(changed: Callable[[float], bool], probe: Probe, end: float, start: float,
+           direction: int | None = None) -> float:
     """``bisect`` from ``start`` where the change is expected close by (the
     next combination of a technology, just past the last one's flip): steps
-    of 1, 2, 4 ... tolerances until it holds, then bisection in the last step."""
+    of 1, 2, 4 ... tolerances until it holds, then bisection in the last step.
+    ``direction``: +1 towards larger values, -1 smaller (stricter by default)."""
     step, a = 2.0 * TOLERANCE, start
+    sense = probe.stricter if direction is None else direction
     while True:
-        b = (a + step * max(abs(probe.value), 1.0) * probe.stricter if probe.linear
-             else a * (1.0 + step) ** probe.stricter)
-        if (b - end) * probe.stricter >= 0:
+        b = (a + step * max(abs(probe.value), 1.0) * sense if probe.linear
+             else a * (1.0 + step) ** sense)
+        if (b - end) * sense >= 0:
             return bisect(changed, probe, end, a)
         if changed(b):
             return bisect(changed, probe, b, a)
@@ -388,10 +426,30 @@ def technology_flips(search: Search, tech: str, probes: list[Probe]) -> list[dic
             continue
         if today.feasible and tech != "piezo_pump":
             to = search.tightening_flip(tech, probe, end)
+        elif tech == "piezo_pump" and not today.feasible:
+            to = screened_flip(search, probe, end)
         else:
             to = bisect(lambda x: search.feasible_at(tech, probe, x) != today.feasible, probe, end)
         out.append(_entry(probe, to, end, "feasibility"))
     return out
+
+
+def screened_flip(search: Search, probe: Probe, end: float) -> float | None:
+    """Where the piezo pump, infeasible today, becomes feasible (looser
+    values). Its static screen (``pump.could_comply``) decides "infeasible"
+    wherever no row passes it, and a re-solve there is that screen alone;
+    so the screen's own flip is bisected first, on the screen alone, and the
+    whole re-solves (simulation) go on from it, a tolerance, then two, four
+    ... at a time, where the verdict is expected close by."""
+    feasible = lambda x: search.feasible_at("piezo_pump", probe, x)     # noqa: E731
+    if not feasible(end):
+        return None
+    if search.pump_screen(probe, probe.value):       # the screen decides nothing here
+        return bisect(feasible, probe, end)
+    screened = bisect(lambda x: search.pump_screen(probe, x), probe, end)
+    if feasible(screened):
+        return screened
+    return gallop(feasible, probe, end, screened, -probe.stricter)
 
 
 def recommendation_flips(search: Search, probes: list[Probe], feasibility: list[dict]) -> list[dict]:

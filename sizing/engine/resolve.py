@@ -18,10 +18,18 @@ cheap without changing its answer:
   re-solved.
 
 A re-solve is asked one question at a time (does this design still comply
-at this value?) and answers for its whole part combination. The piezo
-pump is re-solved whole, but only its static screen runs when no row
-passes every check the simulation does not replace
-(``pump.could_comply``): then no design can comply.
+at this value?) and answers for its whole part combination; a
+piezohydraulic one sizes only the structure materials and compensators of
+the designs asked about (each is a part combination of its own, sized by
+its own geometric program), and reads back, by their whole input, the
+programs, simulations and enumerations run before at the same value
+(``stage_cache.py``). A flip found this way is confirmed by re-solving the
+technology whole, except where today's solve judged every combination in
+full (``unsettled``): then only the combinations it left open and those
+feasible today can comply at a stricter value. The piezo pump is
+re-solved whole, but simulates only the rows its stage would simulate that
+pass every check the simulation does not replace
+(``pump.complying_designs``): the others cannot comply.
 """
 from __future__ import annotations
 
@@ -67,10 +75,36 @@ def piezo_key(c: dict) -> str:
     return f"ph-{k['stack']}-n{k['n_stacks']}-{k['fluid']}-{k['seal']}-{k['amplifier']}"
 
 
+def variant_key(c: dict) -> tuple:
+    """A piezohydraulic candidate's part combination with its structure
+    material and compensator: what one geometric program sizes (its passive
+    variant is built from the as-built one)."""
+    k = c["components"]
+    return piezo_key(c), k.get("material"), k.get("compensator")
+
+
 def unit_key(tech: str, c: dict) -> str:
     """What one re-solve of candidate ``c`` covers: its piezohydraulic part
     combination (every material and compensator), else the design itself."""
     return piezo_key(c) if tech == "piezohydraulic" else c["id"]
+
+
+# margins a simulation replaces or adds (``candidate.sim_margins``): a design
+# left unsimulated that misses only these might comply once simulated
+SIMULATED = ("stroke", "speed", "overshoot", "stiffness")
+
+
+def unsettled(tech: str, candidates: list[dict]) -> list[dict] | None:
+    """The piezohydraulic designs a solve left open: sized, passing every
+    check a simulation does not replace, but not simulated (the solve
+    simulates at most ``options.max_simulated``). Every other design was
+    judged in full (simulated, or missing a check no simulation changes).
+    None for a technology whose solve does not record every design it
+    leaves unsimulated (the DC search counts those it drops)."""
+    if tech != "piezohydraulic":
+        return None
+    return [c for c in candidates if c.get("stage") == "sized"
+            and all(v >= 0 or k in SIMULATED for k, v in c["margins"].items())]
 
 
 def whole(stages, tech: str, req, catalog, loads) -> list[dict]:
@@ -86,28 +120,40 @@ def whole(stages, tech: str, req, catalog, loads) -> list[dict]:
 def units(stages, tech: str, req, catalog, loads, cs: list[dict]) -> list[dict]:
     """The candidates of the part combinations of candidates ``cs``
     re-solved for ``req`` and ``catalog``: piezohydraulic combinations
-    re-sized (each with its materials and compensators), DC designs from
-    parts (the combinations of their parts) or catalog DC actuators
+    re-sized (the structure materials and compensators of ``cs``), DC designs from
+    parts (those of ``cs``, each simulated) or catalog DC actuators
     re-simulated."""
     if tech == "piezohydraulic":
         keys = {piezo_key(c) for c in cs}
-        return stages.piezohydraulic(req, catalog, loads, None, "summary",
-                                      only=lambda combo: combo.key in keys)[0].candidates
+        wanted = {variant_key(c) for c in cs}
+        parts = {tuple(c["components"][k] for k in ("stack", "fluid", "seal", "amplifier")) for c in cs}
+        return stages.piezohydraulic(
+            req, catalog, loads, None, "summary", only=lambda combo: combo.key in keys,
+            variants=lambda combo, v: (combo.key, v.material.id, v.compensator and v.compensator.id) in wanted,
+            parts=parts,
+        )[0].candidates
     if tech == "dc_motor":
-        return stages.dc_motor(req, dc_parts_of(catalog, tuple(cs)), loads, None, "summary")[0].candidates
+        rows = {tuple((c.get("components") or {}).get(k) for k in ("motor", "screw", "gear", "drive")) for c in cs}
+        return stages.dc_motor(req, dc_parts_of(catalog, tuple(cs)), loads, None, "summary", rows=rows)[0].candidates
     raise ValueError(f"no re-solve by design for {tech!r}")
 
 
 def pump_lightest(stages, req, catalog, loads) -> tuple[str, float] | None:
     """The pump's best complying design (id, first objective), None when
-    none complies: the static screen alone when no row passes every check
-    the simulation does not replace (``pump.could_comply``), else the
-    solve's own pump stage."""
-    from ..technologies.piezo_pump.designs import could_comply
-    if not could_comply(req, catalog, loads):
-        return None
-    v = verdict_of(req, stages.piezo_pump(req, catalog, loads, None)[0].candidates)
+    none complies: of the rows the solve's pump stage would simulate, those
+    that pass every check the simulation does not replace, simulated
+    (``complying_designs``: the same verdict and best design; the
+    static screen alone when no row passes those checks)."""
+    from ..technologies.piezo_pump.designs import complying_designs
+    from ..technologies.piezo_pump.record import pump_candidate
+    v = verdict_of(req, [pump_candidate(req, d) for d in complying_designs(req, catalog, loads)])
     return (v.best, v.objective) if v.feasible else None
+
+
+def pump_could_comply(req, catalog, loads) -> bool:
+    """The pump's static screen alone (``pump.could_comply``)."""
+    from ..technologies.piezo_pump.designs import could_comply
+    return could_comply(req, catalog, loads)
 
 
 def dc_parts_of(catalog, alive: tuple):

@@ -229,3 +229,21 @@ def test_robust_studies_a_pump_design(seed_pumps):
         assert q["p50"] == pytest.approx(picked[0]["margins"][k], rel=5e-3, abs=1e-9), k
     spread = robust(req, load_catalog(), picked, samples=8, seed=1, executor=Executor(0))["designs"][0]
     assert len(set(round(spread["margin_quantiles"]["blocked_force"][q], 9) for q in ("p05", "p95"))) == 2
+
+
+@pytest.mark.parametrize("capacitance", [3.1e-5, 1.55e-5])
+def test_the_flips_pump_re_solve_gives_the_stage_s_verdict_and_lightest(capacitance):
+    """``pump.complying_designs`` (what the flips' re-solves simulate)
+    against the whole pump stage: the same verdict and the same lightest
+    complying design, at the seed's stack capacitance (no pump complies)
+    and at half of it (one does), while simulating fewer rows."""
+    from sizing.engine import resolve
+    req, _ = load_requirements(STUDIES / "seed-requirements.toml")
+    catalog = resolve.with_value(load_catalog(None), "pi-p-056.90", "capacitance", capacitance)
+    loads = [c["load_N"] for c in load_cases(req.load)]
+    whole = pump_engine.pump_designs(req, catalog, loads).designs
+    few = pump_engine.complying_designs(req, catalog, loads)
+    a = resolve.verdict_of(req, [pump_candidate(req, d) for d in whole])
+    b = resolve.verdict_of(req, [pump_candidate(req, d) for d in few])
+    assert (a.feasible, a.best) == (b.feasible, b.best) and a.objective == pytest.approx(b.objective, rel=1e-9)
+    assert a.feasible == (capacitance < 3e-5) and len(few) < len(whole)

@@ -446,3 +446,30 @@ def test_baseline_adds_what_changed(tmp_path):
     code, _, stderr = run_cli("solve", base, "--out", tmp_path / "c", "--quiet", "--fast", "--baseline", bad)
     assert code == 2 and "bad.json" in stderr
     assert not (tmp_path / "c").exists()
+
+
+def test_gp_cone_data_is_cvxpy_apply_entry_for_entry():
+    """The re-solve's own cone data (convex._ConeData) against cvxpy's
+    ``ConicSolver.apply`` for parameters other than those it was checked
+    on when compiled, and the sizing it gives against cvxpy's own path."""
+    sizer = GPSizer()
+    sizer.solve(BASE)
+    other = dataclasses.replace(BASE, n_stiffness=12 * 4.33e8, n_capacitance=12 * 31e-6, stroke=42e-3)
+    run = sizer._runs[id(sizer.problem)]
+    assert run.cone_data is not None
+    solver, prog, logs, _ = run.compiled
+    sizer.set(other)
+    for p, log_p in logs:
+        log_p.save_value(np.log(p.value))
+    reference, _ = solver.apply(prog)
+    mine = run.cone_data.data()
+    assert np.array_equal(mine["A"].toarray(), reference["A"].toarray())
+    assert np.array_equal(mine["b"], reference["b"]) and np.array_equal(mine["c"], reference["c"])
+    direct = sizer.solve(other)
+    plain = GPSizer()
+    for r in plain._runs.values():
+        r.direct = False                   # cvxpy's own re-solve throughout
+    through_cvxpy = plain.solve(other)
+    assert direct.success and through_cvxpy.success
+    assert direct.wide_area == pytest.approx(through_cvxpy.wide_area, rel=1e-6)
+    assert direct.ratio == pytest.approx(through_cvxpy.ratio, rel=1e-6)

@@ -11,13 +11,14 @@ from .from_parts import dc_parts_designs
 from .record import actuator_candidate, parts_candidate
 
 
-def solve(req, catalog, loads, progress, detail) -> tuple[Outcome, tuple]:
+def solve(req, catalog, loads, progress, detail, rows=None) -> tuple[Outcome, tuple]:
     """The catalog's DC actuators and those sized from parts; also their
-    records (the report's traces re-simulate them)."""
+    records (the report's traces re-simulate them). ``rows``: the only
+    designs from parts to size (``dc_parts_designs``), for a re-solve."""
     if not req.options.dc_motors:
         return Outcome("dc_motor", [], counts=_dc_counts(DCPartsOutcome())), ()
     actuators = actuator_designs(req, catalog, loads)
-    parts = dc_parts_designs(req, catalog, loads, progress)
+    parts = dc_parts_designs(req, catalog, loads, progress, rows=rows)
     dropped = detail != "full"          # a design ruled out before simulation is counted, not recorded
     kept = [d for d in parts.designs if not (dropped and d.stage == "pruned")]
     ruled = Counter(parts.ruled_out) + Counter(_dc_pruned_reason(d) for d in parts.designs

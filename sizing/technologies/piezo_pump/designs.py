@@ -65,14 +65,7 @@ def pump_designs(req, catalog, loads: list[float], progress=None, step_factor: f
     R, st, M, met, valid, outside = _screened(req, catalog, gs, loads)
     records = _envelope_records(gs, R, outside)
     valid &= outside == ""
-    G = np.vstack([np.where(np.isfinite(v), v, -np.inf) for v in M.values()])
-    worst = np.min(G, axis=0)
-    violation = np.sum(np.maximum(-G, 0.0), axis=0)       # pymoo's CV over the margins
-    # the simulation verifies designs inside the quasi-static validity of
-    # both models: the valves return their drop within the cycle, the
-    # output is far below its resonance (docs/models.md, "Piezo pump")
-    inside = valid & (M["valve_flow"] >= 0) & (M["output_resonance"] >= 0)
-    chosen = _choose(req, R, met, worst, violation, inside)
+    worst, violation, chosen = _chosen(req, R, M, met, valid)
     _progress(progress, "simulating pumps", 0, len(chosen))
     sims = _simulate(req, reference_bouc_wen(catalog.stacks), gs, R, st, chosen, loads, step_factor)
     _progress(progress, "simulating pumps", len(chosen), len(chosen))
@@ -96,6 +89,44 @@ def pump_designs(req, catalog, loads: list[float], progress=None, step_factor: f
         {"combinations": int(len(R["group"])), "groups": len(gs), "simulated": len(chosen),
          "screen_feasible": int((worst >= 0).sum()), "parts_not_rated": ruled,
          "outside_envelope": int((outside != "").sum())}))
+
+
+def _chosen(req, R, M, met, valid) -> tuple:
+    """Each row's worst margin and summed violation, and the rows chosen
+    for simulation (``_choose``)."""
+    G = np.vstack([np.where(np.isfinite(v), v, -np.inf) for v in M.values()])
+    worst = np.min(G, axis=0)
+    violation = np.sum(np.maximum(-G, 0.0), axis=0)       # pymoo's CV over the margins
+    # the simulation verifies designs inside the quasi-static validity of
+    # both models: the valves return their drop within the cycle, the
+    # output is far below its resonance (docs/models.md, "Piezo pump")
+    inside = valid & (M["valve_flow"] >= 0) & (M["output_resonance"] >= 0)
+    return worst, violation, _choose(req, R, met, worst, violation, inside)
+
+
+def complying_designs(req, catalog, loads: list[float]) -> tuple:
+    """The designs ``pump_designs`` would find complying, and only those
+    simulated: of the rows it chooses for simulation, those that pass every
+    check the simulation does not replace (the others miss a check whatever
+    the simulation gives). What the flips' re-solves ask of the pump: the
+    same verdict and lightest design, without simulating rows that cannot
+    comply."""
+    if not (catalog.valves and catalog.accumulators and catalog.stacks):
+        return ()
+    gs, _ = screen.groups(req, catalog)
+    if not gs:
+        return ()
+    R, st, M, met, valid, outside = _screened(req, catalog, gs, loads)
+    valid &= outside == ""
+    _, _, chosen = _chosen(req, R, M, met, valid)
+    static_ok = np.ones(len(valid), dtype=bool)
+    for k, v in M.items():
+        if k not in SIMULATED_MARGINS:
+            static_ok &= np.nan_to_num(v, nan=-1.0) >= 0
+    kept = [i for i in chosen if static_ok[i]]
+    sims = _simulate(req, reference_bouc_wen(catalog.stacks), gs, R, st, kept, loads)
+    screened = _Screen(gs, R, st, M, met)
+    return tuple(_design(req, screened, i, _sim_cases(sims, k, loads, st["speeds"], i)) for k, i in enumerate(kept))
 
 
 def _screened(req, catalog, gs, loads) -> tuple:

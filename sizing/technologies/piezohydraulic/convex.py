@@ -51,6 +51,8 @@ from dataclasses import dataclass, field
 
 import cvxpy as cp
 import numpy as np
+import scipy.sparse as sp
+from cvxpy import settings as cvx
 
 from ...physics import geometry, structure
 from ...physics.stack import LARGE_SIGNAL_CAPACITANCE_FACTOR
@@ -415,6 +417,7 @@ class _Resolver:
         self.problem, self.variables = problem, variables
         self.compiled = None            # (solver, cone program, log parameters, variable columns)
         self.direct = True
+        self.cone_data = None           # _ConeData: the cone program's data without scipy's slicing
 
     def run(self) -> str:
         if self.compiled is None or not self.direct:
@@ -444,13 +447,15 @@ class _Resolver:
             self.compiled = (chain.solver, prog, logs, cols)
         except (AttributeError, KeyError, StopIteration, TypeError):
             self.direct = False
+            return
+        self.cone_data = _ConeData.of(chain.solver, prog)
 
     def _direct(self) -> str:
         solver, prog, logs, cols = self.compiled
         for p, log_p in logs:
             log_p.save_value(np.log(p.value))
         try:
-            data, _ = solver.apply(prog)
+            data = self.cone_data.data() if self.cone_data is not None else solver.apply(prog)[0]
             raw = solver.solve_via_data(data, False, False, {})
         except Exception:                       # the solver's own failure: as cvxpy reports it
             return "solver_error"
@@ -460,3 +465,46 @@ class _Resolver:
             for v, col in zip(self.variables, cols):
                 v.save_value(np.exp(np.asarray(x[col])))
         return status
+
+
+class _ConeData:
+    """The cone program's data (A, b, c) for the solver, from the parameter
+    vector, as cvxpy's ``ConicSolver.apply`` builds it, without its sparse
+    slicing: one product with cvxpy's own reduced map, then the columns of
+    A and b read off the fixed sparsity pattern. ``of`` checks that both
+    give the same arrays, entry for entry, and returns None otherwise (the
+    solver's own ``apply`` is used then); half the time of a re-solve went
+    into scipy building and slicing those matrices."""
+
+    def __init__(self, solver, prog, base: dict):
+        self.solver, self.prog, self.base = solver, prog, base
+        indices, indptr, shape = prog.reduced_A.problem_data_index
+        n = prog.x.size
+        self.m, self.n, self.split = shape[0], n, int(indptr[n])
+        self.a_indices, self.a_indptr = np.asarray(indices[:self.split]), np.asarray(indptr[:n + 1])
+        self.b_rows = np.asarray(indices[self.split:])
+
+    @classmethod
+    def of(cls, solver, prog) -> "_ConeData | None":
+        try:
+            reference, _ = solver.apply(prog)
+            mine = cls(solver, prog, {k: v for k, v in reference.items() if k not in (cvx.A, cvx.B, cvx.C)})
+            data = mine.data()
+            same = (data[cvx.A].shape == reference[cvx.A].shape and (data[cvx.A] != reference[cvx.A]).nnz == 0
+                    and np.array_equal(data[cvx.B], reference[cvx.B]) and np.array_equal(data[cvx.C], reference[cvx.C]))
+        except Exception:                  # a cvxpy without these internals: its own path
+            return None
+        return mine if same else None
+
+    def data(self) -> dict:
+        from cvxpy.cvxcore.python import canonInterface
+        prog = self.prog
+        vec = canonInterface.get_parameter_vector(prog.total_param_size, prog.param_id_to_col,
+                                                  prog.param_id_to_size,
+                                                  lambda i: np.asarray(prog.id_to_param[i].value))
+        c = np.asarray(prog.q @ vec).ravel()
+        flat = np.asarray(prog.reduced_A.reduced_mat @ vec).ravel()
+        A = sp.csc_array((-flat[:self.split], self.a_indices, self.a_indptr), shape=(self.m, self.n))
+        b = np.zeros(self.m)
+        np.add.at(b, self.b_rows, flat[self.split:])
+        return {**self.base, cvx.A: A, cvx.B: b, cvx.C: c[:-1]}

@@ -16,7 +16,8 @@ from ...physics import bouc_wen, fluid as fluid_props
 from ...physics import amplifier, geometry, stack as stack_phys, structure, thermal
 from ...physics.bouc_wen import BoucWen
 from . import force_path
-from .convex import GPSizer, SizingInput
+from ...engine import stage_cache
+from .convex import GPSizer, SizingInput, SizingResult
 from .parts import Candidates, part_row, reference_bouc_wen, stack_bouc_wen, structure_row
 from ...engine.rank import ceiling_margin, floor_margin
 from ...engine.records import PiezoBrief, PiezoDesign, Variant, frozen
@@ -101,17 +102,19 @@ def variants(b: PiezoBrief, catalog: Catalog) -> list[Variant]:
     return [Variant(m, comp) for m in mats for comp in [None, *comps]]
 
 
-def size(b: PiezoBrief, catalog, combos, progress=None):
+def size(b: PiezoBrief, catalog, combos, progress=None, keep=None):
     """One geometric program per combination and variant: each structure
     material, as built and with each catalog compensator, gets its own
     bore, plates, frame, gap, ratio, voltage and drive (an open
     accumulator adds its compliance to the force path; every compensator
-    its mass and cost to the objective)."""
+    its mass and cost to the objective). ``keep(combo, variant)``: the
+    variants to size (all by default)."""
     sizer = _sizer(tuple(b.objectives))
     out = []
     vs = variants(b, catalog)
     for i, c in enumerate(combos):
-        out.extend((c, v, sizer.solve(sizing_input(b, c, v.material, v.compensator))) for v in vs)
+        out.extend((c, v, _solved(sizer, sizing_input(b, c, v.material, v.compensator)))
+                   for v in vs if keep is None or keep(c, v))
         if i % 8 == 0 or i == len(combos) - 1:
             _progress(progress, "sizing", i + 1, len(combos))
     return out
@@ -142,6 +145,12 @@ def designs(b: PiezoBrief, catalog, sized) -> list[PiezoDesign]:
     return as_built + _build(b, passive, spacer)
 
 
+def _solved(sizer: GPSizer, s: SizingInput) -> SizingResult:
+    """``sizer.solve(s)``, read back when the same program was solved inside
+    ``stage_cache.reuse()`` (the re-solves behind the flips)."""
+    return stage_cache.cached(stage_cache.gp_key(sizer.objectives, s), lambda: sizer.solve(s))
+
+
 @lru_cache(maxsize=8)
 def _sizer(objectives: tuple) -> GPSizer:
     """One program per objective set, compiled once per process."""
@@ -161,7 +170,7 @@ def resize_passive(b: PiezoBrief, catalog, built: list[PiezoDesign]) -> list[Pie
     triples = []
     for i in idx:
         d = built[i]
-        res = sizer.solve(sizing_input(b, d.combo, d.variant.material, None, spacer, d.spacer))
+        res = _solved(sizer, sizing_input(b, d.combo, d.variant.material, None, spacer, d.spacer))
         triples.append((d.combo, d.variant.as_built(), res if math.isfinite(res.wide_area) else d.gp))
     again = {d.origin: d for d in designs(b, catalog, triples) if d.variant.passive}
     out = list(built)

@@ -27,13 +27,14 @@ from collections import Counter
 import numpy as np
 
 from ...engine.rank import OBJECTIVE_KEYS, nondominated_levels, verdict
+from ...engine import stage_cache
 from ...engine.records import Outcome, PiezoBrief, PiezoDesign, Simulation, VerifiedDesign
 from ...errors import SimulationError
 from ...io.catalog import Catalog
 from . import designs as piezo_designs
 from .parts import Candidates
 from .record import design_candidate, pruned_candidate, ruled_out_record
-from .search import Combo, enumerate_combos
+from .search import Combo, combos_of, enumerate_combos
 from .verify import SETTLE_TIME_S, simulate_cases
 
 
@@ -49,14 +50,17 @@ SIM_CHUNK = 32
 SCREEN_IGNORES = ("thermal_drift", "amplifier_continuous_current")
 
 
-def solve(req, catalog, loads, progress, detail, only=None) -> tuple[Outcome, list[VerifiedDesign]]:
+def solve(req, catalog, loads, progress, detail, only=None,
+          variants=None, parts=None) -> tuple[Outcome, list[VerifiedDesign]]:
     """Enumerate, size, build and verify the piezohydraulic designs
-    (``only(combo)``: the combinations to keep, for a re-solve)."""
-    combos = [c for c in enumerate_combos(req, catalog) if only is None or only(c)]
+    (``only(combo)``: the combinations to keep, ``variants(combo, variant)``:
+    the structure materials and compensators to size, ``parts``: the
+    (stack, fluid, seal, amplifier) ids to enumerate, for a re-solve)."""
+    combos = [c for c in _enumerated(req, catalog, parts) if only is None or only(c)]
     to_size = [c for c in combos if not c.pruned]
     pruned = [c for c in combos if c.pruned]
     brief = PiezoBrief.of(req)               # what the stages read of the requirements, once
-    sized = piezo_designs.size(brief, catalog, to_size, progress)
+    sized = piezo_designs.size(brief, catalog, to_size, progress, variants)
     designs = piezo_designs.resize_passive(brief, catalog, piezo_designs.designs(brief, catalog, sized))
     budget = piezo_simulation_budget(req, catalog, len(loads))
     verified = [VerifiedDesign(d, sim) for d, sim in zip(designs, _simulate(req, designs, loads, progress, budget))]
@@ -78,6 +82,21 @@ def solve(req, catalog, loads, progress, detail, only=None) -> tuple[Outcome, li
         counts["simulations_within_step_limit"] = budget
     return Outcome("piezohydraulic", candidates, Counter(_pruned_reason(c) for c in pruned), tuple(records),
                    counts), verified
+
+
+def _enumerated(req, catalog, parts=None) -> list[Combo]:
+    """``enumerate_combos``, read back inside ``stage_cache.reuse()`` for the
+    same requirements and catalog (the catalog is kept with it, so its id
+    names it while kept); only the combinations of ``parts`` when given."""
+    if parts is not None:
+        counts = range(1, req.options.max_stacks + 1)
+        return [c for s, f, seal, a in sorted(parts)
+                for c in combos_of(req, catalog.stacks[s], catalog.fluids[f], catalog.seals[seal],
+                                   catalog.amplifiers[a], counts)]
+    if not stage_cache.active():
+        return enumerate_combos(req, catalog)
+    key = ("combos", id(catalog), req.model_dump_json())
+    return stage_cache.cached(key, lambda: (catalog, enumerate_combos(req, catalog)))[1]
 
 
 def piezo_simulation_budget(req, catalog, n_loads: int) -> int:
@@ -118,10 +137,16 @@ def _simulate(req, designs: list[PiezoDesign], loads, progress, budget=None) -> 
         twins.setdefault(_dynamic_key(designs[i]), []).append(i)
     unique = [group[0] for group in twins.values()]
     S = req.requirements.stroke
+    if stage_cache.active():      # simulated before with the same input (a flip's re-solves)
+        for i in unique:
+            out[i] = stage_cache.lookup(stage_cache.simulation_key(designs[i], loads, S))
+        unique = [i for i in unique if out[i] is None]
     for start in range(0, len(unique), SIM_CHUNK):
         chunk = unique[start:start + SIM_CHUNK]
         for i, sim in zip(chunk, _simulate_chunk([designs[i] for i in chunk], loads, S)):
             out[i] = sim
+            if stage_cache.active():
+                stage_cache.remember(stage_cache.simulation_key(designs[i], loads, S), sim)
         _progress(progress, "simulating", min(start + SIM_CHUNK, len(unique)), len(unique))
     for group in twins.values():
         for i in group[1:]:

@@ -1,5 +1,5 @@
 """What the re-solves behind the flips (``flip.py``) share: each
-piezohydraulic geometric program, simulation and enumeration, kept by its
+sized geometric program, simulation and enumeration, kept by its
 whole input while ``reuse()`` is open.
 
 A search that moves one value re-solves the same part combinations at the
@@ -53,7 +53,7 @@ def gp_key(objectives: tuple, s) -> tuple:
 
 
 def simulation_key(design, loads, stroke: float) -> tuple:
-    """A piezohydraulic design's simulation key: every array of its
+    """A sized design's simulation key: every array of its
     candidate row, its ramp, the load cases and the target stroke."""
     cand = design.cand
     rows = tuple(np.asarray(getattr(cand, f.name)).tobytes() for f in fields(cand))

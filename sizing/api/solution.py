@@ -90,15 +90,15 @@ def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-ou
 def run_solve(requirements_path, catalog_dir=None, baseline=None, progress=None, detail: str = "summary",
               robust=None, fast: bool = False) -> SolveResult:
     """The solve without writing anything (``solve``'s arguments)."""
-    from ..engine.solve import solve as run
     from ..io.requirements import load_requirements
 
+    one_of(detail, ("summary", "full"), "--detail")
     req, sha = load_requirements(requirements_path)
     cat = load_catalog(catalog_dir)
     check_solve_steps(req, cat, str(requirements_path))
     old = _load_baseline(baseline) if baseline is not None else None
     studied = _load_robust(robust) if robust is not None else None
-    one_of(detail, ("summary", "full"), "--detail")
+    from ..engine.solve import solve as run      # cvxpy and numba load once the inputs are known good
     out = run(req, sha, cat, progress=progress, detail=detail, fast=fast)
     results = out.results
     results["catalog_dir"] = str(cat.folder.resolve())

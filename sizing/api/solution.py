@@ -32,7 +32,8 @@ class SolveResult(Payload):
         return self.results
 
     def knife_edges(self) -> str:
-        """The terminal line of the checks met by less than 1 % ("" when none)."""
+        """The terminal line of the checks met by less than ``KNIFE_EDGE``
+        (sizing/settings.py; "" when none)."""
         from ..report.text import knife_edge_text
         return knife_edge_text(self.results["summary"].get("comparison", {}))
 
@@ -41,13 +42,14 @@ class SolveResult(Payload):
         user's units: one terminal line per technology (none with --fast)."""
         from ..engine.comparison import LABELS
         from ..engine.flip import flip_text
+        from ..settings import FLIP_TOLERANCE
         lines = []
         for tech, t in self.results["summary"].get("comparison", {}).get("technologies", {}).items():
             flips = t.get("flips")
             if flips is None:
                 continue
             shown = sorted(flips, key=lambda f: (f["to"] is None, f["changes"] != "feasibility"))
-            lines.append(f"what would flip the {LABELS.get(tech, tech)} (re-solved, to 1 %): " + "; ".join(flip_text(f) for f in shown))
+            lines.append(f"what would flip the {LABELS.get(tech, tech)} (re-solved, to {100 * FLIP_TOLERANCE:g} %): " + "; ".join(flip_text(f) for f in shown))
         return lines
 
     def files(self) -> dict:

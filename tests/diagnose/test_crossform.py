@@ -6,8 +6,6 @@ set is the benchmark, not a test)."""
 from __future__ import annotations
 
 import json
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -18,6 +16,8 @@ from sizing.errors import InputError
 
 from benchmarks.crossform import cases, dc
 from benchmarks.crossform.common import write_campaign
+
+from ..conftest import run_cli
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -99,10 +99,9 @@ def test_bad_input_exits_2_with_one_line(tmp_path, rig, columns, match):
     _write_runs(folder, ROOT / "studies/campaigns" / rig / "rig.toml", columns)
     with pytest.raises(InputError, match=match):
         api.diagnose(folder, ["b"])
-    proc = subprocess.run([sys.executable, "-m", "sizing.cli", "diagnose", str(folder), "--holdout", "b",
-                           "--out", str(tmp_path / "out")], capture_output=True, text=True)
-    assert proc.returncode == 2
-    assert len(proc.stderr.strip().splitlines()) == 1 and match.split(":")[0] in proc.stderr
+    code, _, err = run_cli("diagnose", folder, "--holdout", "b", "--out", tmp_path / "out")
+    assert code == 2
+    assert len(err.strip().splitlines()) == 1 and match.split(":")[0] in err
     assert not (tmp_path / "out").exists()
 
 

@@ -285,6 +285,7 @@ def _check_bounded_and_valid(r):
     assert not ruled & named
 
 
+@pytest.mark.slow
 def test_seed_solve_end_to_end(seed_solve, seed_requirements, tmp_path):
     """Acceptance: exit 0, three files; every sized
     piezohydraulic candidate carries its force path, thermal budget and seal

@@ -168,6 +168,7 @@ def test_dc_step_response():
     _assert_golden("seed-dc-step")
 
 
+@pytest.mark.slow
 def test_best_design_for_seed_requirements(seed_solve):
     """The best design `sizing solve` finds for studies/seed-requirements.toml,
     per technology (the DC option sized from parts is now ranked

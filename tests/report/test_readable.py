@@ -86,6 +86,10 @@ def design_ids(*documents) -> set[str]:
     return ids
 
 
+# every command run once, the seed's full solve among them: the slow tier
+pytestmark = pytest.mark.slow
+
+
 @pytest.fixture(scope="module")
 def outputs(tmp_path_factory, seed_solve):
     """(name, terminal text, pages) of every command, and the design ids they

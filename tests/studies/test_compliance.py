@@ -18,7 +18,9 @@ REPO = Path(__file__).resolve().parents[2]
 SEED = REPO / "studies" / "seed-requirements.toml"
 
 
-# seed_solve: the seed's full solve, once per test run (conftest)
+# seed_solve: the seed's full solve, once per test run (conftest); every
+# test here checks figures of the probability of compliance: the slow tier
+pytestmark = pytest.mark.slow
 
 
 def _within_wider(a: dict, b: dict) -> bool:

@@ -65,7 +65,8 @@ def _round_trip(study: str, tmp_path: Path, cache: dict) -> list[str]:
     return misses
 
 
-@pytest.mark.parametrize("study", ["seed-requirements.toml", "seed-requirements-low-duty.toml"])
+@pytest.mark.parametrize("study", ["seed-requirements.toml",
+                                   pytest.param("seed-requirements-low-duty.toml", marks=pytest.mark.slow)])  # a solve of its own
 def test_every_ranked_design_evaluates_to_itself(study, tmp_path, fast_solves):
     assert _round_trip(study, tmp_path, fast_solves) == []
 

@@ -103,16 +103,16 @@ def fit_hysteresis(paths, holdout=None, model: str = "auto", out=None, report=No
     better on the holdout), "bouc-wen" or "prandtl-ishlinskii": the one the
     TOML carries. Writes OUT, the report (OUT.html unless ``report``) and,
     with ``catalog_entry``, ID.toml and ID.csv beside OUT."""
+    from . import fit_tables as tables
+    choices = ("auto", *tables.MODELS)
+    if model not in choices:
+        raise InputError("command line", "--model", f"expected one of {', '.join(choices)}, got {model!r}")
     if not prior_sigma > 0:
         raise InputError("command line", "--prior-sigma", f"expected a positive relative sd, got {prior_sigma!r}")
     if catalog_entry is not None:
         _check_entry_id(catalog_entry, catalog)
     out, report = _checked_targets(out, report, paths)
     train, hold = _hysteresis_records(paths, holdout)
-    from . import fit_tables as tables
-    choices = ("auto", *tables.MODELS)
-    if model not in choices:
-        raise InputError("command line", "--model", f"expected one of {', '.join(choices)}, got {model!r}")
     prior, prior_text, base_raw, base_named = _prior(catalog, prior_stack, train)
     with warnings.catch_warnings(record=True) as log:
         warnings.simplefilter("always")

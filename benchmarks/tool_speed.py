@@ -27,7 +27,7 @@ Figures on this 2-core machine shared by six jobs (load average 8-14):
 ``--help`` 0.49-0.52 s (load 8); an input error 1.6-1.7 s against 4.5 s
 the old way (load 8; pint still loads dask's core, not distributed); the
 seed solve --fast warm 45 s at load 13 (cProfile: 94 % in the engine, 66 %
-in the convex sizing's 1357 cvxpy solves; results.json 1 %, the report's
+in the convex sizing's 1357 cvxpy solves; results.json under 1 %, the report's
 three figures under 10 %); the README's test command (the quick tier, 929
 tests) 12 min 06 s at load 13; diagnose --check on the piezo campaign
 836 s at load 13, 81 % of it inside the piezohydraulic simulator's kernel

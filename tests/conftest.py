@@ -1,6 +1,7 @@
 """Shared fixtures. Every random step takes a seed (STYLE.md)."""
 from __future__ import annotations
 
+import json
 import os
 import shutil
 from pathlib import Path
@@ -86,3 +87,60 @@ def run_cli(*args: str):
     finally:
         sys.argv = argv
     return code, out.getvalue(), err.getvalue()
+
+
+# --- solves shared by the whole test run ---------------------------------------
+# Several test files read the same seed solve. Each is computed once per run:
+# under pytest-xdist the first worker to ask computes it into a folder beside
+# every worker's temporary folder, under a file lock, and the others read it.
+
+def _run_folder(tmp_path_factory) -> Path:
+    """A folder every worker of this test run sees (the run's own with xdist)."""
+    base = tmp_path_factory.getbasetemp()
+    return base.parent if os.environ.get("PYTEST_XDIST_WORKER") else base
+
+
+def computed_once(tmp_path_factory, name: str, compute) -> Path:
+    """``compute(folder)`` run once per test run into ``folder`` (returned);
+    a worker that finds it done, or waits for the one computing it, reads it."""
+    import fcntl
+    folder = _run_folder(tmp_path_factory) / name
+    with open(folder.with_name(name + ".lock"), "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)          # released when the file closes
+        if not (folder / ".done").exists():
+            shutil.rmtree(folder, ignore_errors=True)
+            folder.mkdir(parents=True)
+            compute(folder)
+            (folder / ".done").write_text("")
+    return folder
+
+
+class SolvedSeed:
+    """``sizing solve studies/seed-requirements.toml`` as run once for the
+    test run: ``out`` (results.json, report.html, ...), ``results`` (read
+    from results.json), ``terminal`` (what it printed)."""
+
+    def __init__(self, folder: Path):
+        self.out = folder / "out"
+        self.results = json.loads((self.out / "results.json").read_text())
+        self.terminal = (folder / "terminal.txt").read_text()
+
+
+def _solved_seed(tmp_path_factory, *options: str) -> SolvedSeed:
+    def compute(folder):
+        code, out, err = run_cli("solve", STUDIES / "seed-requirements.toml", "--out", folder / "out", *options)
+        assert code == 0, err
+        (folder / "terminal.txt").write_text(out + err)
+    return SolvedSeed(computed_once(tmp_path_factory, "seed-solve" + "".join(options), compute))
+
+
+@pytest.fixture(scope="session")
+def seed_solve(tmp_path_factory) -> SolvedSeed:
+    """The seed's full solve (flips and probability of compliance)."""
+    return _solved_seed(tmp_path_factory)
+
+
+@pytest.fixture(scope="session")
+def seed_solve_fast(tmp_path_factory) -> SolvedSeed:
+    """The seed's solve with --fast (verdicts, no flips, no compliance)."""
+    return _solved_seed(tmp_path_factory, "--fast")

@@ -55,11 +55,11 @@ def diagnose(campaign_dir: str | Path, holdout: list[str], out_dir: str | Path |
 
 def run_diagnose(campaign_dir, holdout, recalibrate=None, seed: int = 0) -> DiagnoseResult:
     """The diagnosis without writing anything (``diagnose``'s arguments)."""
-    from ..diagnose.diagnosis import diagnose_runs
     from ..io.campaign import campaign_split, load_campaign
 
     campaign = load_campaign(campaign_dir)
     campaign_split(campaign, holdout)
+    from ..diagnose.diagnosis import diagnose_runs     # numba and scipy load once the campaign reads well
     found = diagnose_runs(campaign.kind, campaign.rig, campaign.runs, list(holdout), recalibrate=recalibrate,
                           seed=seed)
     return DiagnoseResult(found, f"Sim-to-real gap: {Path(campaign_dir).name}", (campaign_dir,))
@@ -69,13 +69,13 @@ def diagnose_check(campaign_dir: str | Path, holdout: list[str] | None = None, s
     """The withheld-effect check on a campaign's own excitations and rig
     (``diagnose.check``: its result has ``table()``, ``matrix()``,
     ``accuracy``); writes no file."""
-    from ..diagnose.bench import Bench
-    from ..diagnose.check import campaign_noise, check_runs, clean_inputs
     from ..io.campaign import campaign_split, load_campaign
 
     campaign = load_campaign(campaign_dir)
     holdout = list(holdout) if holdout else [campaign.runs[-1].name]
     campaign_split(campaign, holdout)
+    from ..diagnose.bench import Bench
+    from ..diagnose.check import campaign_noise, check_runs, clean_inputs
     bench = Bench(campaign.kind, campaign.rig, campaign.runs, holdout)
     return check_runs(campaign.kind, campaign.rig, clean_inputs(bench), holdout, campaign_noise(bench, seed),
                       seed=seed, progress=progress)

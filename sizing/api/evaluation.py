@@ -40,8 +40,6 @@ def evaluate(design_path: str | Path, catalog_dir: str | Path | None = None,
     the checks of ``sizing solve``; the figures then add ``margins``,
     ``feasible``, ``driver`` and ``judged`` (the solve's metrics and
     static margins of the design, engine/judge.py)."""
-    from ..engine.evaluate import evaluate_dc, evaluate_piezo
-    from ..technologies.piezo_pump.evaluate import evaluate_pump
     from ..io.design import PumpDesignFile
     from ..io.provenance import assumed_values
 
@@ -53,6 +51,8 @@ def evaluate(design_path: str | Path, catalog_dir: str | Path | None = None,
         from ..io.requirements import load_requirements
         req = load_requirements(requirements)[0]
         check_solve_steps(req, cat, str(requirements))
+    from ..engine.evaluate import evaluate_dc, evaluate_piezo     # cvxpy and numba load once the inputs read well
+    from ..technologies.piezo_pump.evaluate import evaluate_pump
     run = (evaluate_pump if isinstance(design, PumpDesignFile)
            else evaluate_piezo if isinstance(design, PiezoDesignFile) else evaluate_dc)
     figures = run(design, cat, str(design_path))

@@ -6,9 +6,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..fit.bouc_wen import PARAM_NAMES
-from ..fit.common import Z95
-from ..fit.prior import combinations
+# the fits' modules (numba) are imported where a table is built: the
+# command checks its options against MODELS before they load
 
 MODELS = ("bouc-wen", "prandtl-ishlinskii")
 FROM_PRIOR_SHARE = 0.5      # posterior/prior variance above which a value "comes from the prior"
@@ -41,6 +40,7 @@ def choose(summary: dict) -> dict:
 
 def stack_tables(bw) -> dict:
     """[stack] d33 and [stack.bouc_wen] of the regularised Bouc-Wen fit."""
+    from ..fit.bouc_wen import PARAM_NAMES
     th = bw.regularised_.params.as_array()
     return {"stack": {"d33": th[0]}, "stack.bouc_wen": dict(zip(PARAM_NAMES[1:], th[1:]))}
 
@@ -56,6 +56,7 @@ def _filter_note(cutoffs: list) -> str:
 
 
 def _prior_table(reg, prior_text: str, prior_sigma: float) -> dict:
+    from ..fit.bouc_wen import PARAM_NAMES
     return {"source": prior_text, "sigma_relative": prior_sigma,
             "weight": (f"Gaussian prior on each dimensionless group, 1-sigma {prior_sigma:g} x its prior value "
                        "(at least 0.1), against the data's white-noise chi^2 at the plain fit's residual "
@@ -75,6 +76,9 @@ def _initial_states(states: dict, pi) -> dict:
 def hysteresis_fit_table(carried, requested, choice, summary, bw, pi, runs, states, prior_text,
                          prior_sigma, fit_offset) -> dict:
     """The [fit] table of ``sizing fit hysteresis``; ``runs``: (training, holdout) records."""
+    from ..fit.bouc_wen import PARAM_NAMES
+    from ..fit.common import Z95
+    from ..fit.prior import combinations
     reg = bw.regularised_
     cutoffs = sorted(set(round(c, 3) for c in bw.cutoff_hz_.values()))
     half = Z95 * np.sqrt(np.clip(np.diag(reg.cov), 0, None))

@@ -21,11 +21,11 @@ from ..errors import InputError
 from ..io.catalog import load_catalog
 from ..io.runs import read_runs, split_holdout
 from ..report.fit_toml import render_toml
-from ..sim.signals import nrmse
-from . import fit_tables as tables, output
+from . import output
 from .output import PLOTLY_FILE, Payload, plotly_js
 
-MODEL_CHOICES = ("auto",) + tables.MODELS
+# The fits' modules (numba, scipy.signal) are imported inside the functions,
+# once the inputs are read: a bad file answers before they load.
 DEFAULT_PRIOR_STACK = "thorlabs-pk4ga7p1"     # the seed's Table 1 stack
 
 
@@ -103,8 +103,10 @@ def fit_hysteresis(paths, holdout=None, model: str = "auto", out=None, report=No
     better on the holdout), "bouc-wen" or "prandtl-ishlinskii": the one the
     TOML carries. Writes OUT, the report (OUT.html unless ``report``) and,
     with ``catalog_entry``, ID.toml and ID.csv beside OUT."""
-    if model not in MODEL_CHOICES:
-        raise InputError("command line", "--model", f"expected one of {', '.join(MODEL_CHOICES)}, got {model!r}")
+    from . import fit_tables as tables
+    choices = ("auto", *tables.MODELS)
+    if model not in choices:
+        raise InputError("command line", "--model", f"expected one of {', '.join(choices)}, got {model!r}")
     if not prior_sigma > 0:
         raise InputError("command line", "--prior-sigma", f"expected a positive relative sd, got {prior_sigma!r}")
     if catalog_entry is not None:
@@ -138,13 +140,13 @@ def _unique(log) -> tuple[str, ...]:
 
 def _hysteresis_records(paths, holdout):
     """(training, holdout) HysteresisRecords of the run CSVs; every run needs a reversal."""
+    runs = read_runs(paths, kind="piezohydraulic")
+    train, hold = split_holdout(runs, holdout, ", ".join(str(p) for p in paths))
     from ..fit.common import HysteresisRecord, check_hysteresis_records
 
     def record(run):
         return HysteresisRecord(run.name, run.time, run["voltage_V"], run["position_m"], source=str(run.path))
 
-    runs = read_runs(paths, kind="piezohydraulic")
-    train, hold = split_holdout(runs, holdout, ", ".join(str(p) for p in paths))
     train, hold = [record(r) for r in train], [record(r) for r in hold]
     check_hysteresis_records(train + hold)
     return train, hold
@@ -169,6 +171,8 @@ def _fit_hysteresis_models(train, prior, prior_sigma, cutoff_hz, fit_offset, n_s
 def _hysteresis_predictions(fitted: dict, train, hold):
     """Each model's prediction of each run: (traces, {model: {role: {run:
     NRMSE}}}, the carried Bouc-Wen's initial states)."""
+    from ..sim.signals import nrmse
+    from . import fit_tables as tables
     traces, per_model = [], {m: {"train": {}, "holdout": {}} for m in fitted}
     states = {"h0_m": {}, "offset_m": {}}
     for role, recs in (("train", train), ("holdout", hold)):
@@ -197,6 +201,7 @@ def _predict(model: str, est, rec, role: str, states: dict):
 def _hysteresis_result(carried, summary, traces, fit_table, bw, pi, choice, paths) -> dict:
     """The figures the report plots."""
     from ..fit.bouc_wen import PARAM_NAMES
+    from . import fit_tables as tables
     return {"model": carried, "summary": {m: summary[m] for m in tables.MODELS}, "traces": traces,
             "fit": fit_table,
             "bouc_wen": {"params": dict(zip(PARAM_NAMES, bw.regularised_.params.as_array().tolist())),
@@ -288,13 +293,13 @@ def fit_dc_motor(paths, rig, holdout=None, out=None, report=None, fit_gains: boo
                  n_starts: int = 3, seed: int = 0, progress=None) -> FitResult:
     """Fit c1, c2 (seed eq. 13-14; with ``fit_gains`` the rig's nonzero PID
     gains too) of a dc_motor rig to reference/position run CSVs."""
-    from ..fit.dc_motor import DCMotorEstimator
-    from ..sim.rigs import dc_model
-
     inputs = (*paths, rig)
     out, report = _checked_targets(out, report, inputs)
     rig_file, rig = rig, _dc_rig(rig)
     train, hold = _dc_records(paths, holdout, rig, rig_file)
+    from ..fit.dc_motor import DCMotorEstimator
+    from ..sim.rigs import dc_model
+    from . import fit_tables as tables
     with warnings.catch_warnings(record=True) as log:
         warnings.simplefilter("always")
         est = DCMotorEstimator(dc_model(rig), fit_gains=fit_gains, n_starts=n_starts, random_state=seed,
@@ -318,13 +323,13 @@ def _dc_rig(rig_path):
 
 def _dc_records(paths, holdout, rig, rig_path):
     """(training, holdout) DCRecords of the run CSVs, within the step limit."""
-    from ..fit.dc_motor import DCRecord
     from ..limits import check_steps, dc_steps
 
     runs = read_runs(paths, kind="dc_motor")
     check_steps(dc_steps(sum(float(r.time[-1] - r.time[0]) for r in runs), rig.controller.rate),
                 str(rig_path), "[controller].rate", "controller steps per simulation of the runs")
     train, hold = split_holdout(runs, holdout, ", ".join(str(p) for p in paths))
+    from ..fit.dc_motor import DCRecord
 
     def record(run):
         return DCRecord(run.name, run.time, run["reference_m"], run["position_m"], source=str(run.path))
@@ -334,6 +339,7 @@ def _dc_records(paths, holdout, rig, rig_path):
 
 def _dc_predictions(est, train, hold):
     """(traces, {role: {run: NRMSE}}) of the fitted model on every run."""
+    from ..sim.signals import nrmse
     traces, per_role = [], {"train": {}, "holdout": {}}
     for role, recs in (("train", train), ("holdout", hold)):
         for rec in recs:

@@ -32,7 +32,8 @@ class SolveResult(Payload):
         return self.results
 
     def knife_edges(self) -> str:
-        """The terminal line of the checks met by less than 1 % ("" when none)."""
+        """The terminal line of the checks met by less than ``KNIFE_EDGE``
+        (sizing/settings.py; "" when none)."""
         from ..report.text import knife_edge_text
         return knife_edge_text(self.results["summary"].get("comparison", {}))
 
@@ -41,13 +42,14 @@ class SolveResult(Payload):
         user's units: one terminal line per technology (none with --fast)."""
         from ..engine.comparison import actuator_noun
         from ..engine.flip import flip_text
+        from ..settings import FLIP_TOLERANCE
         lines = []
         for tech, t in self.results["summary"].get("comparison", {}).get("technologies", {}).items():
             flips = t.get("flips")
             if flips is None:
                 continue
             shown = sorted(flips, key=lambda f: (f["to"] is None, f["changes"] != "feasibility"))
-            lines.append(f"what would flip the {actuator_noun(tech)} (re-solved, to 1 %): " + "; ".join(flip_text(f) for f in shown))
+            lines.append(f"what would flip the {actuator_noun(tech)} (re-solved, to {100 * FLIP_TOLERANCE:g} %): " + "; ".join(flip_text(f) for f in shown))
         return lines
 
     def files(self) -> dict:
@@ -90,15 +92,15 @@ def solve(requirements_path: str | Path, out_dir: str | Path | None = "sizing-ou
 def run_solve(requirements_path, catalog_dir=None, baseline=None, progress=None, detail: str = "summary",
               robust=None, fast: bool = False) -> SolveResult:
     """The solve without writing anything (``solve``'s arguments)."""
-    from ..engine.solve import solve as run
     from ..io.requirements import load_requirements
 
+    one_of(detail, ("summary", "full"), "--detail")
     req, sha = load_requirements(requirements_path)
     cat = load_catalog(catalog_dir)
     check_solve_steps(req, cat, str(requirements_path))
     old = _load_baseline(baseline) if baseline is not None else None
     studied = _load_robust(robust) if robust is not None else None
-    one_of(detail, ("summary", "full"), "--detail")
+    from ..engine.solve import solve as run      # cvxpy and numba load once the inputs are known good
     out = run(req, sha, cat, progress=progress, detail=detail, fast=fast)
     results = out.results
     results["catalog_dir"] = str(cat.folder.resolve())

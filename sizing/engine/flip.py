@@ -35,7 +35,7 @@ from typing import Callable
 from . import resolve
 from .rank import verdict
 
-TOLERANCE = 0.01           # of the value; for the maximum temperature, of its value in degC
+from ..settings import FLIP_TOLERANCE as TOLERANCE  # noqa: E402  of the value; of degC for a temperature (sizing/settings.py)
 RANGE = 4.0                # searched from value / RANGE to value x RANGE
 TEMPERATURE_SPAN = 150.0   # degC either side of a temperature
 COLD_LIMIT = -55.0         # degC, the usual military cold limit (MIL-STD-810 low temperature)

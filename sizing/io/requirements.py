@@ -14,6 +14,7 @@ from typing import Literal, Optional
 
 from pydantic import Field, field_validator
 
+from .. import settings
 from .design import LoadTable
 from .schema import Qty, Strict, load_toml, parse_model, read_input_bytes
 
@@ -60,7 +61,7 @@ class ObjectivesTable(Strict):
         default_factory=lambda: ["mass", "cost"], min_length=1)
     # probability of compliance under [tolerances] the recommendation must
     # reach (studies/compliance.py); 0: the nominal answer
-    min_compliance: Qty("dimensionless", nonnegative=True) = 0.9
+    min_compliance: Qty("dimensionless", nonnegative=True) = settings.MIN_COMPLIANCE
 
     @field_validator("min_compliance")
     @classmethod
@@ -84,10 +85,10 @@ class OptionsTable(Strict):
     # smallest oil gap in the wide chamber; None: the gap is sized, the stack
     # stroke plus a clearance and a manufacturing tolerance (technologies/piezohydraulic/verify.py)
     wide_gap: Optional[Qty("length", positive=True)] = None
-    design_margin: Qty("dimensionless", nonnegative=True) = 0.05   # static sizing margin on stroke and force
-    max_overshoot: Qty("dimensionless", positive=True) = 0.10      # simulated overshoot allowed
+    design_margin: Qty("dimensionless", nonnegative=True) = settings.DESIGN_MARGIN   # static sizing margin on stroke and force
+    max_overshoot: Qty("dimensionless", positive=True) = settings.MAX_OVERSHOOT      # simulated overshoot allowed
     min_natural_frequency: Optional[Qty("frequency", positive=True)] = None  # default: 10 / (stroke / speed)
-    max_drift_fraction: Qty("dimensionless", positive=True) = 0.10  # thermal drift allowed, fraction of stroke
+    max_drift_fraction: Qty("dimensionless", positive=True) = settings.MAX_DRIFT_FRACTION  # thermal drift allowed, fraction of stroke
     drift_reference_temperature: Qty("temperature") = 20.0          # oil filled and sealed at this temperature
     thermal_compensation: bool = True                     # also evaluate every design with a compensator
     compensator_mass: Qty("mass", nonnegative=True) = 0.4            # assumed spring-loaded accumulator
@@ -103,7 +104,7 @@ class OptionsTable(Strict):
     # geometric program makes them stiffer where the blocked force needs it. 3 is the reviewer's
     # "frame three times stiffer than the stacks" (10-18 kg of 6061 for a 9-stack design);
     # at the floor the three members together are as compliant as the stacks (force halves)
-    structure_stiffness_ratio: Qty("dimensionless", positive=True) = 3.0
+    structure_stiffness_ratio: Qty("dimensionless", positive=True) = settings.STRUCTURE_STIFFNESS_RATIO
     # how the end cap and base plate are held at their edge: "simply_supported" (the
     # conservative edge), "clamped", or "flange", a bolted flange whose rotational
     # stiffness k_theta is stated as flange_restraint = k_theta a / D (physics/structure.py)

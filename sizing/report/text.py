@@ -95,9 +95,10 @@ def entry_details(kind: str, entry: Entry) -> str:
 
 
 def knife_edge_text(comparison: dict) -> str:
-    """The margins under 1 % of the recommended design and of each
-    technology's best (``knife_edges``, studies/compliance.py), one line;
-    "" when there are none."""
+    """The margins under ``KNIFE_EDGE`` (sizing/settings.py) of the
+    recommended design and of each technology's best (``knife_edges``,
+    studies/compliance.py), one line; "" when there are none."""
+    from ..settings import KNIFE_EDGE
     rec = comparison.get("recommended") or {}
     entries = [(rec.get("name"), rec.get("knife_edges"))]
     entries += [(t.get("name"), t.get("knife_edges")) for t in comparison.get("technologies", {}).values()]
@@ -106,7 +107,7 @@ def knife_edge_text(comparison: dict) -> str:
         if edges and name not in named:
             named.add(name)
             parts.append(f"{name}: " + ", ".join(f"{k} {v:+.2%}" for k, v in edges.items()))
-    return "knife edges (checks met by less than 1 %): " + "; ".join(parts) if parts else ""
+    return f"knife edges (checks met by less than {100 * KNIFE_EDGE:g} %): " + "; ".join(parts) if parts else ""
 
 
 # units of the fitted parameters (seed eq. 1-2 and 13-14; docs/formats.md);

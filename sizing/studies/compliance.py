@@ -39,12 +39,10 @@ from .tolerances import tolerances_of
 
 SCHEDULE = (20, 180, 300, 500)     # batch sizes: 20, 200, 500, 1000 samples in all
 MAX_SAMPLES = sum(SCHEDULE)
-REPORTED_SAMPLES = 200             # at least, for a design the answer states
-MAX_EXAMINED = 10                  # designs the policy examines before it says none meets it
+from ..settings import KNIFE_EDGE, MAX_EXAMINED, REPORTED_SAMPLES  # noqa: E402  (sizing/settings.py)
 SEED = 0
 METHOD = ("Monte Carlo over the tolerances through the solve's checks and simulation (sizing robust's samples), "
           "sequential: 20, 200, 500, 1000 samples until the 95 % Wilson interval excludes min_compliance")
-KNIFE_EDGE = 0.01                  # a margin below this (and >= 0) is a knife edge
 
 
 def studied(cand: dict) -> bool:

@@ -6,6 +6,7 @@ step left a first-order error that piled up over a staircase's holds
 staircases), larger than the model-form difference the benchmark is meant
 to test."""
 import numpy as np
+import pytest
 
 from benchmarks.crossform import piezo
 
@@ -21,10 +22,12 @@ def _staircase_error(monkeypatch, substeps):
     return float(np.sqrt(np.mean((out[1e-4] - out[2.5e-5]) ** 2)) / np.ptp(out[2.5e-5]))
 
 
+@pytest.mark.slow
 def test_piezo_generator_converges_on_a_staircase(monkeypatch):
     assert _staircase_error(monkeypatch, piezo.EVENT_SUBSTEPS) < 5e-4
 
 
+@pytest.mark.slow
 def test_deciding_the_seal_once_a_step_does_not(monkeypatch):
     # the check above can fail: one decision a step is first-order
     assert _staircase_error(monkeypatch, 1) > 1e-3

@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 from sizing import api
 from sizing.diagnose.check import NONE
@@ -12,6 +13,7 @@ from sizing.diagnose.check import NONE
 ROOT = Path(__file__).resolve().parents[2]
 
 
+@pytest.mark.slow
 def test_check_on_the_dc_campaign_tells_effects_apart():
     lines = []
     result = api.diagnose_check(ROOT / "studies/campaigns/dc-motor", ["steps_b"], seed=1,

@@ -6,8 +6,6 @@ set is the benchmark, not a test)."""
 from __future__ import annotations
 
 import json
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -18,6 +16,8 @@ from sizing.errors import InputError
 
 from benchmarks.crossform import cases, dc
 from benchmarks.crossform.common import write_campaign
+
+from ..conftest import run_cli
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -49,6 +49,7 @@ def test_lugre_friction_in_a_stiff_loop_is_named_from_the_current(tmp_path):
     assert "current, A" in page and "Separation test" in page and "Runner-up" in page
 
 
+@pytest.mark.slow
 def test_null_campaign_from_the_second_generator_names_nothing(tmp_path):
     folder = _campaign(tmp_path, {}, seed=11)
     d = api.diagnose(folder, ["stairs_b"])
@@ -56,6 +57,7 @@ def test_null_campaign_from_the_second_generator_names_nothing(tmp_path):
     assert d.verdict["status"] in ("no_significant_gap", "unexplained")
 
 
+@pytest.mark.slow
 def test_outside_effect_is_not_explained(tmp_path):
     """Cogging (a force ripple with the motor angle) is not in the library:
     no library effect is named for it, neither explained nor partial."""
@@ -99,13 +101,13 @@ def test_bad_input_exits_2_with_one_line(tmp_path, rig, columns, match):
     _write_runs(folder, ROOT / "studies/campaigns" / rig / "rig.toml", columns)
     with pytest.raises(InputError, match=match):
         api.diagnose(folder, ["b"])
-    proc = subprocess.run([sys.executable, "-m", "sizing.cli", "diagnose", str(folder), "--holdout", "b",
-                           "--out", str(tmp_path / "out")], capture_output=True, text=True)
-    assert proc.returncode == 2
-    assert len(proc.stderr.strip().splitlines()) == 1 and match.split(":")[0] in proc.stderr
+    code, _, err = run_cli("diagnose", folder, "--holdout", "b", "--out", tmp_path / "out")
+    assert code == 2
+    assert len(err.strip().splitlines()) == 1 and match.split(":")[0] in err
     assert not (tmp_path / "out").exists()
 
 
+@pytest.mark.slow
 def test_drive_current_limit_is_named_with_its_form(tmp_path):
     """A drive that limits the actual current to 4.5 A behind the
     controller's back (the logged command is not clipped, the loop winds up):
@@ -143,6 +145,7 @@ def test_lugre_seal_from_the_second_generator_is_named_as_seal_stick_slip(tmp_pa
     assert "seal_stick_slip" in d.verdict["effect"].split("+")
 
 
+@pytest.mark.slow
 def test_a_small_backlash_behind_a_large_delay_is_named_as_the_pair(tmp_path):
     """A 10 ms Pade delay that alone removes nearly all of the gap above the
     model-form floor, and a 0.2 mm backlash with contact stiffness behind it
@@ -194,6 +197,7 @@ def test_an_output_lag_is_not_taken_for_an_amplifier_bandwidth(tmp_path):
     assert d.verdict["status"] in ("explained", "partial")
 
 
+@pytest.mark.slow
 def test_a_mount_behind_friction_is_paired_in_the_form_that_rings(tmp_path):
     """LuGre friction (40 N) with a 27 Hz sensor mount on an 8.5 mm stroke:
     friction alone removes about 95 % of the gap, and the mount leaves a
@@ -212,6 +216,7 @@ def test_a_mount_behind_friction_is_paired_in_the_form_that_rings(tmp_path):
     assert params["sensor_vibration.frequency_Hz"] == pytest.approx(27.0, rel=0.05)
 
 
+@pytest.mark.slow
 def test_a_small_backlash_in_a_stiff_loop_is_named_when_it_leaves_only_the_noise(tmp_path):
     """A 0.14 mm backlash with 6.5 MN/m contact on a 17.8 mm stroke: a gap
     of about 3 x the 0.08 % noise floor, inside 1.5 x the model-form floor

@@ -5,8 +5,6 @@ from __future__ import annotations
 
 import json
 import shutil
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -21,6 +19,7 @@ from sizing.errors import InputError
 from sizing.io.rig import load_rig
 from sizing.sim.signals import nrmse
 
+from ..conftest import run_cli
 from ..documented import missing_fields
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -144,9 +143,8 @@ def test_cli_writes_the_contract(tmp_path):
     # re-calibration is on by default and takes part of the gap
     # before any effect is blamed; the shrink asserted below is against the
     # stated nominal, so this run turns it off
-    proc = subprocess.run([sys.executable, "-m", "sizing.cli", "diagnose", str(PIEZO), "--holdout", "steps",
-                           "--out", str(out), "--no-recalibrate"], capture_output=True, text=True)
-    assert proc.returncode == 0, proc.stderr
+    code, _, err = run_cli("diagnose", PIEZO, "--holdout", "steps", "--out", out, "--no-recalibrate")
+    assert code == 0, err
     data = json.loads((out / "diagnosis.json").read_text())
     assert not missing_fields("diagnosis.json", data)    # every field docs/formats.md documents
     assert set(data["baseline"]["nrmse"]) == {"ramp", "steps"}
@@ -193,11 +191,10 @@ def test_bad_campaigns_exit_2(tmp_path, breakage, args, match):
         text = (camp / "runs/ramp.csv").read_text().replace("voltage_V", "volts", 1)
         (camp / "runs/ramp.csv").write_text(text)
     out = tmp_path / "out"
-    proc = subprocess.run([sys.executable, "-m", "sizing.cli", "diagnose", str(camp), *args, "--out", str(out)],
-                          capture_output=True, text=True)
-    assert proc.returncode == 2
-    assert match in proc.stderr and "Traceback" not in proc.stderr
-    assert len(proc.stderr.strip().splitlines()) == 1
+    code, _, err = run_cli("diagnose", camp, *args, "--out", out)
+    assert code == 2
+    assert match in err and "Traceback" not in err
+    assert len(err.strip().splitlines()) == 1
     assert not out.exists()
 
 

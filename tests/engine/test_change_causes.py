@@ -36,10 +36,11 @@ def test_a_duty_change_is_named_as_the_cause():
 def test_baseline_run_prints_the_cause_first(tmp_path):
     req = tmp_path / "req.toml"
     req.write_text(FAST_REQUIREMENTS)
-    code, _, err = run_cli("solve", req, "--out", tmp_path / "a", "--quiet")
+    code, _, err = run_cli("solve", req, "--out", tmp_path / "a", "--quiet", "--fast")
     assert code == 0, err
     req.write_text(FAST_REQUIREMENTS + "\n[duty]\nstrokes_per_second = 0.1\n")
-    code, out, err = run_cli("solve", req, "--out", tmp_path / "b", "--baseline", tmp_path / "a" / "results.json")
+    code, out, err = run_cli("solve", req, "--out", tmp_path / "b", "--baseline", tmp_path / "a" / "results.json",
+                             "--fast")
     assert code == 0, err
     first = out.strip().splitlines()[0]
     assert first.startswith("what changed: Recommendation "), first
@@ -101,7 +102,8 @@ def test_solve_with_robust_gives_the_probability_of_compliance(tmp_path):
                            tmp_path / "rob", "--quiet")
     assert code == 0, err
     studied = json.loads((tmp_path / "rob" / "robust.json").read_text())["designs"]
-    code, _, err = run_cli("solve", req, "--out", tmp_path / "out", "--robust", tmp_path / "rob" / "robust.json", "--quiet")
+    code, _, err = run_cli("solve", req, "--out", tmp_path / "out", "--robust", tmp_path / "rob" / "robust.json", "--quiet",
+                           "--fast")       # the studied designs' figures are attached with or without flips
     assert code == 0, err
     r = json.loads((tmp_path / "out" / "results.json").read_text())
     by_id = {c["id"]: c for c in r["candidates"]}

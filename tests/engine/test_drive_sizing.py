@@ -84,7 +84,7 @@ def _fast(tmp_path, extra: str) -> tuple:
     req = tmp_path / "req.toml"
     req.write_text(FAST_REQUIREMENTS.replace("max_stacks = 2", "max_stacks = 12") + extra)
     out = tmp_path / "out"
-    return run_cli("solve", req, "--out", out, "--quiet"), out
+    return run_cli("solve", req, "--out", out, "--quiet", "--fast"), out      # verdicts and ranks, no flips
 
 
 def test_an_envelope_rules_designs_out_and_none_is_ranked(tmp_path):

@@ -41,14 +41,15 @@ def test_a_temperature_is_searched_in_degc_within_its_span():
 
 # --- the seed: each flip re-solved on both sides ------------------------------
 @pytest.fixture(scope="module")
-def seed():
+def seed(seed_solve):
+    """The seed's requirements, catalog, load cases and full solve (computed
+    once per test run, conftest)."""
     from sizing.engine.loads import load_cases
-    from sizing.engine.solve import solve
     from sizing.io.catalog import load_catalog
     from sizing.io.requirements import load_requirements
-    req, sha = load_requirements(STUDIES / "seed-requirements.toml")
+    req, _ = load_requirements(STUDIES / "seed-requirements.toml")
     cat = load_catalog(None)
-    return req, cat, [c["load_N"] for c in load_cases(req.load)], solve(req, sha, cat).results
+    return req, cat, [c["load_N"] for c in load_cases(req.load)], seed_solve.results
 
 
 def _feasible(tech, req, cat, loads, field, value) -> bool:

@@ -125,7 +125,7 @@ def test_a_bad_stroke_reference_exits_2_with_one_line(tmp_path):
 
 
 @pytest.mark.slow
-def test_with_the_screws_stiffness_required_the_verdict_names_it():
+def test_with_the_screws_stiffness_required_the_verdict_names_it(seed_solve_fast):
     """The seed's requirements with min_stiffness at the DC screw drive's
     figure: the piezohydraulic verdict says the stiffness decides (its
     output, k / R^2, is some 700 times softer), the DC design meets it, and
@@ -134,7 +134,7 @@ def test_with_the_screws_stiffness_required_the_verdict_names_it():
     from sizing.engine.solve import solve
     from sizing.io.catalog import load_catalog
     req, sha = load_requirements(STUDIES / "seed-requirements.toml")
-    plain = solve(req, sha, load_catalog(), fast=True).results      # verdicts only: no flips
+    plain = seed_solve_fast.results      # verdicts only: no flips (once per test run, conftest)
     techs = plain["summary"]["comparison"]["technologies"]
     by_id = {c["id"]: c for c in plain["candidates"]}
     dc = by_id[techs["dc_motor"]["best"]]

@@ -3,7 +3,6 @@ designs it verifies, the contract's fields, the bound no design beats, the
 agreement of the two models and the three-technology verdict."""
 from __future__ import annotations
 
-import json
 
 import numpy as np
 import pytest
@@ -14,7 +13,7 @@ from sizing.technologies.piezo_pump.record import pump_candidate
 from sizing.io.catalog import load_catalog
 from sizing.io.requirements import load_requirements
 
-from ..conftest import STUDIES, run_cli
+from ..conftest import STUDIES
 
 DESIGN_KEYS = {"pump_frequency", "pump_diameter", "cylinder_diameter", "bias_pressure", "valve", "stack", "n_stacks",
                "voltage", "fluid", "seal", "amplifier"}
@@ -99,16 +98,8 @@ def test_design_frequency_stays_below_the_valve_rating_and_resonance(seed_pumps)
         assert c["design"]["pump_frequency"] <= valve.max_frequency < c["valve_resonance_Hz"]
 
 
-@pytest.fixture(scope="module")
-def seed_solve(tmp_path_factory):
-    out = tmp_path_factory.mktemp("pump") / "o"
-    code, _, err = run_cli("solve", STUDIES / "seed-requirements.toml", "--out", out, "--quiet", "--fast")
-    assert code == 0, err
-    return json.loads((out / "results.json").read_text()), (out / "report.html").read_text()
-
-
-def test_the_solve_ranks_three_technologies_and_states_the_pump_power(seed_solve):
-    r, html = seed_solve
+def test_the_solve_ranks_three_technologies_and_states_the_pump_power(seed_solve_fast):
+    r, html = seed_solve_fast.results, (seed_solve_fast.out / "report.html").read_text()
     techs = r["summary"]["comparison"]["technologies"]
     assert {"piezohydraulic", "dc_motor", "piezo_pump"} <= techs.keys()
     pp = techs["piezo_pump"]

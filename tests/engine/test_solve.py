@@ -209,7 +209,7 @@ def test_small_solve_keeps_every_combination_and_names_reasons(seed_requirements
     # behind a restrictor (time constant minutes to an hour) is credited only with
     # what it takes up within the warm-up: a two-hour warm-up lets it take most.
     req = req.model_copy(update={"duty": DutyTable(strokes_per_second=0.1, warm_up_time=7200.0)})
-    out = solve(req, sha, small_catalog, detail="full")
+    out = solve(req, sha, small_catalog, detail="full", fast=True)     # stages, ranks, reasons: no flips needed
     r = out.results
     piezo = [c for c in r["candidates"] if c["technology"] == "piezohydraulic" and c["variant"] == "uncompensated"]
     pruned = [c for c in piezo if c["stage"] == "pruned"]
@@ -222,7 +222,7 @@ def test_small_solve_keeps_every_combination_and_names_reasons(seed_requirements
     ruled = {c["id"] for c in r["ruled_out"]}
     assert not ruled & {c["id"] for c in r["candidates"]}
     # by default the combinations ruled out before sizing are counted, not recorded
-    brief = solve(req, sha, small_catalog).results
+    brief = solve(req, sha, small_catalog, fast=True).results
     assert not [c for c in brief["candidates"] if c.get("stage") == "pruned"]
     assert sum(brief["summary"]["ruled_out"].values()) >= len(pruned) + len(out_of_it)
     assert all(c["driver"] for c in r["candidates"])
@@ -285,7 +285,8 @@ def _check_bounded_and_valid(r):
     assert not ruled & named
 
 
-def test_seed_solve_end_to_end(tmp_path, seed_requirements):
+@pytest.mark.slow
+def test_seed_solve_end_to_end(seed_solve, seed_requirements, tmp_path):
     """Acceptance: exit 0, three files; every sized
     piezohydraulic candidate carries its force path, thermal budget and seal
     friction; the blocked force is the stack stroke over the summed
@@ -293,9 +294,7 @@ def test_seed_solve_end_to_end(tmp_path, seed_requirements):
     no feasible design has a gap below its stack stroke or more stacks than
     fit; the static figures agree with `sizing evaluate`; the verdict names
     the deciding check."""
-    out = tmp_path / "out"
-    code, stdout, stderr = run_cli("solve", STUDIES / "seed-requirements.toml", "--out", out, "--quiet")
-    assert code == 0, stderr
+    out = seed_solve.out
     # the three files of the contract, plus the catalog snapshot a later
     # --baseline diffs against
     assert {p.name for p in out.iterdir()} == {"results.json", "candidates.csv", "report.html", "catalog", "plotly.min.js"}
@@ -430,10 +429,9 @@ def test_impossible_requirements_exit_0_and_name_the_blocker(tmp_path):
             assert f"blocked by {g['blocking']}" in html
 
 
-def test_baseline_adds_what_changed(tmp_path):
-    out1, out2 = tmp_path / "a", tmp_path / "b"
+def test_baseline_adds_what_changed(tmp_path, seed_solve_fast):
+    out1, out2 = seed_solve_fast.out, tmp_path / "b"
     base = STUDIES / "seed-requirements.toml"
-    assert run_cli("solve", base, "--out", out1, "--quiet", "--fast")[0] == 0
     harder = tmp_path / "harder.toml"
     harder.write_text(base.read_text().replace('"2.5 kN"', '"2.9 kN"'))
     code, _, stderr = run_cli("solve", harder, "--out", out2, "--quiet", "--fast", "--baseline", out1 / "results.json")

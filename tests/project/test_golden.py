@@ -168,7 +168,8 @@ def test_dc_step_response():
     _assert_golden("seed-dc-step")
 
 
-def test_best_design_for_seed_requirements(tmp_path):
+@pytest.mark.slow
+def test_best_design_for_seed_requirements(seed_solve):
     """The best design `sizing solve` finds for studies/seed-requirements.toml,
     per technology (the DC option sized from parts is now ranked
     beside the piezohydraulic one and its best is lighter and cheaper, so the
@@ -178,7 +179,7 @@ def test_best_design_for_seed_requirements(tmp_path):
         pytest.skip("sizing solve is not built yet; record its best design with --update once it is")
     if not goldens:
         pytest.skip("no golden best design recorded yet: run `python -m tests.project.test_golden --update`")
-    results = _solve_results(tmp_path)
+    results = seed_solve.results        # `sizing solve` on the seed requirements, once per test run (conftest)
     groups = {g["variant"]: g.get("blocking") for g in results["summary"]["groups"]}
     failures = []
     for golden in goldens:

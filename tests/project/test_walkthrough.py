@@ -3,7 +3,8 @@ its ``sh`` blocks runs, in order, in a scratch clone of the repository, and
 afterwards ``git status`` is what it was before and everything written lies
 in a folder the README names as an output (``*-out/``, git-ignored).
 
-Long commands run in cheap variants (fewer samples, fewer grid points);
+Long commands run in cheap variants (fewer samples, fewer grid points,
+solves with ``--fast``, fits from one start);
 commands whose inputs are the reader's own (``my-catalogs/``, a vendor
 sheet, the makers' tables) and ``diagnose --check`` (minutes, prints only)
 are left out, each with its reason below. Slow: a few minutes of solves and
@@ -30,7 +31,11 @@ NOT_RUN = {"my-catalogs/": "the reader's own catalog folder", "old-catalogs/": "
 # (pattern, replacement): the same command, cheaper
 CHEAPER = [(r"--samples \d+ --designs \d+", "--samples 2 --designs 1 --workers 0"),
            (r"(--vary \S+):\d+", r"\1:2 --workers 0"),
-           (r"^python3 -m venv .*&& \.venv/bin/(sizing .*)$", r"\1")]
+           (r"^python3 -m venv .*&& \.venv/bin/(sizing .*)$", r"\1"),
+           # the checkout's cleanliness does not depend on the flips or the
+           # probability of compliance (tests/engine/test_solve.py checks them)
+           (r"\bsizing solve ", "sizing solve --fast "),
+           (r"\bsizing fit (\S+) ", r"sizing fit \1 --starts 1 ")]
 
 
 def _blocks(readme: str) -> list[str]:

@@ -86,16 +86,20 @@ def design_ids(*documents) -> set[str]:
     return ids
 
 
+# every command run once, the seed's full solve among them: the slow tier
+pytestmark = pytest.mark.slow
+
+
 @pytest.fixture(scope="module")
-def outputs(tmp_path_factory):
-    """(name, terminal text, pages) of every command, and the design ids they could leak."""
+def outputs(tmp_path_factory, seed_solve):
+    """(name, terminal text, pages) of every command, and the design ids they
+    could leak. The seed's solve is the one run once per test run (conftest)."""
     tmp = tmp_path_factory.mktemp("readable")
     req = tmp / "req.toml"
     req.write_text(FAST_REQUIREMENTS.replace("max_stacks = 2", "max_stacks = 12").replace("max_simulated = 2", "max_simulated = 4"))
     bipolar = STUDIES / "piezo-bipolar" / "runs"
     dc = STUDIES / "campaigns" / "dc-motor"
     commands = {
-        "solve": (["solve", STUDIES / "seed-requirements.toml", "--out", tmp / "solve"], [tmp / "solve" / "report.html"]),
         "evaluate table 2": (["evaluate", STUDIES / "seed-table2-full-scale.toml"], []),
         "evaluate dc": (["evaluate", STUDIES / "seed-dc-step.toml"], []),
         "robust": (["robust", req, "--samples", "2", "--designs", "1", "--workers", "0", "--out", tmp / "robust"],
@@ -110,12 +114,12 @@ def outputs(tmp_path_factory):
         "catalog show": (["catalog", "show", "pi-p-056.90"], []),
         "catalog show motor": (["catalog", "show", "allied-mf0127008-48v"], []),
     }
-    runs = {}
+    runs = {"solve": (seed_solve.terminal, [seed_solve.out / "report.html"])}
     for name, (args, pages) in commands.items():
         code, out, err = run_cli(*args)
         assert code == 0, (name, err)
         runs[name] = (out + err, pages)
-    written = [json.loads(p.read_text()) for p in (tmp / "solve" / "results.json", tmp / "robust" / "robust.json",
+    written = [json.loads(p.read_text()) for p in (seed_solve.out / "results.json", tmp / "robust" / "robust.json",
                                                    tmp / "sweep" / "sweep.json")]
     return runs, design_ids(*written)
 

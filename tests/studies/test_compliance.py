@@ -18,9 +18,9 @@ REPO = Path(__file__).resolve().parents[2]
 SEED = REPO / "studies" / "seed-requirements.toml"
 
 
-@pytest.fixture(scope="module")
-def seed_solve():
-    return api.run_solve(SEED)
+# seed_solve: the seed's full solve, once per test run (conftest); every
+# test here checks figures of the probability of compliance: the slow tier
+pytestmark = pytest.mark.slow
 
 
 def _within_wider(a: dict, b: dict) -> bool:
@@ -79,14 +79,13 @@ def test_policy_picks_a_heavier_design_that_complies(seed_solve, tmp_path):
 def test_report_and_terminal_flag_knife_edges(seed_solve):
     """The seed's nominal answer binds on temperature at +0.0 %: the terminal
     line and the report's answer section both name it, with the probability."""
-    from sizing.report.html import render
     from sizing.report.text import knife_edge_text
     comp = seed_solve.results["summary"]["comparison"]
     rec = comp["recommended"]
     assert "temperature" in rec["knife_edges"]
     line = knife_edge_text(comp)
     assert line.startswith("knife edges") and rec["name"] in line and "temperature +0.00%" in line
-    page = render(seed_solve.results, seed_solve.traces)
+    page = (seed_solve.out / "report.html").read_text()
     assert "knife edge" in page and f"of {rec['compliance']['samples']} samples under tolerance" in page
 
 

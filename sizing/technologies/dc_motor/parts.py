@@ -49,7 +49,7 @@ from ...physics import screw as screw_phys
 from . import structure as dc_structure
 
 # Assumed construction (README, DC sizing): stated here, used everywhere.
-TRAVEL_FACTOR = 1.10          # designed travel over the required stroke: 10 % for end stops and rigging (assumed)
+from ...settings import TRAVEL_FACTOR  # noqa: E402  designed travel over the required stroke (assumed, sizing/settings.py)
 SCREW_EXTRA_LENGTH = 0.05     # m: nut, bearings and end stop beyond the travel (assumed)
 ASSEMBLY_USD = 600.0          # assumed: machining and assembly of housing and bearing block
 REQUIRED_LIFE_H = 200.0       # assumed: ground test, qualification and flights of a glide body

@@ -48,11 +48,7 @@ LINE_VELOCITY = 5.0
 LINE_MIN_DIAMETER = 0.004
 DIRECTION_VALVE_MASS = 0.35    # kg, assumed: a pair of solenoid poppets switching the cylinder's sides
 DIRECTION_VALVE_COST = 600.0   # USD, assumed
-RESONANCE_FRACTION = 0.4       # the pumping frequency stays below this x the output's natural frequency
-# the valves' drop at the peak delivery flow stays below this x the stall
-# pressure: then the chamber returns it within the cycle (the quasi-static
-# model's premise, checked by the simulation)
-VALVE_DROP_FRACTION = 0.2
+from ...settings import RESONANCE_FRACTION, VALVE_DROP_FRACTION  # noqa: E402  the screen's thresholds (sizing/settings.py)
 # assumed: a reed's damping in oil (viscous and squeeze film against its
 # seat), a fraction of critical; no maker states one for these reeds
 REED_DAMPING_RATIO = 0.15

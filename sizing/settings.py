@@ -20,7 +20,7 @@ MIN_COMPLIANCE = 0.9            # [objectives] min_compliance: probability of co
 # --- sizing --------------------------------------------------------------------
 TRAVEL_FACTOR = 1.10            # a DC screw's designed travel over the required stroke (end stops, rigging)
 
-# --- screens (piezo pump) ------------------------------------------------------
+# --- screens (the pump technology's) ------------------------------------------------------
 RESONANCE_FRACTION = 0.4        # the pumping frequency stays below this x the output's natural frequency
 VALVE_DROP_FRACTION = 0.2       # the valves' drop at peak delivery flow stays below this x the stall pressure
 

@@ -87,8 +87,8 @@ def run_robust(requirements_path, catalog_dir=None, samples: int = 1000, seed: i
         raise InputError(None, "--samples", f"expected at least 1 sample, got {samples}")
     if designs < 1:
         raise InputError(None, "--designs", f"expected at least 1 design, got {designs}")
-    from ..technologies.registry import technologies
-    one_of(technology, (None, *(t.name for t in technologies())), "--technology")
+    from ..technologies.registry import names
+    one_of(technology, (None, *names()), "--technology")
     req, sha = load_requirements(requirements_path)
     cat = load_catalog(catalog_dir)
     extra = None

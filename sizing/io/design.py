@@ -91,7 +91,7 @@ class PiezoDesignFile(Strict):
 class DCDesignFile(Strict):
     """A catalog actuator (``actuator``), or a design from parts (``motor``,
     ``screw``, ``drive``, optional ``gear``) as ``sizing solve`` writes it:
-    its controller follows from ``speed`` (the rule of technologies/dc_motor/controller),
+    its controller follows from ``speed`` (the controller rule of its technology folder),
     its winding temperature from ``strokes_per_second``, its drive's
     ambient from ``amplifier_location``."""
     technology: Literal["dc_motor"]

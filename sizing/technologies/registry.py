@@ -103,6 +103,16 @@ def technologies() -> tuple[Technology, ...]:
     return tuple(sorted(_REGISTERED.values(), key=lambda t: (t.order, t.name)))
 
 
+def names() -> tuple[str, ...]:
+    """Every technology's name without importing any (a folder's name is its
+    technology's): an option can be checked before the engine loads."""
+    if _FOUND:
+        return tuple(t.name for t in technologies())
+    package = importlib.import_module(__package__)
+    return tuple(sorted({info.name for info in pkgutil.iter_modules(package.__path__) if info.ispkg}
+                        | set(_REGISTERED)))
+
+
 def get(name: str) -> Technology | None:
     _find()
     return _REGISTERED.get(name)

@@ -38,3 +38,15 @@ def test_a_registered_technology_replaces_one_of_its_name_and_goes():
     finally:
         registry.register(dc)
     assert registry.label("dc_motor") == "DC motor"
+
+
+def test_the_names_without_importing_are_the_registered_names():
+    """``names()`` reads the folders (an option checked before the engine
+    loads); each folder's technology carries the folder's name."""
+    import subprocess
+    import sys
+    code = ("from sizing.technologies import registry; n = registry.names(); import sys; "
+            "print(sorted(n), 'cvxpy' in sys.modules)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    from sizing.technologies.registry import technologies
+    assert out.strip() == f"{sorted(t.name for t in technologies())} False"

@@ -40,9 +40,9 @@ def _fits(leak_blocks: float, mount_blocks: float, slew_blocks: float):
 def test_a_partner_must_remove_more_than_other_partners_take_of_the_single_form_error(levels, chosen):
     """Energy removed beyond the single: leakage 40 x (4 - l); the median
     of the other partners 40 x (4 - median of the others); the pair is
-    taken when its removal exceeds (1 + FORM_MARGIN) = 2 x that median:
+    taken when its removal exceeds (1 + ``form_margin``) = 2 x that median:
     1.5 against 2 x 1.15 refuses it (though it removes 37 % of what the
-    single leaves, above PAIR_GAIN), 3.0 against 2 x 0.35 keeps it."""
+    single leaves, above ``pair_gain``), 3.0 against 2 x 0.35 keeps it."""
     single, pairs = _fits(*levels)
     fits = sorted(pairs + [single], key=lambda f: f.nrmse_holdout)
     assert judge.beyond_form(fits, pairs[0], single) is (chosen != "no_return")

@@ -4,7 +4,8 @@ it is at most "partial" (sizing/diagnose/judge.py)."""
 import numpy as np
 import pytest
 
-from sizing.diagnose import judge, spectrum
+from sizing import spectrum
+from sizing.diagnose import judge
 from sizing.diagnose.floor import total_floor
 from sizing.diagnose.effects import get, library
 from sizing.diagnose.fitting import EffectFit

@@ -84,7 +84,7 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
               form_floor: float | None = None, settings: Settings = DEFAULT):
     """Screen, fit and rank every effect. Returns (fits sorted best first,
     verdict dict)."""
-    effects = [e for e in library(bench.kind) if e.applicable(bench.rig, bench.model)]
+    effects = [e.for_rig(bench.rig, bench.model) for e in library(bench.kind) if e.applicable(bench.rig, bench.model)]
     base_train = float(np.sqrt(np.mean(fitting.run_nrmse(
         bench, [y[None] for y in (bench.nominal_channels()[i] for i in bench.train)], bench.train) ** 2)))
     # the re-calibrated parameters: re-fitted with every effect, screened

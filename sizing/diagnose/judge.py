@@ -125,12 +125,13 @@ def explained(base: float, after: float, floor: float) -> float:
     return float(1.0 - max(after ** 2 - floor ** 2, 0.0) / excess)
 
 
-def pick(fits, seed: int = 0, floor: float = 0.0, settings: Settings = DEFAULT):
+def pick(fits, seed: int = 0, floor: float = 0.0, settings: Settings = DEFAULT, noise: float | None = None):
     """The candidate the verdict judges: the best fitted candidate, except
     that a pair is taken only when it is significantly better on the
     holdout (block bootstrap) than the best single of its two effects,
     removes at least ``pair_gain`` of the gap energy that single leaves above
-    the floor, fits the training runs at least as well as it and names a
+    the floor when the single leaves a gap (``leaves_a_gap``), or most of
+    a spectral line it leaves (``removes_what_is_left``), fits the training runs at least as well as it and names a
     partner no other family replaces (``partner_identified``) and that
     removes more than the other partners of that single take of its form
     error (``beyond_form``); otherwise that single is (parsimony). The pair holds
@@ -138,7 +139,10 @@ def pick(fits, seed: int = 0, floor: float = 0.0, settings: Settings = DEFAULT):
     runs worse is a fit stuck short of its optimum, and its better holdout
     is chance or form error taken up elsewhere. A candidate only screened,
     not fitted (not promising on the training runs), is never taken,
-    whatever its holdout: its holdout rank is chance."""
+    whatever its holdout: its holdout rank is chance. A pair that leaves
+    no more than ``noise_match`` x the ``noise`` floor on the holdout runs
+    is judged against the noise floor alone (``noise_matched``: the
+    campaign then shows no model-form error to allow for)."""
     fitted = [f for f in fits if f.message != "screened only"]
     if not fitted:
         return None
@@ -149,14 +153,29 @@ def pick(fits, seed: int = 0, floor: float = 0.0, settings: Settings = DEFAULT):
     singles = [f for f in fitted if len(f.named) == 1 and f.named[0].name in names]
     if singles:
         single = singles[0]
+        if noise is not None and best.nrmse_holdout <= settings.noise_match * noise:
+            floor = noise
         gain = explained(single.nrmse_holdout, best.nrmse_holdout, floor)
-        earned = gain >= settings.pair_gain or removes_what_is_left(single, best, settings)
+        earned = ((gain >= settings.pair_gain and leaves_a_gap(single, floor, settings))
+                  or removes_what_is_left(single, best, settings))
         if (separation_p(best.residual_blocks, single.residual_blocks, seed) >= settings.alpha or not earned
                 or best.nrmse_train > single.nrmse_train
                 or not partner_identified(fits, best, single, seed, settings)
                 or not beyond_form(fits, best, single, settings)):
             return single
     return best
+
+
+def leaves_a_gap(single, floor: float, settings: Settings = DEFAULT) -> bool:
+    """Whether the single leaves a gap on the holdout runs: more than
+    ``gap_factor`` x the floor (noise and model form), the rule by which
+    the baseline is a gap at all. What a single leaves within that band is
+    what a nominal of another form leaves, and a partner fitted to it takes
+    up the single's form error (a leak behind a slew limit that already
+    left 1.3 x the floor); only a spectral line the single leaves
+    (``removes_what_is_left``), which the broadband floor does not cover,
+    can still earn a partner there."""
+    return single.nrmse_holdout > settings.gap_factor * floor
 
 
 def removes_what_is_left(single, pair, settings: Settings = DEFAULT) -> bool:
@@ -326,7 +345,7 @@ def evidence(baseline: float, noise: float, fits, baseline_blocks=None, seed: in
              settings: Settings = DEFAULT) -> Evidence:
     """The evidence of the rules (Evidence) from the verdict's inputs."""
     floor = total_floor(noise, form_floor, settings)
-    best = pick(fits, seed, floor, settings)
+    best = pick(fits, seed, floor, settings, noise=noise)
     ev = Evidence(baseline, noise, floor, settings, total=floor, best=best, run_length=run_length,
                   narrowband=narrowband_gap(line, best, baseline_blocks, seed, settings))
     if best is None:
@@ -522,7 +541,7 @@ def channel_evidence(fits, c: str, channels: dict, seed: int = 0, settings: Sett
     ranked = sorted((ChannelView(f, c) for f in fits if c in getattr(f, "channel_blocks", {})
                      and c in getattr(f, "nrmse_channels", {})), key=lambda f: f.nrmse_holdout)
     total = float(np.hypot(ch["noise"], ch["form"]))
-    best = pick(ranked, seed, total, settings)
+    best = pick(ranked, seed, total, settings, noise=ch["noise"])
     if best is None or ch["baseline"] <= 0:
         return None
     second = runner_up(ranked, best)

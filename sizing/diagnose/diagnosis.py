@@ -155,7 +155,8 @@ def diagnose_runs(kind: str, rig, runs, holdout: list[str], recalibrate: list[st
     fits = attribution.attribute(bench, base_ho, floor_ho, seed=seed, pairs=pairs, form_floor=form_ho, settings=settings)
     base_blocks = judge.block_energy(bench, [nominal[i] for i in bench.holdout], bench.holdout, settings=settings)
     shortest = min((float(bench.runs[i].t[-1] - bench.runs[i].t[0]) for i in bench.train), default=None)
-    chosen = judge.pick(fits, seed, total_floor(floor_ho, form_ho, settings), settings, noise=floor_ho)
+    chosen = judge.pick(fits, seed, total_floor(floor_ho, form_ho, settings), settings, noise=floor_ho,
+                        channels=channels)
     best_sim = [y[0] for y in bench.simulate_channels(chosen.effects, chosen.z[None, :])] if chosen else None
     line = judge.gap_lines(bench, [nominal[i][0] for i in bench.holdout],
                               None if best_sim is None else [best_sim[i][0] for i in bench.holdout])

@@ -125,12 +125,14 @@ def explained(base: float, after: float, floor: float) -> float:
     return float(1.0 - max(after ** 2 - floor ** 2, 0.0) / excess)
 
 
-def pick(fits, seed: int = 0, floor: float = 0.0, settings: Settings = DEFAULT, noise: float | None = None):
+def pick(fits, seed: int = 0, floor: float = 0.0, settings: Settings = DEFAULT, noise: float | None = None,
+         channels: dict | None = None):
     """The candidate the verdict judges: the best fitted candidate, except
     that a pair is taken only when it is significantly better on the
     holdout (block bootstrap) than the best single of its two effects,
     removes at least ``pair_gain`` of the gap energy that single leaves above
-    the floor when the single leaves a gap (``leaves_a_gap``), or most of
+    the floor when the single leaves a gap (``leaves_a_gap``: on the
+    combined measure or on one of the logged ``channels``), or most of
     a spectral line it leaves (``removes_what_is_left``), fits the training runs at least as well as it and names a
     partner no other family replaces (``partner_identified``) and that
     removes more than the other partners of that single take of its form
@@ -156,7 +158,7 @@ def pick(fits, seed: int = 0, floor: float = 0.0, settings: Settings = DEFAULT, 
         if noise is not None and best.nrmse_holdout <= settings.noise_match * noise:
             floor = noise
         gain = explained(single.nrmse_holdout, best.nrmse_holdout, floor)
-        earned = ((gain >= settings.pair_gain and leaves_a_gap(single, floor, settings))
+        earned = ((gain >= settings.pair_gain and leaves_a_gap(single, floor, settings, channels))
                   or removes_what_is_left(single, best, settings))
         if (separation_p(best.residual_blocks, single.residual_blocks, seed) >= settings.alpha or not earned
                 or best.nrmse_train > single.nrmse_train
@@ -166,16 +168,24 @@ def pick(fits, seed: int = 0, floor: float = 0.0, settings: Settings = DEFAULT, 
     return best
 
 
-def leaves_a_gap(single, floor: float, settings: Settings = DEFAULT) -> bool:
+def leaves_a_gap(single, floor: float, settings: Settings = DEFAULT, channels: dict | None = None) -> bool:
     """Whether the single leaves a gap on the holdout runs: more than
     ``gap_factor`` x the floor (noise and model form), the rule by which
-    the baseline is a gap at all. What a single leaves within that band is
+    the baseline is a gap at all, on the combined measure or on one logged
+    channel against that channel's floors (``channels``: {channel: {"noise",
+    "form"}}; a sensor mount behind a friction rings in the position, which
+    the current, already at its floor, dilutes in the combined measure: the
+    friction left 1.4 x the combined floor and 1.9 x the position's). What
+    a single leaves within that band is
     what a nominal of another form leaves, and a partner fitted to it takes
     up the single's form error (a leak behind a slew limit that already
     left 1.3 x the floor); only a spectral line the single leaves
     (``removes_what_is_left``), which the broadband floor does not cover,
     can still earn a partner there."""
-    return single.nrmse_holdout > settings.gap_factor * floor
+    if single.nrmse_holdout > settings.gap_factor * floor:
+        return True
+    return any(single.nrmse_channels.get(c, 0.0) > settings.gap_factor * float(np.hypot(ch["noise"], ch["form"]))
+               for c, ch in (channels or {}).items())
 
 
 def removes_what_is_left(single, pair, settings: Settings = DEFAULT) -> bool:
@@ -342,10 +352,10 @@ class Evidence:
 
 def evidence(baseline: float, noise: float, fits, baseline_blocks=None, seed: int = 0,
              run_length: float | None = None, line: dict | None = None, form_floor: float | None = None,
-             settings: Settings = DEFAULT) -> Evidence:
+             settings: Settings = DEFAULT, channels: dict | None = None) -> Evidence:
     """The evidence of the rules (Evidence) from the verdict's inputs."""
     floor = total_floor(noise, form_floor, settings)
-    best = pick(fits, seed, floor, settings, noise=noise)
+    best = pick(fits, seed, floor, settings, noise=noise, channels=channels)
     ev = Evidence(baseline, noise, floor, settings, total=floor, best=best, run_length=run_length,
                   narrowband=narrowband_gap(line, best, baseline_blocks, seed, settings))
     if best is None:
@@ -502,7 +512,7 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
     combined measure (None: the prior); ``channels``: {channel:
     {"baseline", "noise", "form", "blocks"}}."""
     ev = evidence(baseline_holdout, floor_holdout, fits, baseline_blocks, seed, run_length, line, form_floor,
-                  settings)
+                  settings, channels)
     out = next(v for v in (rule(ev) for rule in RULES) if v is not None)
     if not channels or len(channels) < 2 or out.status == "explained":
         return out
@@ -541,7 +551,7 @@ def channel_evidence(fits, c: str, channels: dict, seed: int = 0, settings: Sett
     ranked = sorted((ChannelView(f, c) for f in fits if c in getattr(f, "channel_blocks", {})
                      and c in getattr(f, "nrmse_channels", {})), key=lambda f: f.nrmse_holdout)
     total = float(np.hypot(ch["noise"], ch["form"]))
-    best = pick(ranked, seed, total, settings, noise=ch["noise"])
+    best = pick(ranked, seed, total, settings, noise=ch["noise"], channels=channels)
     if best is None or ch["baseline"] <= 0:
         return None
     second = runner_up(ranked, best)

@@ -112,3 +112,18 @@ def test_a_pair_that_leaves_only_the_noise_is_judged_against_the_noise(noise, ch
     noise floor the single leaves 7.5 x it and the pair removes all of it."""
     single, pair = _slew_and_leak(0.00194, 0.00023)
     assert judge.pick([pair, single], floor=total_floor(0.00026), noise=noise).name == chosen
+
+
+def test_a_gap_left_on_one_channel_is_a_gap():
+    """A friction that leaves 0.00305 on the combined measure (1.4 x its
+    floor 0.00216) leaves 0.0042 on the position, 1.9 x the position's
+    floor sqrt(0.00082^2 + 0.002^2): a partner may be sought there (a
+    sensor mount rings in the position; the current, at its floor, dilutes
+    it in the combined measure)."""
+    friction = get("dc_motor", "coulomb_friction")
+    single = EffectFit((friction,), friction.unit({"coulomb_friction_N": 40.0}), 0.0024, nrmse_holdout=0.00305,
+                       nrmse_channels={"position_m": 0.0042, "current_A": 0.00111})
+    channels = {"position_m": {"noise": 0.00082, "form": 0.002}, "current_A": {"noise": 0.00089, "form": 0.00081}}
+    assert not judge.leaves_a_gap(single, 0.00216)
+    assert judge.leaves_a_gap(single, 0.00216, channels=channels)
+    assert not judge.leaves_a_gap(single, 0.00216, channels={"current_A": channels["current_A"]})

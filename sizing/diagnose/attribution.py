@@ -9,7 +9,7 @@ floor.py:
    training runs.
 2. Fit the promising effects (least squares on the training runs, from the
    best screened point): the best-screened form of each of the ``top_fit`` best
-   families, and any form that screens at < 0.9 x the baseline; judge every
+   families, and any form that screens at < ``fit_below`` x the baseline; judge every
    effect on the holdout runs only.
 3. Pairs: unless the best single explains the gap and leaves at most
    ``residual_factor`` x the noise floor on the holdout, the best pairs of the
@@ -108,7 +108,7 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
         family_rank.setdefault(effect.name, (len(family_rank), effect))
     for effect, z0, score, start in screened:
         rank, first_form = family_rank[effect.name]
-        promising = (rank < DEFAULT.top_fit and effect is first_form) or score < 0.9 * base_train
+        promising = (rank < DEFAULT.top_fit and effect is first_form) or score < DEFAULT.fit_below * base_train
         if promising:
             f = fit_with([effect], z0, start)
         else:

@@ -37,6 +37,7 @@ class Settings:
     n_screen: int = 10             # screened parameter sets per effect parameter...
     min_screen: int = 30           # ... and at least this many
     top_fit: int = 4               # families fitted at least (the best-screened form of each)
+    fit_below: float = 0.9         # ... and any form that screens below this x the training baseline
     top_pairs: int = 3             # fitted families combined into pairs
     step_pairs: int = 2            # families screened as the second effect given the best single
     fd_step: float = 0.01          # forward-difference step of the Jacobian, unit coordinates

@@ -4,20 +4,20 @@ The candidates of the verdict (judge.py), judged against the floor of
 floor.py:
 
 1. Screen: every effect of the library at its two realistic sizes and a
-   seeded Latin-hypercube of parameter sets (N_SCREEN per parameter, at
-   least MIN_SCREEN), one simulator batch per effect, scored on the
+   seeded Latin-hypercube of parameter sets (``n_screen`` per parameter, at
+   least ``min_screen``), one simulator batch per effect, scored on the
    training runs.
 2. Fit the promising effects (least squares on the training runs, from the
-   best screened point): the best-screened form of each of the TOP_FIT best
-   families, and any form that screens at < 0.9 x the baseline; judge every
+   best screened point): the best-screened form of each of the ``top_fit`` best
+   families, and any form that screens at < ``fit_below`` x the baseline; judge every
    effect on the holdout runs only.
 3. Pairs: unless the best single explains the gap and leaves at most
-   RESIDUAL_FACTOR x the noise floor on the holdout, the best pairs of the
-   top fitted singles (TOP_PAIRS families; a single only screened, not
+   ``residual_factor`` x the noise floor on the holdout, the best pairs of the
+   top fitted singles (``top_pairs`` families; a single only screened, not
    promising on the training runs, is not paired) are fitted together,
    and the best single with the next family; a pair ranks first only when it is
    significantly better than the best of its two singles (same bootstrap)
-   and removes >= PAIR_GAIN of the gap energy that single leaves above the floor.
+   and removes >= ``pair_gain`` of the gap energy that single leaves above the floor.
 """
 from __future__ import annotations
 
@@ -25,18 +25,13 @@ import itertools
 
 import numpy as np
 
-from . import fitting, spectrum
+from .. import spectrum
+from . import fitting
 from .effects import library
 from .floor import total_floor
 from .judge import block_energy, explained
 from .settings import DEFAULT, Settings
 
-N_SCREEN = 10          # screened parameter sets per effect parameter
-MIN_SCREEN = 30        # and at least this many: a one-parameter effect's valley can be narrow (a
-                       # 4.5 A current limit behind an unmodelled delay: 0.035, 0.0195, 0.024 at 3, 4,
-                       # 5 A), and ten points over 0.05-20 A (a factor 1.8 apart) missed it
-TOP_FIT = 4            # effects fitted at least
-TOP_PAIRS = 3          # singles combined into pairs
 
 
 def _lhs(n: int, d: int, seed: int) -> np.ndarray:
@@ -57,7 +52,7 @@ def screen(bench, effect, seed: int = 0, head=(), z_heads=(np.zeros(0),)) -> tup
         return np.zeros(0), float(np.sqrt(scores[k])), z_heads[k]
     sizes = [effect.unit(s) for s in effect.sizes_for(bench.rig, bench.model) if s]
     sizes += list(effect.starts(bench, head, z_heads[0]))   # from the data (e.g. residual spectrum lines)
-    n = max(N_SCREEN * d, MIN_SCREEN) * (4 if effect.post else 1)
+    n = max(DEFAULT.n_screen * d, DEFAULT.min_screen) * (4 if effect.post else 1)
     Z = np.vstack(sizes + [_lhs(n, d, seed)]) if sizes else _lhs(n, d, seed)
     Z = np.clip(Z, 0.0, 1.0)
     best = None
@@ -89,7 +84,7 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
               form_floor: float | None = None, settings: Settings = DEFAULT):
     """Screen, fit and rank every effect. Returns (fits sorted best first,
     verdict dict)."""
-    effects = [e for e in library(bench.kind) if e.applicable(bench.rig, bench.model)]
+    effects = [e.for_rig(bench.rig, bench.model) for e in library(bench.kind) if e.applicable(bench.rig, bench.model)]
     base_train = float(np.sqrt(np.mean(fitting.run_nrmse(
         bench, [y[None] for y in (bench.nominal_channels()[i] for i in bench.train)], bench.train) ** 2)))
     # the re-calibrated parameters: re-fitted with every effect, screened
@@ -105,15 +100,15 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
     def fit_with(effects, z, start=z_head):
         return fitting.fit(bench, head + tuple(effects), np.concatenate([start, z]), bench.train)
 
-    # TOP_FIT counts families: the best-screened form of each of the top
-    # TOP_FIT families is fitted (so a family with several forms does not
+    # ``top_fit`` counts families: the best-screened form of each of the top
+    # ``top_fit`` families is fitted (so a family with several forms does not
     # push another family out), and any form that screens well on its own
     family_rank = {}
     for effect, *_ in screened:
         family_rank.setdefault(effect.name, (len(family_rank), effect))
     for effect, z0, score, start in screened:
         rank, first_form = family_rank[effect.name]
-        promising = (rank < TOP_FIT and effect is first_form) or score < 0.9 * base_train
+        promising = (rank < DEFAULT.top_fit and effect is first_form) or score < DEFAULT.fit_below * base_train
         if promising:
             f = fit_with([effect], z0, start)
         else:
@@ -123,7 +118,7 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
     fits.sort(key=lambda f: f.nrmse_holdout)
     best = fits[0]
     # pairs are tried unless the best single explains the gap and leaves at
-    # most RESIDUAL_FACTOR x the *noise* floor: a single that explains most
+    # most ``residual_factor`` x the *noise* floor: a single that explains most
     # of the gap above the model-form floor too may still leave a second
     # effect's gap well above the noise (a 12 ms delay over a 0.2 mm
     # backlash left 4.9 x the noise; the piezo singles that explain their
@@ -140,10 +135,10 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
         for f in fits:
             if f.message == "screened only":
                 continue                                  # not promising on the training runs: not paired
-            if len(tops) < TOP_PAIRS + 1 and f.name not in {t.name for t in tops}:
+            if len(tops) < DEFAULT.top_pairs + 1 and f.name not in {t.name for t in tops}:
                 tops.append(f)
-        # every pair of the top TOP_PAIRS families, and the best single with the next family
-        combos = list(itertools.combinations(tops[:TOP_PAIRS], 2)) + [(tops[0], t) for t in tops[TOP_PAIRS:]]
+        # every pair of the top ``top_pairs`` families, and the best single with the next family
+        combos = list(itertools.combinations(tops[:DEFAULT.top_pairs], 2)) + [(tops[0], t) for t in tops[DEFAULT.top_pairs:]]
         for a, b in combos:
             ea, eb = a.named, b.named
             if {e.name for e in ea} & {e.name for e in eb}:
@@ -175,17 +170,14 @@ def _model_first(ea, eb, za, zb):
     return ea, eb, za, zb
 
 
-STEP_PAIRS = 2   # families fitted as the second effect of a pair from a screen given the best single
-
-
 def stepwise_pairs(bench, best, effects, seed: int, fits):
     """Forward selection's second step: every other family screened with the
     best single held at its fit, and the best-screened form of each of the
-    best STEP_PAIRS families (forms not yet paired with it) returned as
+    best ``step_pairs`` families (forms not yet paired with it) returned as
     (effects a, effects b, z a, z b) pair starts, model effects first. A
     dominant effect masks a second one in the screen against the nominal
     (a 12 ms delay over a seal, or over a leak: the second family ranked
-    below the top TOP_PAIRS and was never paired); given the dominant one,
+    below the top ``top_pairs`` and was never paired); given the dominant one,
     the second is screened on what it leaves."""
     lead = tuple(best.effects)                            # with the re-calibrated parameters it was fitted with
     # a pair of forms already fitted is not fitted again; another form of
@@ -205,7 +197,7 @@ def stepwise_pairs(bench, best, effects, seed: int, fits):
             continue                                      # the best-screened form of each family
         families.add(name)
         out.append(_model_first(best.named, (effect,), _named_z(best), z0))
-        if len(out) == STEP_PAIRS:
+        if len(out) == DEFAULT.step_pairs:
             break
     return out
 

@@ -96,7 +96,7 @@ def check_runs(kind: str, rig, inputs: dict, holdout: list[str], noise: Noise, n
     model = Bench(kind, rig, [Run(n, None, t, {("voltage_V" if kind == "piezohydraulic" else "reference_m"): u,
                                                 "position_m": np.zeros(len(t))}) for n, (t, u) in inputs.items()],
                   []).model
-    effects = [e for e in library(kind) if e.applicable(rig, model)]
+    effects = [e.for_rig(rig, model) for e in library(kind) if e.applicable(rig, model)]
     labels = list(dict.fromkeys(e.name for e in effects)) + [NONE]   # a family once, whatever its forms
     cases = []
     jobs = [(e, k) for e in effects for k in range(len(e.sizes_for(rig, model)) if e.params else 1)]

@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import InputError
-from . import attribution, judge, spectrum, where
+from . import attribution, judge, where
 from .floor import form_floor, noise_floor, total_floor
 from .bench import Bench
 from .effects import library
@@ -20,7 +20,6 @@ from .recalibrate import DEFAULT, nuisance, recalibrate as recalibrate_model
 from .settings import DEFAULT as DEFAULT_SETTINGS, Settings
 from .verdict import Verdict
 
-MIN_PERIODS = 1.0   # a run lasts at least this many times the longest effect time constant
 
 
 @dataclass
@@ -91,7 +90,7 @@ def check_runs(kind: str, bench: Bench, runs) -> None:
             longest, which = tau, effect.name
     for run, r in zip(runs, bench.runs):
         duration = float(r.t[-1] - r.t[0])
-        if duration < MIN_PERIODS * longest:
+        if duration < DEFAULT_SETTINGS.min_periods * longest:
             name = str(run.path) if getattr(run, "path", None) else run.name
             raise InputError(name, "time_s", f"the run lasts {duration:.3g} s, shorter than the longest effect "
                              f"time constant {longest:.3g} s ({which}); record longer runs")
@@ -156,9 +155,10 @@ def diagnose_runs(kind: str, rig, runs, holdout: list[str], recalibrate: list[st
     fits = attribution.attribute(bench, base_ho, floor_ho, seed=seed, pairs=pairs, form_floor=form_ho, settings=settings)
     base_blocks = judge.block_energy(bench, [nominal[i] for i in bench.holdout], bench.holdout, settings=settings)
     shortest = min((float(bench.runs[i].t[-1] - bench.runs[i].t[0]) for i in bench.train), default=None)
-    chosen = judge.pick(fits, seed, total_floor(floor_ho, form_ho, settings), settings)
+    chosen = judge.pick(fits, seed, total_floor(floor_ho, form_ho, settings), settings, noise=floor_ho,
+                        channels=channels)
     best_sim = [y[0] for y in bench.simulate_channels(chosen.effects, chosen.z[None, :])] if chosen else None
-    line = spectrum.gap_lines(bench, [nominal[i][0] for i in bench.holdout],
+    line = judge.gap_lines(bench, [nominal[i][0] for i in bench.holdout],
                               None if best_sim is None else [best_sim[i][0] for i in bench.holdout])
     inputs = dict(baseline_holdout=base_ho, floor_holdout=floor_ho, fits=fits, baseline_blocks=base_blocks,
                   seed=seed, run_length=shortest, line=line, form_floor=form_ho, channels=channels)

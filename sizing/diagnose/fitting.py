@@ -6,7 +6,7 @@ residual of a run is (measured - simulated) / (span sqrt(n)), so the cost
 is the sum over runs of NRMSE^2 (docs/formats.md; the combined measure of bench.py when
 the runs log the current too). The Jacobian is a forward
 difference computed as one batch of the simulator (all perturbed parameter
-sets at once), step FD_STEP in unit coordinates or the effect's
+sets at once), step ``fd_step`` in unit coordinates or the effect's
 ``extra["fd_step"]`` (an additive sinusoid's frequency, which the cost is
 sharp in). Confidence intervals: 95 % from s^2 (J'J)^-1 at the
 optimum, mapped to physical units by the delta method; the residuals of a
@@ -19,7 +19,8 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.optimize import least_squares
 
-FD_STEP = 0.01
+from .settings import DEFAULT
+
 
 
 @dataclass
@@ -84,7 +85,7 @@ def fit(bench, effects, z0, runs, max_nfev: int = 25) -> EffectFit:
         score = float(np.sqrt(np.mean(run_nrmse(bench, Y, runs) ** 2)))
         return EffectFit(effects, z0, score, message="no parameter")
     cache = {}
-    step = np.concatenate([np.full(len(e.params), float(e.extra.get("fd_step", FD_STEP))) for e in effects])
+    step = np.concatenate([np.full(len(e.params), float(e.extra.get("fd_step", DEFAULT.fd_step))) for e in effects])
 
     def batch(z):
         steps = np.where(z + step <= 1.0, step, -step)

@@ -48,7 +48,7 @@ def rest_noise(residual: np.ndarray, nominal: np.ndarray, span: float,
                settings=None) -> tuple[float, str]:
     """(robust rms of the white noise on ``residual``, where it was
     estimated). Where the nominal output is at rest (it moves less than
-    settings.rest_step of the span per sample over the REST_HALF_WIDTH samples
+    settings.rest_step of the span per sample over the ``rest_half_width`` samples
     either side), the measured output of a rig whose unmodelled effect is
     non-smooth (stick-slip, backlash, cogging) is at rest too, or held
     against its friction: the residual's second differences there are the
@@ -64,7 +64,7 @@ def rest_noise(residual: np.ndarray, nominal: np.ndarray, span: float,
     residual = np.asarray(residual, float)
     step = np.abs(np.diff(np.asarray(nominal, float)))
     moving = np.concatenate([step, [0.0]]) > settings.rest_step * span
-    moving = np.convolve(moving.astype(float), np.ones(2 * REST_HALF_WIDTH + 1), mode="same") > 0
+    moving = np.convolve(moving.astype(float), np.ones(2 * DEFAULT.rest_half_width + 1), mode="same") > 0
     d2 = np.diff(residual, 2)
     still = ~moving[1:-1] if len(moving) > 2 else np.zeros(0, bool)
     whole = noise_sigma(residual)
@@ -77,7 +77,6 @@ def rest_noise(residual: np.ndarray, nominal: np.ndarray, span: float,
     return rest, f"at rest ({n} samples; the whole run's {whole:.3g} is inflated)"
 
 
-REST_HALF_WIDTH = 10   # samples either side that must be at rest too (the hardware settles later)
 
 
 def total_floor(noise: float, form: float | None = None, settings=DEFAULT) -> float:

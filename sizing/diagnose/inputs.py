@@ -12,12 +12,12 @@ rings at the edges of voltage steps. The treatment, stated in every report:
    with free knots, which keeps the corners of ramps that any low-pass
    rounds; otherwise
 1. a zero-phase Gaussian low-pass (symmetric kernel: no delay, no overshoot
-   at steps) of standard deviation SMOOTH_SAMPLES samples, on each stretch
-   between jumps (a sample-to-sample change above JUMP_SIGMAS x the noise)
+   at steps) of standard deviation ``smooth_samples`` samples, on each stretch
+   between jumps (a sample-to-sample change above ``jump_sigmas`` x the noise)
    on its own, each extended past its ends by odd reflection so that
    ramps keep their slope to the ends of a stretch;
 2. the significant reversals: the turning points of a zig-zag with a
-   threshold of REVERSAL_SIGMAS times the noise of the logged voltage
+   threshold of ``reversal_sigmas`` times the noise of the logged voltage
    (drive_noise_sigma) and at least 0.5 % of its range;
 3. between two significant reversals the input is monotone: each piece is
    replaced by its isotonic (least-squares monotone) regression, so holds
@@ -31,10 +31,8 @@ import numpy as np
 from scipy.ndimage import gaussian_filter1d
 from scipy.optimize import isotonic_regression
 
-from .piecewise import JUMP_SIGMAS, piecewise_linear
-
-SMOOTH_SAMPLES = 4.0
-REVERSAL_SIGMAS = 6.0
+from .piecewise import piecewise_linear
+from .settings import DEFAULT
 
 
 def noise_sigma(x: np.ndarray) -> float:
@@ -109,9 +107,9 @@ def smooth_piece(x: np.ndarray) -> np.ndarray:
     x = np.asarray(x, float)
     if x.size < 3:
         return x.copy()
-    pad = int(4 * SMOOTH_SAMPLES + 1)
+    pad = int(4 * DEFAULT.smooth_samples + 1)
     ext = np.pad(x, pad, mode="reflect", reflect_type="odd")
-    return gaussian_filter1d(ext, SMOOTH_SAMPLES, mode="nearest")[pad:pad + x.size]
+    return gaussian_filter1d(ext, DEFAULT.smooth_samples, mode="nearest")[pad:pad + x.size]
 
 
 def treat_voltage(v: np.ndarray) -> np.ndarray:
@@ -122,13 +120,13 @@ def treat_voltage(v: np.ndarray) -> np.ndarray:
     sigma = drive_noise_sigma(v)
     smooth = piecewise_linear(v, sigma)
     if smooth is None:
-        jumps = np.flatnonzero(np.abs(np.diff(v)) > JUMP_SIGMAS * max(sigma, 1e-12))
+        jumps = np.flatnonzero(np.abs(np.diff(v)) > DEFAULT.jump_sigmas * max(sigma, 1e-12))
         # steps: jumps between two samples far above the noise are kept
         # sharp by smoothing each stretch between jumps on its own
         smooth = np.empty_like(v)
         for a, b in zip(np.r_[0, jumps + 1], np.r_[jumps + 1, len(v)]):
             smooth[a:b] = smooth_piece(v[a:b])
-    threshold = max(REVERSAL_SIGMAS * sigma, 0.005 * float(np.ptp(v)), 1e-12)
+    threshold = max(DEFAULT.reversal_sigmas * sigma, 0.005 * float(np.ptp(v)), 1e-12)
     pivots = reversals(smooth, threshold)
     out = smooth.copy()
     for a, b in zip(pivots[:-1], pivots[1:]):
@@ -155,5 +153,5 @@ def hold_rate(voltages, settings=None) -> float:
 
 def describe() -> str:
     return (f"voltage: piecewise-linear fit with free knots when the log is piecewise linear within its noise, "
-            f"else zero-phase Gaussian low-pass (sigma {SMOOTH_SAMPLES:g} samples), then monotone "
-            f"(isotonic) between reversals larger than {REVERSAL_SIGMAS:g} x the voltage noise")
+            f"else zero-phase Gaussian low-pass (sigma {DEFAULT.smooth_samples:g} samples), then monotone "
+            f"(isotonic) between reversals larger than {DEFAULT.reversal_sigmas:g} x the voltage noise")

@@ -8,26 +8,26 @@ rule below is a named predicate on that evidence, applied in the declared
 order of ``RULES`` (the first that applies decides), then the channel rule.
 
 Verdict (all measures are the combined measure of bench.py, holdout runs):
-- "no_significant_gap": baseline <= GAP_FACTOR x the noise floor
+- "no_significant_gap": baseline <= ``gap_factor`` x the noise floor
   (decided first, before the line rule), unless the holdout gap has a
   spectral line that the best candidate removes (``narrowband_gap``):
   then the line rule below judges it;
 - "unexplained" (named nothing) as well when the baseline is within
-  GAP_FACTOR x the floor (noise and model form together), unless the
-  holdout gap has a spectral line (spectrum.gap_lines, a narrow band the
+  ``gap_factor`` x the floor (noise and model form together), unless the
+  holdout gap has a spectral line (gap_lines, a narrow band the
   broadband model-form floor does not cover): then the best candidate is
   judged on the share of the lines' energy it removes (line rule);
-- "explained": the best removes >= EXPLAINED of the gap energy above the
+- "explained": the best removes >= ``explained`` of the gap energy above the
   floor (and, unless judged on lines, at least the floor's own energy:
   base^2 - best^2 >= floor^2, so that it is not fitting model-form
-  error), leaves <= RESIDUAL_FACTOR x floor, is significantly better
+  error), leaves <= ``residual_factor`` x floor, is significantly better
   than the baseline and separated from the runner-up (the best
   candidate that is a different explanation: neither a subset nor a
   superset of its effects);
-- "partial": the best removes >= PARTIAL of the gap energy above the
+- "partial": the best removes >= ``partial`` of the gap energy above the
   floor and is significantly better than the baseline, but one of the
   other conditions fails; ``remaining`` says where its residual is;
-  it must remove most of the gap (>= EXPLAINED) or be separated from
+  it must remove most of the gap (>= ``explained``) or be separated from
   the runner-up: an effect that removes less than most of the gap and
   that another explanation matches names nothing (``tied``);
   an effect whose fitted time constant (a ``*time_s`` parameter) is
@@ -50,7 +50,7 @@ one): the holdout runs are cut into consecutive ``settings.block_s``
 blocks, each block's energy is one observation, and the blocks are drawn
 with replacement. The statistic is the difference of the weighted squared
 residual energy of two candidates, paired block by block; B =
-``settings.n_boot`` resamples (seeded); "significant" when fewer than ALPHA of the
+``settings.n_boot`` resamples (seeded); "significant" when fewer than ``alpha`` of the
 resampled differences favour the other candidate. Against the baseline the
 test is one-sided (an effect is asked to lower the gap); between two
 candidates ranked on the same holdout runs it is two-sided
@@ -63,14 +63,25 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from . import spectrum
+from .. import spectrum
 from .floor import total_floor
 from .settings import DEFAULT, Settings
 from .verdict import Verdict
 
 
+def gap_lines(bench, nominal: list, candidate: list | None) -> dict | None:
+    """The lines of the holdout gap and how much of them a candidate removes
+    (``line_removal`` of the baseline residuals, measured - nominal).
+    ``nominal`` and ``candidate``: simulated positions (n,) of the holdout
+    runs (bench.holdout order)."""
+    runs = [bench.runs[i] for i in bench.holdout]
+    base = [(r.t, r.y - y) for r, y in zip(runs, nominal)]
+    after = None if candidate is None else [(r.t, r.y - y) for r, y in zip(runs, candidate)]
+    return spectrum.line_removal(base, nominal, after)
+
+
 def block_energy(bench, sims, runs, channel: int | None = None, settings: Settings = DEFAULT) -> np.ndarray:
-    """Weighted squared residual energy of each BLOCK_S block of the runs
+    """Weighted squared residual energy of each ``block_s`` block of the runs
     (sims: (n_ch, n) per run), one array over all runs; ``channel``: of
     that channel alone (unweighted)."""
     out = []
@@ -114,12 +125,15 @@ def explained(base: float, after: float, floor: float) -> float:
     return float(1.0 - max(after ** 2 - floor ** 2, 0.0) / excess)
 
 
-def pick(fits, seed: int = 0, floor: float = 0.0, settings: Settings = DEFAULT):
+def pick(fits, seed: int = 0, floor: float = 0.0, settings: Settings = DEFAULT, noise: float | None = None,
+         channels: dict | None = None):
     """The candidate the verdict judges: the best fitted candidate, except
     that a pair is taken only when it is significantly better on the
     holdout (block bootstrap) than the best single of its two effects,
-    removes at least PAIR_GAIN of the gap energy that single leaves above
-    the floor, fits the training runs at least as well as it and names a
+    removes at least ``pair_gain`` of the gap energy that single leaves above
+    the floor when the single leaves a gap (``leaves_a_gap``: on the
+    combined measure or on one of the logged ``channels``), or most of
+    a spectral line it leaves (``removes_what_is_left``), fits the training runs at least as well as it and names a
     partner no other family replaces (``partner_identified``) and that
     removes more than the other partners of that single take of its form
     error (``beyond_form``); otherwise that single is (parsimony). The pair holds
@@ -127,7 +141,10 @@ def pick(fits, seed: int = 0, floor: float = 0.0, settings: Settings = DEFAULT):
     runs worse is a fit stuck short of its optimum, and its better holdout
     is chance or form error taken up elsewhere. A candidate only screened,
     not fitted (not promising on the training runs), is never taken,
-    whatever its holdout: its holdout rank is chance."""
+    whatever its holdout: its holdout rank is chance. A pair that leaves
+    no more than ``noise_match`` x the ``noise`` floor on the holdout runs
+    is judged against the noise floor alone (``noise_matched``: the
+    campaign then shows no model-form error to allow for)."""
     fitted = [f for f in fits if f.message != "screened only"]
     if not fitted:
         return None
@@ -138,8 +155,11 @@ def pick(fits, seed: int = 0, floor: float = 0.0, settings: Settings = DEFAULT):
     singles = [f for f in fitted if len(f.named) == 1 and f.named[0].name in names]
     if singles:
         single = singles[0]
+        if noise is not None and best.nrmse_holdout <= settings.noise_match * noise:
+            floor = noise
         gain = explained(single.nrmse_holdout, best.nrmse_holdout, floor)
-        earned = gain >= settings.pair_gain or removes_what_is_left(single, best, settings)
+        earned = ((gain >= settings.pair_gain and leaves_a_gap(single, floor, settings, channels))
+                  or removes_what_is_left(single, best, settings))
         if (separation_p(best.residual_blocks, single.residual_blocks, seed) >= settings.alpha or not earned
                 or best.nrmse_train > single.nrmse_train
                 or not partner_identified(fits, best, single, seed, settings)
@@ -148,15 +168,35 @@ def pick(fits, seed: int = 0, floor: float = 0.0, settings: Settings = DEFAULT):
     return best
 
 
+def leaves_a_gap(single, floor: float, settings: Settings = DEFAULT, channels: dict | None = None) -> bool:
+    """Whether the single leaves a gap on the holdout runs: more than
+    ``gap_factor`` x the floor (noise and model form), the rule by which
+    the baseline is a gap at all, on the combined measure or on one logged
+    channel against that channel's floors (``channels``: {channel: {"noise",
+    "form"}}; a sensor mount behind a friction rings in the position, which
+    the current, already at its floor, dilutes in the combined measure: the
+    friction left 1.4 x the combined floor and 1.9 x the position's). What
+    a single leaves within that band is
+    what a nominal of another form leaves, and a partner fitted to it takes
+    up the single's form error (a leak behind a slew limit that already
+    left 1.3 x the floor); only a spectral line the single leaves
+    (``removes_what_is_left``), which the broadband floor does not cover,
+    can still earn a partner there."""
+    if single.nrmse_holdout > settings.gap_factor * floor:
+        return True
+    return any(single.nrmse_channels.get(c, 0.0) > settings.gap_factor * float(np.hypot(ch["noise"], ch["form"]))
+               for c, ch in (channels or {}).items())
+
+
 def removes_what_is_left(single, pair, settings: Settings = DEFAULT) -> bool:
     """Whether the single leaves a spectral line on the holdout runs
     (spectrum.line_removal of its residuals) of which the pair removes at
-    least LINE_GAIN of the energy. A second effect whose energy is a
+    least ``line_gain`` of the energy. A second effect whose energy is a
     narrow band (a sensor mount ringing behind a backlash or a current
     limit) can take a small share of the broadband gap the single leaves
-    (PAIR_GAIN, measured against the whole floor) and still be plain in
-    the spectrum. LINE_GAIN asks more than PAIR_GAIN, because a line is a
-    narrow band; less than EXPLAINED, because the library's form of the
+    (``pair_gain``, measured against the whole floor) and still be plain in
+    the spectrum. ``line_gain`` asks more than ``pair_gain``, because a line is a
+    narrow band; less than ``explained``, because the library's form of the
     second effect is not the hardware's (a fitted mount settles at another
     damping than the hardware's and removes part of the line only)."""
     if not single.holdout_residual or not pair.holdout_residual:
@@ -201,12 +241,12 @@ def unsettled(fit, run_length: float | None) -> dict:
 
 def noise_matched(best, noise_floor: float, p_second: float, settings: Settings = DEFAULT) -> bool:
     """Within the model-form floor, a candidate that leaves no more than
-    NOISE_MATCH x the noise floor on the holdout runs, separated from the
+    ``noise_match`` x the noise floor on the holdout runs, separated from the
     runner-up, is judged against the noise floor alone: nominal and effect
     then leave nothing but measurement noise on runs they were not fitted
     to, so this campaign shows no model-form error to allow for. (Above
     the band the ordinary rules ask less: an effect may leave up to
-    RESIDUAL_FACTOR x the floor.) NOISE_MATCH is a little above 1, the
+    ``residual_factor`` x the floor.) ``noise_match`` is a little above 1, the
     sampling spread of a noise estimate from a few thousand samples; a
     nominal of another form leaves more than that on runs it was not
     fitted to."""
@@ -215,7 +255,7 @@ def noise_matched(best, noise_floor: float, p_second: float, settings: Settings 
 
 def tied(share: float, separated: bool, settings: Settings = DEFAULT) -> bool:
     """Whether a candidate is too weak on two counts to be named even as
-    partial: it removes less than most (EXPLAINED) of the gap energy above
+    partial: it removes less than most (``explained``) of the gap energy above
     the floor and is not separated from the runner-up, another
     explanation. Either alone still names it "partial"; both together
     mean the data neither pin the gap on it nor prefer it to another
@@ -225,17 +265,17 @@ def tied(share: float, separated: bool, settings: Settings = DEFAULT) -> bool:
 
 
 def narrowband_gap(line: dict | None, best, baseline_blocks, seed: int = 0, settings: Settings = DEFAULT) -> bool:
-    """Whether a holdout gap within GAP_FACTOR x the noise floor is still a
-    gap: a spectral line of it (spectrum.gap_lines: in every holdout run,
+    """Whether a holdout gap within ``gap_factor`` x the noise floor is still a
+    gap: a spectral line of it (gap_lines: in every holdout run,
     >= LINE_FACTOR x the local level, not a line of the nominal itself)
-    that the best candidate removes for the most part (>= EXPLAINED of the
+    that the best candidate removes for the most part (>= ``explained`` of the
     lines' energy) while being significantly better than the baseline on
     the holdout (block bootstrap). A lightly damped sensor mount rings for
     a few cycles after each step: its broadband energy can be at the noise
     while its line stands far above the spectrum's local level, and a
     fitted mount at the line's frequency removes it. The input
     treatment's own error (not white) can show a line too, which an effect
-    halves but does not remove: EXPLAINED of the line's energy is asked."""
+    halves but does not remove: ``explained`` of the line's energy is asked."""
     if line is None or best is None or baseline_blocks is None:
         return False
     return (line.get("removed", 0.0) >= settings.explained
@@ -272,7 +312,7 @@ class Evidence:
 
     @property
     def in_band(self) -> bool:
-        """Above the noise, within GAP_FACTOR x the floor with model form."""
+        """Above the noise, within ``gap_factor`` x the floor with model form."""
         return self.baseline <= self.settings.gap_factor * self.floor
 
     @property
@@ -312,10 +352,10 @@ class Evidence:
 
 def evidence(baseline: float, noise: float, fits, baseline_blocks=None, seed: int = 0,
              run_length: float | None = None, line: dict | None = None, form_floor: float | None = None,
-             settings: Settings = DEFAULT) -> Evidence:
+             settings: Settings = DEFAULT, channels: dict | None = None) -> Evidence:
     """The evidence of the rules (Evidence) from the verdict's inputs."""
     floor = total_floor(noise, form_floor, settings)
-    best = pick(fits, seed, floor, settings)
+    best = pick(fits, seed, floor, settings, noise=noise, channels=channels)
     ev = Evidence(baseline, noise, floor, settings, total=floor, best=best, run_length=run_length,
                   narrowband=narrowband_gap(line, best, baseline_blocks, seed, settings))
     if best is None:
@@ -344,9 +384,9 @@ def evidence(baseline: float, noise: float, fits, baseline_blocks=None, seed: in
 def judged_basis(ev: Evidence, line: dict | None) -> Evidence:
     """Within the model-form floor (``in_band``), what a candidate is judged
     on: the share of the gap lines' energy it removes when it removes at
-    least PARTIAL of it (the model-form floor is broadband, smooth-model
+    least ``partial`` of it (the model-form floor is broadband, smooth-model
     error; a spectral line of the holdout gap is not covered by it), else
-    the noise floor alone when it leaves no more than NOISE_MATCH x the
+    the noise floor alone when it leaves no more than ``noise_match`` x the
     noise (``noise_matched``); otherwise the gap energy above the floor."""
     if not ev.in_band:
         return ev
@@ -365,7 +405,7 @@ def judged_basis(ev: Evidence, line: dict | None) -> Evidence:
 # verdict when it applies (None otherwise), applied in the order of RULES.
 
 def no_significant_gap(ev: Evidence) -> Verdict | None:
-    """The baseline is within GAP_FACTOR x the noise floor, and the gap has
+    """The baseline is within ``gap_factor`` x the noise floor, and the gap has
     no spectral line that the best candidate removes (narrowband_gap).
     Decided before the line rule: the voltage treatment's error carried
     through the model is not white and can show a line that an effect
@@ -386,7 +426,7 @@ def nothing_fitted(ev: Evidence) -> Verdict | None:
 
 
 def within_form_floor(ev: Evidence) -> Verdict | None:
-    """Above the noise but within GAP_FACTOR x the floor with model form,
+    """Above the noise but within ``gap_factor`` x the floor with model form,
     and judged neither on lines nor on the noise alone: no effect is blamed
     for what a nominal of another form leaves."""
     if not ev.in_band or ev.basis != "gap":
@@ -398,9 +438,9 @@ def within_form_floor(ev: Evidence) -> Verdict | None:
 
 
 def explains(ev: Evidence) -> Verdict | None:
-    """Significantly better than the baseline, removes at least EXPLAINED
+    """Significantly better than the baseline, removes at least ``explained``
     of the gap energy above the floor (and the floor's own energy), leaves
-    at most RESIDUAL_FACTOR x the floor, separated from the runner-up and
+    at most ``residual_factor`` x the floor, separated from the runner-up and
     settled within a run."""
     s = ev.settings
     if not (ev.significant and ev.share >= s.explained and ev.separated and ev.leaves and not ev.slow):
@@ -413,7 +453,7 @@ def explains(ev: Evidence) -> Verdict | None:
 
 
 def tied_with_runner_up(ev: Evidence) -> Verdict | None:
-    """Significant and above PARTIAL, but ``tied``: less than most of the
+    """Significant and above ``partial``, but ``tied``: less than most of the
     gap and not separated from another explanation, which names nothing."""
     s = ev.settings
     if not (ev.significant and ev.share >= s.partial and tied(ev.share, ev.separated, s)):
@@ -425,7 +465,7 @@ def tied_with_runner_up(ev: Evidence) -> Verdict | None:
 
 
 def explains_part(ev: Evidence) -> Verdict | None:
-    """Significant and removes at least PARTIAL of the gap energy above the
+    """Significant and removes at least ``partial`` of the gap energy above the
     floor, but one condition of ``explains`` fails (each is a reason)."""
     s = ev.settings
     if not (ev.significant and ev.share >= s.partial):
@@ -468,11 +508,11 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
     channel over a combined verdict that names nothing. ``floor_holdout``:
     the noise floor; ``run_length``: the shortest training run (s), for
     the settling rule; ``line``: the spectral lines of the holdout gap
-    (spectrum.gap_lines); ``form_floor``: the model-form floor of the
+    (gap_lines); ``form_floor``: the model-form floor of the
     combined measure (None: the prior); ``channels``: {channel:
     {"baseline", "noise", "form", "blocks"}}."""
     ev = evidence(baseline_holdout, floor_holdout, fits, baseline_blocks, seed, run_length, line, form_floor,
-                  settings)
+                  settings, channels)
     out = next(v for v in (rule(ev) for rule in RULES) if v is not None)
     if not channels or len(channels) < 2 or out.status == "explained":
         return out
@@ -511,7 +551,7 @@ def channel_evidence(fits, c: str, channels: dict, seed: int = 0, settings: Sett
     ranked = sorted((ChannelView(f, c) for f in fits if c in getattr(f, "channel_blocks", {})
                      and c in getattr(f, "nrmse_channels", {})), key=lambda f: f.nrmse_holdout)
     total = float(np.hypot(ch["noise"], ch["form"]))
-    best = pick(ranked, seed, total, settings)
+    best = pick(ranked, seed, total, settings, noise=ch["noise"], channels=channels)
     if best is None or ch["baseline"] <= 0:
         return None
     second = runner_up(ranked, best)
@@ -533,7 +573,7 @@ def channel_verdict(fits, channels: dict, seed: int = 0, settings: Settings = DE
     """The verdict of the channel that names the most: each logged channel
     c is judged alone (``channel_evidence``) by the rules of the combined
     measure that can name an effect (CHANNEL_RULES: "explained", the tie,
-    "partial"), when c's baseline is above GAP_FACTOR x c's floor (its
+    "partial"), when c's baseline is above ``gap_factor`` x c's floor (its
     noise and its model-form floor, floor.form_floor) and the candidate
     leaves no other channel worse than its baseline beyond that channel's
     floor. "explained" on a channel wins over "partial", then the larger
@@ -571,7 +611,7 @@ def beyond_form(fits, pair, single, settings: Settings = DEFAULT) -> bool:
     """Whether the pair's partner removes a share of the gap that the
     single's own form error cannot explain: the holdout gap energy the
     pair removes beyond the single, single^2 - pair^2, must exceed
-    (1 + FORM_MARGIN) x the median that the other fitted partners of the
+    (1 + ``form_margin``) x the median that the other fitted partners of the
     same single remove (pairs of that single with another family). What
     any partner takes from the single's residual is the difference between
     the single's form and the hardware's, which a flexible second effect

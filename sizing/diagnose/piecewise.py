@@ -10,17 +10,17 @@ piecewise linear to within its noise, fitting it as such removes the
 noise and keeps the corners:
 
 1. kink candidates: peaks of the Gaussian second-derivative response at
-   KINK_SCALES samples above KINK_SIGMAS x that response's own noise
+   ``kink_scales`` samples above ``kink_sigmas`` x that response's own noise
    (sigma ||g''||), each placed by the best single hinge near it; steps
-   (a sample-to-sample change JUMP_SIGMAS x the noise away from the local
+   (a sample-to-sample change ``jump_sigmas`` x the noise away from the local
    slope, so a steep ramp's noisy samples are not steps) add a knot on
    both of their samples;
 2. the least-squares continuous piecewise-linear fit on those knots (hat
    basis: a tridiagonal solve);
 3. backward pruning: knots whose removal raises the residual sum of squares
-   by less than KNOT_PENALTY log(n) sigma^2 are removed (a BIC-like
+   by less than ``knot_penalty`` log(n) sigma^2 are removed (a BIC-like
    penalty for a knot's slope change and position);
-4. accepted only when the residual rms is within ACCEPT x the white noise
+4. accepted only when the residual rms is within ``piecewise_accept`` x the white noise
    sigma; otherwise (a sine, a chirp, a measured waveform) ``None``, and
    the caller keeps its smoother.
 """
@@ -30,12 +30,7 @@ import numpy as np
 from scipy.linalg import solve_banded
 from scipy.ndimage import gaussian_filter1d, maximum_filter1d, median_filter
 
-KINK_SCALES = (2, 5, 12, 30)   # samples
-KINK_SIGMAS = 5.0
-KNOT_PENALTY = 4.0             # x log(n) sigma^2
-ACCEPT = 1.15                  # residual rms / white noise sigma
-MERGE_SAMPLES = 2              # candidates this close are one kink
-JUMP_SIGMAS = 8.0
+from .settings import DEFAULT
 
 
 def hat_fit(v: np.ndarray, knots: np.ndarray) -> np.ndarray:
@@ -74,18 +69,18 @@ def best_hinge(v: np.ndarray, i: int, s: int) -> int:
 def kink_candidates(v: np.ndarray, sigma: float) -> list[int]:
     """Sample indices of the kinks the second-derivative responses see."""
     found = set()
-    for s in KINK_SCALES:
+    for s in DEFAULT.kink_scales:
         if 8 * s > len(v):
             continue
         response = np.abs(gaussian_filter1d(v, s, order=2, mode="nearest"))
         impulse = np.zeros(8 * s + 1)
         impulse[4 * s] = 1.0
         noise = sigma * float(np.linalg.norm(gaussian_filter1d(impulse, s, order=2)))
-        peaks = (response == maximum_filter1d(response, 2 * s + 1)) & (response > KINK_SIGMAS * noise)
+        peaks = (response == maximum_filter1d(response, 2 * s + 1)) & (response > DEFAULT.kink_sigmas * noise)
         found.update(best_hinge(v, int(i), s) for i in np.flatnonzero(peaks))
     merged = []
     for k in sorted(found):
-        if not merged or k - merged[-1] > MERGE_SAMPLES:
+        if not merged or k - merged[-1] > DEFAULT.merge_samples:
             merged.append(k)
     return merged
 
@@ -111,10 +106,10 @@ def prune(v: np.ndarray, knots: np.ndarray, penalty: float) -> np.ndarray:
 
 def steps(v: np.ndarray, sigma: float) -> np.ndarray:
     """Indices i of the steps between samples i and i + 1: a change that
-    stands JUMP_SIGMAS x the noise out of the local slope (the median change
+    stands ``jump_sigmas`` x the noise out of the local slope (the median change
     of its neighbours), so a steep ramp's noisy samples are not steps."""
     d = np.diff(v)
-    return np.flatnonzero(np.abs(d - median_filter(d, size=7, mode="nearest")) > JUMP_SIGMAS * sigma)
+    return np.flatnonzero(np.abs(d - median_filter(d, size=7, mode="nearest")) > DEFAULT.jump_sigmas * sigma)
 
 
 def piecewise_linear(v: np.ndarray, sigma: float) -> np.ndarray | None:
@@ -128,10 +123,10 @@ def piecewise_linear(v: np.ndarray, sigma: float) -> np.ndarray | None:
     if len(candidates) > n // 10:
         return None                              # no sparse set of corners: not this kind of signal
     knots = np.array(sorted(candidates | {0, n - 1}))
-    if np.mean((v - hat_fit(v, knots)) ** 2) > (ACCEPT * sigma) ** 2:
+    if np.mean((v - hat_fit(v, knots)) ** 2) > (DEFAULT.piecewise_accept * sigma) ** 2:
         return None
-    knots = prune(v, knots, KNOT_PENALTY * np.log(n) * sigma ** 2)
+    knots = prune(v, knots, DEFAULT.knot_penalty * np.log(n) * sigma ** 2)
     fit = hat_fit(v, knots)
-    if np.sqrt(np.mean((v - fit) ** 2)) > ACCEPT * sigma:
+    if np.sqrt(np.mean((v - fit) ** 2)) > DEFAULT.piecewise_accept * sigma:
         return None
     return fit

@@ -26,13 +26,33 @@ class Settings:
     pair_gain: float = 0.25        # a pair removes this share of what its single leaves above the floor...
     line_gain: float = 0.5         # ... or this share of a spectral line its single leaves
     form_floor_prior: float = 0.002  # model-form floor (of the span) when the campaign cannot estimate one
-    form_margin: float = 1.0       # a partner must remove more than this x the single's own form error
+    form_margin: float = 1.0       # a partner removes more than (1 + this) x what the other partners of its single take (judge.beyond_form)
     rest_samples: int = 200        # second differences at rest needed for the at-rest noise estimate
     rest_step: float = 1e-5        # at rest: the nominal moves less than this share of the span per sample
     rest_sigmas: float = 3.0       # the whole run's noise estimate is inflated beyond this x the sampling error
     hold_time_s: float = 0.1       # a voltage moving by less than its noise in this time is held (Bouc-Wen sign deadband), s
     block_s: float = 0.1           # block length of the bootstrap, s
     n_boot: int = 1000             # bootstrap resamples
+    # screening and fitting the candidates (attribution.py, fitting.py)
+    n_screen: int = 10             # screened parameter sets per effect parameter...
+    min_screen: int = 30           # ... and at least this many
+    top_fit: int = 4               # families fitted at least (the best-screened form of each)
+    fit_below: float = 0.9         # ... and any form that screens below this x the training baseline
+    top_pairs: int = 3             # fitted families combined into pairs
+    step_pairs: int = 2            # families screened as the second effect given the best single
+    fd_step: float = 0.01          # forward-difference step of the Jacobian, unit coordinates
+    # the campaign and its floors
+    min_periods: float = 1.0       # a run lasts at least this x the longest effect time constant
+    rest_half_width: int = 10      # samples either side that must be at rest too (the at-rest noise)
+    # the logged voltage's treatment (inputs.py, piecewise.py)
+    smooth_samples: float = 4.0    # sigma of the zero-phase Gaussian low-pass, samples
+    reversal_sigmas: float = 6.0   # a reversal moves by more than this x the voltage noise
+    jump_sigmas: float = 8.0       # a jump: a change this x the noise away from the local slope
+    kink_scales: tuple = (2, 5, 12, 30)   # samples: scales of the kink detector
+    kink_sigmas: float = 5.0       # a kink: the detector's response above this x its own noise
+    knot_penalty: float = 4.0      # a knot is kept when it lowers the squared error by this x log(n) sigma^2
+    piecewise_accept: float = 1.15  # a piecewise-linear fit is kept when its residual rms is within this x the noise
+    merge_samples: int = 2         # kink candidates this close are one kink
 
     def varied(self, name: str, factor: float) -> "Settings":
         """A copy with ``name`` multiplied by ``factor`` (the sensitivity table)."""

@@ -221,13 +221,13 @@ TREND_SHARE = 0.5     # a trend: a straight line holds this share of the residua
 def residual_structure(runs) -> list[str]:
     """Messages for structure in fit residuals that the model lacks, over
     runs [(t, residual, simulated output)]: a spectral line common to the
-    runs (sizing.diagnose.spectrum.lines: in every run above LINE_FACTOR x
+    runs (sizing.spectrum.lines: in every run above LINE_FACTOR x
     the periodogram's local median, not a line of the simulated output),
     and a trend (a straight line in time holding TREND_SHARE of the
     residual's variance in every run). Confidence intervals assume the
     residual has neither. Each message is also issued as an
     IdentifiabilityWarning."""
-    from ..diagnose import spectrum
+    from .. import spectrum
 
     out = []
     for freq, ratio in spectrum.lines([(t, r) for t, r, _ in runs], [y for _, _, y in runs]):
@@ -257,7 +257,7 @@ def _harmonic(freq: float, t: np.ndarray, y: np.ndarray) -> tuple[int, float]:
     its strongest spectral peak; (0, f0) otherwise. A hysteresis model that
     misses the loop's shape leaves lines at the drive's harmonics, not a
     resonance."""
-    from ..diagnose.spectrum import periodogram
+    from ..spectrum import periodogram
 
     f, P = periodogram(t, np.asarray(y, float) - np.mean(y))
     f0 = float(f[1 + int(np.argmax(P[1:]))]) if len(f) > 2 else 0.0

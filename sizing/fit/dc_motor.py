@@ -29,8 +29,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import least_squares
 
-from ..diagnose import spectrum
-from ..diagnose.effects.sensor_vibration import mount_response
+from .. import spectrum
+from ..physics.sensor_mount import mount_response
 from ..errors import FitError, SimulationError
 from ..sim.dc_motor import DCMotorModel, simulate
 from ..sim.signals import nrmse

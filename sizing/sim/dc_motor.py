@@ -23,7 +23,15 @@ know (the motor gets the clipped current, the recorded ``current_A`` is the
 command, the integrator winds up), and a Stribeck friction curve,
 ``static_friction`` (breakaway, N) above ``coulomb_friction`` falling over
 ``stribeck_velocity`` (m/s), F(v) = F_c + (F_s - F_c) exp(-(v/v_s)^2), taken at
-the speed at the start of each interval; a piston at rest breaks away at F_s.
+the speed at the start of each interval; a piston at rest breaks away at F_s;
+and ``loop_backlash`` (m, total width), a play between the screw and the
+measured output *inside* the loop: the controller closes on the measured
+(load-side) position, which follows the motor through a play operator
+updated at each sample, so at a reversal the motor crosses the gap while
+the measurement stands still (with the loop closed on the motor's encoder
+instead, a play is a post-processing of the output: the diagnosis's
+``backlash`` forms "play" and "coasting"). The reported position is the
+measured one.
 Many candidates run at once; positions are reported from the rest position.
 """
 from __future__ import annotations
@@ -40,7 +48,7 @@ PARAMS = (
     "c1", "c2", "lead", "rate", "kp", "ki", "kd", "derivative_on_measurement",
     "current_limit", "load_force", "load_stiffness", "efficiency", "torque_constant",
     "coulomb_friction", "proportional_on_measurement", "bus_voltage", "back_emf_constant",
-    "winding_resistance", "drive_current_limit", "static_friction", "stribeck_velocity",
+    "winding_resistance", "drive_current_limit", "static_friction", "stribeck_velocity", "loop_backlash",
 )
 CHANNELS = ("position_m", "velocity_m_s", "current_A")
 
@@ -53,7 +61,8 @@ class DCMotorModel(ParameterSet):
     N/m, efficiency -, torque_constant N m/A, coulomb_friction N,
     bus_voltage V (inf: no ceiling), back_emf_constant V s/rad (bus-referred),
     winding_resistance ohm, drive_current_limit A (inf: none),
-    static_friction N (<= coulomb_friction: none), stribeck_velocity m/s. ``lead`` is output metres per motor radian x 2 pi
+    static_friction N (<= coulomb_friction: none), stribeck_velocity m/s,
+    loop_backlash m (total play inside the loop; 0: none). ``lead`` is output metres per motor radian x 2 pi
     (screw lead / gear ratio)."""
 
     c1: object
@@ -77,6 +86,7 @@ class DCMotorModel(ParameterSet):
     drive_current_limit: object = np.inf
     static_friction: object = 0.0
     stribeck_velocity: object = 0.0
+    loop_backlash: object = 0.0
 
 
 @numba.njit(cache=True)
@@ -174,11 +184,22 @@ def _advance(y, v, i, dt, c1, c1v, g, load_i, i_fric, U, ke, Rw, to_speed, limit
 
 
 @numba.njit(cache=True)
+def _play(o, y, half):
+    """The measured (load) position o after the motor moves to y through a
+    play of half-width ``half``: it moves only when the motor pushes it."""
+    if y - o > half:
+        return y - half
+    if o - y > half:
+        return y + half
+    return o
+
+
+@numba.njit(cache=True)
 def _simulate_one(p, t_ref, r_row, t_out, rec):
     c1, c2, lead, rate, kp, ki, kd = p[0], p[1], p[2], p[3], p[4], p[5], p[6]
     d_meas, i_max, F0, kL, eta, kt, Fc = p[7], p[8], p[9], p[10], p[11], p[12], p[13]
     p_meas, U, ke, Rw = p[14], p[15], p[16], p[17]
-    i_drv, Fs, v_s = p[18], p[19], p[20]
+    i_drv, Fs, v_s, half = p[18], p[19], p[20], 0.5 * p[21]
     Ts = 1.0 / rate
     g = lead / (2.0 * np.pi) * c2
     limited = U < np.inf and ke > 0.0
@@ -188,6 +209,7 @@ def _simulate_one(p, t_ref, r_row, t_out, rec):
     i_fric = Fc * to_current
     i_stat = Fs * to_current                             # Stribeck breakaway (0: Coulomb only)
     y, v = 0.0, 0.0
+    m = y           # the measured position (behind the play; y without one)
     # rest under the load: the integrator already holds the load current
     integ = (F0 * to_current / ki) if ki != 0.0 else 0.0
     e_prev = np.interp(t_out[0], t_ref, r_row) - y
@@ -206,10 +228,12 @@ def _simulate_one(p, t_ref, r_row, t_out, rec):
         while j < n_out and t_out[j] < t + Ts - 1e-12:
             tau = t_out[j] - t
             if tau <= 0.0:
-                rec[0, j], rec[1, j], rec[2, j] = y, v, i
+                rec[0, j], rec[1, j], rec[2, j] = m, v, i
             else:
                 rec[0, j], rec[1, j], rec[2, j] = _advance(y, v, i_act, tau, c1, c1v, g, load_i, i_fric,
                                                           U, ke, Rw, to_speed, limited, i_stat, v_s)
+                if half > 0.0:
+                    rec[0, j] = _play(m, rec[0, j], half)
                 if drive_clipped:
                     rec[2, j] = i
             j += 1
@@ -219,16 +243,17 @@ def _simulate_one(p, t_ref, r_row, t_out, rec):
         y, v, _ = _advance(y, v, i_act, Ts, c1, c1v, g, load_i, i_fric, U, ke, Rw, to_speed, limited,
                            i_stat, v_s)
         t += Ts
+        m = _play(m, y, half) if half > 0.0 else y
         r = np.interp(t, t_ref, r_row)
-        err = r - y
-        deriv = -(y - y_prev) / Ts if d_meas > 0.5 else (err - e_prev) / Ts
-        prop = -y if p_meas > 0.5 else err
+        err = r - m
+        deriv = -(m - y_prev) / Ts if d_meas > 0.5 else (err - e_prev) / Ts
+        prop = -m if p_meas > 0.5 else err
         i_try = kp * prop + ki * (integ + err * Ts) + kd * deriv
         if abs(i_try) < i_max or i_try * err < 0.0:
             integ += err * Ts
         i_new = kp * prop + ki * integ + kd * deriv
         i = min(max(i_new, -i_max), i_max)
-        e_prev, y_prev = err, y
+        e_prev, y_prev = err, m
     return rec
 
 

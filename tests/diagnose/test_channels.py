@@ -88,7 +88,7 @@ def test_channel_rule_names_an_effect_that_explains_the_current_alone():
     assert out["effect"] == "coulomb_friction" and out["judged_on_channel"] == "current_A"
     floor = np.hypot(0.002, 0.001)
     assert out["explained_gap_energy"] == pytest.approx(1 - (0.003 ** 2 - floor ** 2) / (0.02 ** 2 - floor ** 2))
-    # the same current gap within GAP_FACTOR x that channel's floor: nothing named from it
+    # the same current gap within ``gap_factor`` x that channel's floor: nothing named from it
     assert judge.channel_verdict([other, friction], _channels(0.003)) is None
 
 

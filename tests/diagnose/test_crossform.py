@@ -242,7 +242,7 @@ def test_a_current_limit_behind_a_delay_is_found_by_a_screen_fine_enough_for_its
     that ten Latin-hypercube points over 0.05-20 A (a factor 1.8 apart)
     missed; the screen kept an inactive limit with c2 re-calibrated to its
     bound, every fit followed, and nothing was named with a gap 23 x the
-    noise. At least MIN_SCREEN points per effect find the valley and the
+    noise. At least ``min_screen`` points per effect find the valley and the
     pair is named."""
     case = cases.find("dc-h7-ilimit+pade")
     rig, runs, holdout = cases.generate(case)

@@ -61,7 +61,7 @@ def test_dc_library_forms_are_alternatives_of_one_family():
         forms.setdefault(e.name, set()).add(e.form)
     assert forms["current_saturation"] == {"command", "drive"}
     assert forms["coulomb_friction"] == {"coulomb", "stribeck", "asymmetric"}
-    assert forms["backlash"] == {"play", "coasting"}
+    assert forms["backlash"] == {"play", "coasting", "in_loop"}
     for e in library("dc_motor"):
         assert e.source and len(e.sizes_for(None, DCMotorModel(c1=-25.0, c2=3000.0, lead=2e-3, current_limit=8.0))) == 2
 

@@ -185,3 +185,22 @@ def test_treated_voltage_keeps_fast_ramps():
     raw = clean + 0.3 * rng.normal(size=t.size)
     err = np.sqrt(np.mean((treat_voltage(raw) - clean) ** 2))
     assert err < 0.3
+
+
+def test_compressibility_only_softens_the_oil():
+    """The bulk-modulus form is searched from 5 MPa up to the rig's nominal
+    bulk modulus (1.5 GPa here), not to the 2 GPa of its declared range: its
+    stiffest value is the nominal oil, no effect, and its realistic sizes
+    (10 x and 40 x softer) stay inside."""
+    from types import SimpleNamespace
+
+    from sizing.diagnose.effects.fluid_compressibility import BULK_MODULUS
+
+    model = SimpleNamespace(bulk_modulus=np.array([1.5e9]))
+    bounded = BULK_MODULUS.for_rig(None, model)
+    (p,) = bounded.params
+    assert BULK_MODULUS.params[0].hi == 2e9 and p.hi == 1.5e9 and p.lo == 5e6
+    assert float(p.from_unit(1.0)) == pytest.approx(1.5e9)
+    assert bounded.model_changes(model, bounded.values(np.ones((1, 1))))["bulk_modulus"][0] == pytest.approx(1.5e9)
+    for size in bounded.sizes_for(None, model):
+        assert 0.0 < bounded.unit(size)[0] < 1.0

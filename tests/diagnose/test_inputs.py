@@ -3,7 +3,8 @@ against the clean signal it was made from."""
 import numpy as np
 import pytest
 
-from sizing.diagnose.inputs import JUMP_SIGMAS, drive_noise_sigma, noise_sigma, treat_voltage
+from sizing.diagnose.inputs import drive_noise_sigma, noise_sigma, treat_voltage
+from sizing.diagnose.settings import DEFAULT
 
 
 def _noisy(v, sigma, seed=0):
@@ -14,7 +15,7 @@ def test_a_step_stays_sharp():
     sigma = 0.3
     clean = np.r_[np.zeros(300), np.full(300, 100.0)]
     noisy = _noisy(clean, sigma, seed=1)
-    assert int(np.sum(np.abs(np.diff(noisy)) > JUMP_SIGMAS * sigma)) == 1
+    assert int(np.sum(np.abs(np.diff(noisy)) > DEFAULT.jump_sigmas * sigma)) == 1
     treated = treat_voltage(noisy)
     assert abs(treated[299]) < 3 * sigma and abs(treated[300] - 100.0) < 3 * sigma
 

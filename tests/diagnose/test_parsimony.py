@@ -40,9 +40,9 @@ def _fits(leak_blocks: float, mount_blocks: float, slew_blocks: float):
 def test_a_partner_must_remove_more_than_other_partners_take_of_the_single_form_error(levels, chosen):
     """Energy removed beyond the single: leakage 40 x (4 - l); the median
     of the other partners 40 x (4 - median of the others); the pair is
-    taken when its removal exceeds (1 + FORM_MARGIN) = 2 x that median:
+    taken when its removal exceeds (1 + ``form_margin``) = 2 x that median:
     1.5 against 2 x 1.15 refuses it (though it removes 37 % of what the
-    single leaves, above PAIR_GAIN), 3.0 against 2 x 0.35 keeps it."""
+    single leaves, above ``pair_gain``), 3.0 against 2 x 0.35 keeps it."""
     single, pairs = _fits(*levels)
     fits = sorted(pairs + [single], key=lambda f: f.nrmse_holdout)
     assert judge.beyond_form(fits, pairs[0], single) is (chosen != "no_return")
@@ -71,3 +71,59 @@ def test_candidates_ranked_on_the_holdout_are_separated_at_the_stated_level():
         two_sided += judge.separation_p(better, worse, seed=k, n_boot=400) < 0.05
     assert 0.075 < one_sided / trials < 0.14
     assert 0.025 < two_sided / trials < 0.075
+
+
+def _slew_and_leak(single_holdout: float, pair_holdout: float):
+    """A slew limit alone and with a leak: the pair lower on every one of 40
+    holdout blocks and on the training runs."""
+    slew, leak = get("piezohydraulic", "amplifier_slew_limit"), get("piezohydraulic", "leakage")
+    z_slew = slew.unit({"slew_rate_V_s": 1200.0})
+    single = EffectFit((slew,), z_slew, 0.0030, nrmse_holdout=single_holdout,
+                       residual_blocks=np.full(40, single_holdout ** 2 / 40))
+    pair = EffectFit((slew, leak), np.concatenate([z_slew, leak.unit({"leak_conductance_m3_s_Pa": 8e-15})]),
+                     0.0025, nrmse_holdout=pair_holdout, residual_blocks=np.full(40, pair_holdout ** 2 / 40))
+    return single, pair
+
+
+@pytest.mark.parametrize("single_holdout, chosen", [
+    (0.0030, "amplifier_slew_limit"),               # 1.3 x the floor 0.00232: within the band of a gap
+    (0.0040, "amplifier_slew_limit+leakage"),       # 1.7 x: a gap the partner may take
+])
+def test_a_partner_is_sought_only_in_a_gap_the_single_leaves(single_holdout, chosen):
+    """Noise 0.00117, model-form prior 0.002: floor 0.00232. The pair
+    leaves 0.00224, all of what the single leaves above the floor; when the
+    single leaves 0.0030 (1.3 x the floor, within ``gap_factor``) that is
+    what a nominal of another form leaves and the single is named; at
+    0.0040 (1.7 x) the single leaves a gap and the pair is taken."""
+    single, pair = _slew_and_leak(single_holdout, 0.00224)
+    floor = total_floor(0.00117)
+    assert judge.leaves_a_gap(single, floor) is (chosen != "amplifier_slew_limit")
+    assert judge.pick([pair, single], floor=floor, noise=0.00117).name == chosen
+
+
+@pytest.mark.parametrize("noise, chosen", [(None, "amplifier_slew_limit"),
+                                           (0.00026, "amplifier_slew_limit+leakage")])
+def test_a_pair_that_leaves_only_the_noise_is_judged_against_the_noise(noise, chosen):
+    """The single leaves 0.00194, within the floor with the model-form
+    prior (0.00202 with a noise of 0.00026), so against that floor the pair
+    earns nothing; the pair leaves 0.00023, within ``noise_match`` x the
+    noise: nominal and pair leave nothing but noise on runs they were not
+    fitted to, there is no model-form error to allow for, and against the
+    noise floor the single leaves 7.5 x it and the pair removes all of it."""
+    single, pair = _slew_and_leak(0.00194, 0.00023)
+    assert judge.pick([pair, single], floor=total_floor(0.00026), noise=noise).name == chosen
+
+
+def test_a_gap_left_on_one_channel_is_a_gap():
+    """A friction that leaves 0.00305 on the combined measure (1.4 x its
+    floor 0.00216) leaves 0.0042 on the position, 1.9 x the position's
+    floor sqrt(0.00082^2 + 0.002^2): a partner may be sought there (a
+    sensor mount rings in the position; the current, at its floor, dilutes
+    it in the combined measure)."""
+    friction = get("dc_motor", "coulomb_friction")
+    single = EffectFit((friction,), friction.unit({"coulomb_friction_N": 40.0}), 0.0024, nrmse_holdout=0.00305,
+                       nrmse_channels={"position_m": 0.0042, "current_A": 0.00111})
+    channels = {"position_m": {"noise": 0.00082, "form": 0.002}, "current_A": {"noise": 0.00089, "form": 0.00081}}
+    assert not judge.leaves_a_gap(single, 0.00216)
+    assert judge.leaves_a_gap(single, 0.00216, channels=channels)
+    assert not judge.leaves_a_gap(single, 0.00216, channels={"current_A": channels["current_A"]})

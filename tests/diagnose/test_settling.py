@@ -4,7 +4,8 @@ it is at most "partial" (sizing/diagnose/judge.py)."""
 import numpy as np
 import pytest
 
-from sizing.diagnose import judge, spectrum
+from sizing import spectrum
+from sizing.diagnose import judge
 from sizing.diagnose.floor import total_floor
 from sizing.diagnose.effects import get, library
 from sizing.diagnose.fitting import EffectFit
@@ -61,7 +62,7 @@ def test_the_line_rule_acts_between_the_noise_and_the_model_form_floor(baseline,
     line of it (a noise-only campaign has shown a 32 x line, halved;
     test_a_gap_at_the_noise_counts_when...); one of 2.5 x the noise floor but within
     1.5 x the floor is judged on the share of the line's energy the best
-    candidate removes, or, when the best leaves at most NOISE_MATCH x the
+    candidate removes, or, when the best leaves at most ``noise_match`` x the
     noise floor (0.0009 here, against 0.0015), against the noise floor."""
     fits = _fits(0.5)
     fits[0].nrmse_holdout, fits[1].nrmse_holdout = best, 0.0020
@@ -103,7 +104,7 @@ def test_an_effect_must_remove_more_than_the_model_form_floor(best, status):
 def test_a_pair_that_fits_training_worse_than_its_single_is_not_taken(pair_train, chosen):
     """The pair is better on the holdout (0.003 against 0.006, every block
     lower) and removes (0.006^2 - 0.003^2) / (0.006^2 - floor^2) of what the
-    single leaves, well above PAIR_GAIN; it holds the single, so on the
+    single leaves, well above ``pair_gain``; it holds the single, so on the
     training runs it must fit at least as well (0.0045): at 0.0060 it is a
     fit stuck short of its optimum and the single is taken."""
     creep, delay = get("piezohydraulic", "stack_creep"), get("piezohydraulic", "sensor_delay")
@@ -204,7 +205,7 @@ def test_a_pair_earns_its_second_effect_by_removing_a_line_the_single_leaves(kep
     0.05 (a line far above LINE_FACTOR) in two 2 s holdout runs; the pair
     leaves the same noise and ``kept`` x that sinusoid. The share of the
     line's energy removed is 1 - kept^2 (the noise is the same draw, so it
-    cancels); LINE_GAIN = 50 %."""
+    cancels); ``line_gain`` = 50 %."""
     rng = np.random.default_rng(4)
     t = np.arange(0, 2.0, 1e-3)
     noise = [0.05 * rng.standard_normal(t.size) for _ in range(2)]

@@ -5,7 +5,7 @@ import tracemalloc
 import numpy as np
 import pytest
 
-from sizing.diagnose.spectrum import local_level
+from sizing.spectrum import local_level
 
 
 def loop_median(P: np.ndarray, k: int) -> np.ndarray:

@@ -67,7 +67,7 @@ def test_rules_are_declared_in_order_and_each_decides_one_verdict():
 
 
 def test_every_threshold_of_the_rules_comes_from_the_settings():
-    """The same evidence, a stricter EXPLAINED: explained becomes partial."""
+    """The same evidence, a stricter ``explained``: explained becomes partial."""
     blocks = np.full(40, 10.0)
     fits = [_fit("viscous_damping", 0.005, np.full(40, 1.0))]
     assert judge.verdict(0.02, 0.001, fits, blocks).status == "explained"

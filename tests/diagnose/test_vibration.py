@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from sizing.diagnose import spectrum
+from sizing import spectrum
 from sizing.diagnose.effects import library
 from sizing.diagnose.effects.sensor_vibration import SINUSOID, mount_response
 

@@ -116,6 +116,16 @@ def test_no_import_cycle():
     assert cycles(import_graph()) == []
 
 
+def test_the_fits_do_not_import_the_diagnosis():
+    """``sizing fit`` and ``sizing diagnose`` share the spectral lines
+    (sizing/spectrum.py) and the sensor mount (sizing/physics/sensor_mount.py);
+    the fits import nothing of the diagnosis."""
+    graph = import_graph()
+    reached = {t for m, targets in graph.items() if m.startswith("sizing.fit") for t in targets}
+    assert not {t for t in reached if t.startswith("sizing.diagnose")}
+    assert "sizing.spectrum" in graph["sizing.fit.common"]
+
+
 def test_the_cycle_finder_finds_a_cycle():
     graph = {"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}
     assert cycles(graph) == [["a", "b", "c"]]

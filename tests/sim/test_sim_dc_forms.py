@@ -88,3 +88,27 @@ def test_new_fields_at_defaults_are_bit_identical():
     c = simulate(DCMotorModel(**kw, static_friction=np.array([0.0, 30.0]), stribeck_velocity=1e-3), t, ref)  # F_s = F_c
     for k in a:
         assert np.array_equal(a[k], b[k]) and np.array_equal(a[k], c[k])
+
+
+def test_a_play_inside_the_loop_holds_the_measurement_until_the_motor_reaches_the_flank():
+    """A 0.3 mm play between screw and measured output, the loop closed on
+    the measured output (``loop_backlash``). At 0 the traces are the
+    nominal's bit for bit. After a 2 mm step the motor, starting centred in
+    the gap and at rest, must travel b/2 = 0.15 mm before it moves the
+    measurement; at most the 10 A limit accelerates it, g i_max =
+    lead / (2 pi) c2 x 10 A = 9.51 m/s^2, so it needs at least
+    sqrt(b / (g i_max)) = 5.6 ms: the measurement stays at 0 for the first
+    five 1 ms samples, while the nominal's has moved from the first."""
+    from sizing.sim.dc_motor import DCMotorModel, simulate
+
+    base = dict(c1=-25.5552, c2=2987.02, lead=0.002, rate=1000.0, kp=1500.0, kd=25.0, current_limit=10.0)
+    t = np.arange(0.0, 0.3, 1e-3)
+    r = np.where(t >= 0.01, 2e-3, 0.0)
+    nominal = simulate(DCMotorModel(**base), t, r)["position_m"][0]
+    assert np.array_equal(simulate(DCMotorModel(**base, loop_backlash=0.0), t, r)["position_m"][0], nominal)
+    played = simulate(DCMotorModel(**base, loop_backlash=3e-4), t, r)["position_m"][0]
+    g = 0.002 / (2 * np.pi) * 2987.02 * 10.0
+    assert np.sqrt(3e-4 / g) > 0.0055
+    step = int(np.argmax(t >= 0.01))
+    assert np.all(played[:step + 6] == 0.0)
+    assert np.all(nominal[step + 2:step + 6] > 0.0)

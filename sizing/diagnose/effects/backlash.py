@@ -18,6 +18,15 @@ survey, Automatica 38 (2002) 1633, sec. 2):
   motor. tau -> 0 is the play operator. Sizes: b = 0.1 mm with a 1 kg load
   on 300 N s/m (tau about 3 ms), b = 0.3 mm with a 5 kg load on 500 N s/m
   (10 ms): linear guides and rod seals.
+
+A third form, ``in_loop``, is the play when the loop is closed on the
+measured output itself (a load-side sensor and no motor encoder): the
+controller sees the play, so at each reversal it drives the motor across
+the gap while the measurement stands still, and the motor then overshoots
+what a post-processed play would show (field ``loop_backlash`` of
+sizing/sim/dc_motor.py, a play operator sampled with the loop). Its
+signature is in the position alone, at the reversals, where no form on the
+motor side reproduces it. Sizes: 0.1 and 0.3 mm, as the play.
 """
 from __future__ import annotations
 
@@ -98,5 +107,11 @@ COASTING = CoastingBacklash(
     sizes=({"backlash_m": 1e-4, "coast_time_s": 3e-3}, {"backlash_m": 3e-4, "coast_time_s": 1e-2}),
     source="dead-zone backlash model with load inertia (Nordin and Gutman, Automatica 38 (2002) 1633)", post=True)
 
+IN_LOOP = Effect(
+    name="backlash", technology="dc_motor", form="in_loop",
+    params=(Param("backlash_m", 0.0, 2e-3, doc="total play between motor and measured output"),),
+    sizes=({"backlash_m": 1e-4}, {"backlash_m": 3e-4}), fields={"backlash_m": "loop_backlash"},
+    source="play operator inside the position loop (Nordin and Gutman, Automatica 38 (2002) 1633, sec. 2)")
+
 # the forms this module adds to the library (effects.library), the family's default first
-FORMS = (PLAY, COASTING)
+FORMS = (PLAY, COASTING, IN_LOOP)

@@ -82,6 +82,12 @@ class Effect:
         """False when the nominal model already contains the effect."""
         return True
 
+    def for_rig(self, rig, model) -> "Effect":
+        """This effect with its parameter bounds for this rig: itself, unless
+        a bound depends on the rig's nominal (an effect that acts one way
+        only, e.g. a softening, ends at the nominal value of its field)."""
+        return self
+
     def sizes_for(self, rig, model) -> tuple:
         """Two realistic sizes for this rig: the declared ones, or the
         nominal value of the one field times each of ``nominal_factors``."""

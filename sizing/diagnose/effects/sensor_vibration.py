@@ -11,7 +11,7 @@ mount, H(s) = -g s^2 / (s^2 + 2 zeta w s + w^2)), discretised by the
 bilinear transform. Sizes: 20 Hz, zeta 0.02, g 0.2 and 12 Hz, zeta 0.01,
 g 0.3 (a sensor on a light bracket; about 0.1-0.3 mm of ringing after a
 current-limited step). Screening also starts from the lines of the training
-residual's spectrum (spectrum.py): for each line frequency and a few
+residual's spectrum (sizing/spectrum.py): for each line frequency and a few
 damping ratios the gain, to which the ringing is proportional, is solved
 by least squares.
 
@@ -19,7 +19,7 @@ Form "sinusoid" (an additive disturbance: a pump, a fan, mains pick-up, a
 neighbouring machine): measured = y + A_r sin(2 pi f t + phase_r). Its
 frequency f is a property of the disturbance and is fitted on the training
 runs, started at the strongest line of their residual spectrum (a peak
-well above the spectrum's local median, spectrum.py) and refined;
+well above the spectrum's local median, sizing/spectrum.py) and refined;
 amplitude and phase are linear once f is fixed (a sin + b cos) and are
 solved by least squares on each run, the holdout runs included: the phase
 relative to the start of a run is not a property of the rig, and the
@@ -33,29 +33,9 @@ from __future__ import annotations
 import dataclasses
 
 import numpy as np
-from scipy import signal
-
-from .. import spectrum
+from ... import spectrum
+from ...physics.sensor_mount import mount_response
 from .base import Effect, Param
-
-
-def mount_response(t: np.ndarray, y: np.ndarray, freq: float, zeta: float, gain: float) -> np.ndarray:
-    """z(t) of the mount driven by the measured motion y(t) (evenly sampled
-    on the median step)."""
-    if gain == 0.0:
-        return np.zeros_like(np.asarray(y, float))   # no mount motion (and no all-zero filter)
-    fs = 1.0 / float(np.median(np.diff(t)))
-    freq = min(freq, 0.45 * fs)
-    w = 2 * np.pi * freq
-    # bilinear (Tustin) transform of -gain s^2 / (s^2 + 2 zeta w s + w^2),
-    # written out: scipy's bilinear warns of a badly conditioned numerator
-    # for the tiny gains the screen tries, though the section is exact
-    k = 2.0 * fs
-    a0 = k * k + 2 * zeta * w * k + w * w
-    b = -gain * k * k * np.array([1.0, -2.0, 1.0]) / a0
-    a = np.array([1.0, (2 * w * w - 2 * k * k) / a0, (k * k - 2 * zeta * w * k + w * w) / a0])
-    y0 = y - y[0]
-    return signal.lfilter(b, a, y0)
 
 
 DAMPING_STARTS = (0.005, 0.01, 0.02, 0.05, 0.1)

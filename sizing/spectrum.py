@@ -1,4 +1,4 @@
-"""Spectral lines of a residual: narrow peaks well above the residual
+"""Spectral lines of a residual (shared by the fits and the diagnosis): narrow peaks well above the residual
 spectrum's local level, and a sinusoid fitted at a line.
 
 A *line* is a bin of the Hann-windowed periodogram of a residual that
@@ -187,14 +187,3 @@ def line_removal(base: list, references: list | None, candidate: list | None) ->
     removed = 0.0 if candidate is None or before <= 0 else float(1.0 - min(after / before, 1.0))
     return {"frequencies_Hz": [f for f, _ in found], "ratio": min(r for _, r in found),
             "share": before / max(total, 1e-300), "removed": removed}
-
-
-def gap_lines(bench, nominal: list, candidate: list | None) -> dict | None:
-    """The lines of the holdout gap and how much of them a candidate removes
-    (``line_removal`` of the baseline residuals, measured - nominal).
-    ``nominal`` and ``candidate``: simulated positions (n,) of the holdout
-    runs (bench.holdout order)."""
-    runs = [bench.runs[i] for i in bench.holdout]
-    base = [(r.t, r.y - y) for r, y in zip(runs, nominal)]
-    after = None if candidate is None else [(r.t, r.y - y) for r, y in zip(runs, candidate)]
-    return line_removal(base, nominal, after)

@@ -69,12 +69,10 @@ def _defined_names() -> set[str]:
 NOT_CONSTANTS = re.compile(r"^(OPENBLAS_|MKL_|OMP_|NUMBA_|SIZING_)|^[A-Z]+\d|^[A-Z]{1,3}_\d|^[A-Z]_[A-Z0-9]{1,2}$")
 
 
-@pytest.mark.parametrize("part", ["api", "engine", "fit", "io", "physics", "report", "sim", "studies", ""])
+@pytest.mark.parametrize("part", ["api", "diagnose", "engine", "fit", "io", "physics", "report", "sim", "studies", "technologies", ""])
 def test_docstrings_and_comments_name_constants_that_exist(part):
     """Constant-style names in prose (``TRAVEL_FACTOR``) are defined
-    somewhere in the package. ``""``: the modules at the package's top;
-    sizing/diagnose/ joins the list once its prose names the fields of its
-    ``Settings`` rather than module constants."""
+    somewhere in the package. ``""``: the modules at the package's top."""
     sources = _sources()
     defined = _defined_names()
     folder = PACKAGE / part if part else PACKAGE

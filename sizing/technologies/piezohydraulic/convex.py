@@ -502,6 +502,8 @@ class _ConeData:
         self.m, self.n, self.split = shape[0], n, int(indptr[n])
         self.a_indices, self.a_indptr = np.asarray(indices[:self.split]), np.asarray(indptr[:n + 1])
         self.b_rows = np.asarray(indices[self.split:])
+        self.b_unique = np.unique(self.b_rows).size == self.b_rows.size
+        self.A = None
         # the parameter vector as canonInterface.get_parameter_vector lays it out: scalars only
         self.params = [p for p, _ in logs]
         if any(prog.param_id_to_size[log_p.id] != 1 for _, log_p in logs):
@@ -533,18 +535,26 @@ class _ConeData:
         vec[self.columns] = np.log(np.array([p.value for p in self.params], dtype=float))
         return vec
 
-    def data(self) -> dict:
+    def data(self, copy: bool = True) -> dict:
+        """The solver's data at the parameters' current values (``copy``
+        False: A is the one matrix this object refills on every call)."""
         vec = self.vector()
         c = np.asarray(self.prog.q @ vec).ravel()
         flat = np.asarray(self.prog.reduced_A.reduced_mat @ vec).ravel()
-        A = sp.csc_array((-flat[:self.split], self.a_indices, self.a_indptr), shape=(self.m, self.n))
+        if self.A is None:
+            self.A = sp.csc_array((-flat[:self.split], self.a_indices, self.a_indptr), shape=(self.m, self.n))
+        A = self.A.copy() if copy else self.A
+        A.data = -flat[:self.split]    # the pattern is fixed: scipy's checks once, not per solve
         b = np.zeros(self.m)
-        np.add.at(b, self.b_rows, flat[self.split:])
+        if self.b_unique:
+            b[self.b_rows] += flat[self.split:]     # what np.add.at gives when no row repeats
+        else:
+            np.add.at(b, self.b_rows, flat[self.split:])
         return {**self.base, cvx.A: A, cvx.B: b, cvx.C: c[:-1]}
 
     def solve(self):
         """Clarabel's solution of the program at the parameters' current values."""
         import clarabel
-        data = self.data()
+        data = self.data(copy=False)
         return clarabel.DefaultSolver(self.P, data[cvx.C], data[cvx.A], data[cvx.B], self.cones,
                                       self.settings).solve()

@@ -23,14 +23,15 @@ the solve runs it (each program compiled once, re-solved by handing the
 cone data to Clarabel) against cvxpy's own re-solve of the same programs
 (``problem.solve(gp=True)`` every time), on every ``--stride``-th input, in
 the same run; the answers are compared too. Figures on this 2-core machine
-(load 8-9, CPU seconds): the 936 programs in 2.8 s (3.0 ms each, about
-seven tenths of it Clarabel's own 23 iterations over 72 exponential
-cones); every 8th program 0.32 s against 1.12 s through cvxpy, x3.5, the
-same feasibility and binding requirements, the points within 4e-5. Before
-the re-solves called Clarabel directly (through cvxpy's
-``solve_via_data``, cones, settings and sparse checks rebuilt per solve)
-the seed's 1079 programs took 3.5-3.8 s against 3.1-3.3 s now, the whole
---fast solve 6.7 s against 5.9 s (same run, load 8).
+(CPU seconds, load 3-8): the 936 programs in 2.2-2.8 s (2.3-3.0 ms each,
+about seven tenths of it Clarabel's own 23 iterations over 72 exponential
+cones); every 8th program 0.29-0.32 s against 0.74-1.12 s through cvxpy,
+x2.5-3.5, the same feasibility and binding requirements, the points within
+4e-5. Before the re-solves called Clarabel directly (through cvxpy's
+``solve_via_data``, with the cones, settings and sparse checks rebuilt per
+solve) the seed's 1079 programs took 3.4-3.6 s against 2.8-3.1 s now, and
+the whole --fast solve (the engine, no files) 7.1 s against 5.9 s (same
+run, load 5-8); the answers are bitwise the same.
 """
 from __future__ import annotations
 

@@ -517,6 +517,8 @@ class _ConeData:
 
     @classmethod
     def of(cls, solver, prog, logs) -> "_ConeData | None":
+        if solver.name() != "CLARABEL":     # ``solve`` speaks Clarabel's interface
+            return None
         try:
             for p, log_p in logs:
                 log_p.save_value(np.log(p.value))

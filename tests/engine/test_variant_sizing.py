@@ -135,3 +135,37 @@ def test_a_design_held_at_the_units_cap_says_so(sized_seed):
     assert d.static["amplifier_units"] == 6 and d.static["amplifier_units_at_cap"] == 1.0
     assert d.static_margins["amplifier_units"] < 0 and d.static_margins["speed"] < 0
     assert d.amplifier_units == 6 and d.ramp_time > free.ramp_time
+
+
+def test_direct_re_solves_find_cvxpy_s_optimum_on_seed_inputs():
+    """Seed programs (every 40th of the search's combinations and variants,
+    feasible and not) re-solved by handing the compiled cone data to
+    Clarabel against cvxpy's own ``problem.solve(gp=True)`` of the same
+    program: the same feasibility and binding requirements, the same
+    optimum (mass x cost at the point each returns) and the same point,
+    within the solver's tolerance."""
+    req, _ = load_requirements(STUDIES / "seed-requirements.toml")
+    catalog = load_catalog()
+    brief = PiezoBrief.of(req)
+    vs = piezo_designs.variants(brief, catalog)
+    inputs = [piezo_designs.sizing_input(brief, c, v.material, v.compensator)
+              for c in enumerate_combos(req, catalog) if not c.pruned for v in vs][::40]
+    fast, plain = GPSizer(brief.objectives), GPSizer(brief.objectives)
+    for run in plain._runs.values():
+        run.direct = False
+    for s in inputs:                   # compile first, so that the comparison below is of direct re-solves
+        fast.solve(s)
+    infeasible = 0
+    for s in inputs:
+        a = fast.solve(s)
+        optimum = fast.problem.objective.value if a.success else None
+        b = plain.solve(s)
+        assert a.success == b.success and a.binding == b.binding
+        infeasible += not a.success
+        if a.success:
+            assert optimum == pytest.approx(plain.problem.value, rel=1e-6)
+        for name in ("ratio", "wide_area", "voltage_fraction", "cap_thickness", "frame_area", "wide_gap",
+                     "amplifier_units_sized"):
+            assert getattr(a, name) == pytest.approx(getattr(b, name), rel=1e-3), name
+    assert infeasible and infeasible < len(inputs)
+    assert all(run.compiled is not None and run.cone_data is not None for run in fast._runs.values())

@@ -387,7 +387,7 @@ class GPSizer:
         # closest design of bounded size misses each binding requirement by
         # RELAXED_MISS times as much (in log terms) and is otherwise the optimum
         for k in CONSTRAINTS:
-            self.allowed[k].value = max(slack[k], 1.0) ** (RELAXED_MISS if k in binding else 1.0) * FEASIBLE_SLACK
+            _assign(self.allowed[k], max(slack[k], 1.0) ** (RELAXED_MISS if k in binding else 1.0) * FEASIBLE_SLACK)
         if self._run(self.relaxed) in ("optimal", "optimal_inaccurate"):
             point = self._point()
         return SizingResult(False, *point, slack=slack, binding=binding, status=status)
@@ -399,6 +399,15 @@ class GPSizer:
 
     def _run(self, problem: cp.Problem) -> str:
         return self._runs[id(problem)].run()
+
+
+def _assign(par: cp.Parameter, value: float) -> None:
+    """A positive parameter's value: saved as it is when positive and
+    finite (cvxpy's own check then passes), else through cvxpy's check."""
+    if 0 < value < math.inf:
+        par.save_value(np.asarray(float(value)))
+    else:
+        par.value = value
 
 
 class _Resolver:
@@ -448,15 +457,17 @@ class _Resolver:
         except (AttributeError, KeyError, StopIteration, TypeError):
             self.direct = False
             return
-        self.cone_data = _ConeData.of(chain.solver, prog)
+        self.cone_data = _ConeData.of(chain.solver, prog, logs)
 
     def _direct(self) -> str:
         solver, prog, logs, cols = self.compiled
-        for p, log_p in logs:
-            log_p.save_value(np.log(p.value))
         try:
-            data = self.cone_data.data() if self.cone_data is not None else solver.apply(prog)[0]
-            raw = solver.solve_via_data(data, False, False, {})
+            if self.cone_data is not None:
+                raw = self.cone_data.solve()
+            else:
+                for p, log_p in logs:
+                    log_p.save_value(np.log(p.value))
+                raw = solver.solve_via_data(solver.apply(prog)[0], False, False, {})
         except Exception:                       # the solver's own failure: as cvxpy reports it
             return "solver_error"
         status = solver.STATUS_MAP.get(str(raw.status), "solver_error")
@@ -474,21 +485,45 @@ class _ConeData:
     A and b read off the fixed sparsity pattern. ``of`` checks that both
     give the same arrays, entry for entry, and returns None otherwise (the
     solver's own ``apply`` is used then); half the time of a re-solve went
-    into scipy building and slicing those matrices."""
+    into scipy building and slicing those matrices.
 
-    def __init__(self, solver, prog, base: dict):
+    ``solve`` hands those arrays to Clarabel as cvxpy's ``solve_via_data``
+    does (the same empty quadratic term, cones and default settings, so
+    the same iterates), with the cones and settings built once: after the
+    solver's own work, what is left of a re-solve is filling the parameter
+    vector (the parameters' logarithms, in the reduced map's columns)."""
+
+    def __init__(self, solver, prog, base: dict, logs: list):
+        from cvxpy.cvxcore.python import canonInterface
+        from cvxpy.reductions.solvers.conic_solvers.clarabel_conif import dims_to_solver_cones
         self.solver, self.prog, self.base = solver, prog, base
         indices, indptr, shape = prog.reduced_A.problem_data_index
         n = prog.x.size
         self.m, self.n, self.split = shape[0], n, int(indptr[n])
         self.a_indices, self.a_indptr = np.asarray(indices[:self.split]), np.asarray(indptr[:n + 1])
         self.b_rows = np.asarray(indices[self.split:])
+        self.b_unique = np.unique(self.b_rows).size == self.b_rows.size
+        self.A = None
+        # the parameter vector as canonInterface.get_parameter_vector lays it out: scalars only
+        self.params = [p for p, _ in logs]
+        if any(prog.param_id_to_size[log_p.id] != 1 for _, log_p in logs):
+            raise ValueError("only scalar parameters are laid out here")
+        self.columns = np.array([prog.param_id_to_col[log_p.id] for _, log_p in logs], dtype=np.intp)
+        self.template = canonInterface.get_parameter_vector(
+            prog.total_param_size, prog.param_id_to_col, prog.param_id_to_size, lambda i: np.zeros(1))
+        self.cones = dims_to_solver_cones(base[cvx.DIMS])
+        self.P = sp.triu(sp.csc_array((n, n))).tocsc()
+        self.settings = solver.parse_solver_opts(False, {})
 
     @classmethod
-    def of(cls, solver, prog) -> "_ConeData | None":
+    def of(cls, solver, prog, logs) -> "_ConeData | None":
+        if solver.name() != "CLARABEL":     # ``solve`` speaks Clarabel's interface
+            return None
         try:
+            for p, log_p in logs:
+                log_p.save_value(np.log(p.value))
             reference, _ = solver.apply(prog)
-            mine = cls(solver, prog, {k: v for k, v in reference.items() if k not in (cvx.A, cvx.B, cvx.C)})
+            mine = cls(solver, prog, {k: v for k, v in reference.items() if k not in (cvx.A, cvx.B, cvx.C)}, logs)
             data = mine.data()
             same = (data[cvx.A].shape == reference[cvx.A].shape and (data[cvx.A] != reference[cvx.A]).nnz == 0
                     and np.array_equal(data[cvx.B], reference[cvx.B]) and np.array_equal(data[cvx.C], reference[cvx.C]))
@@ -496,15 +531,32 @@ class _ConeData:
             return None
         return mine if same else None
 
-    def data(self) -> dict:
-        from cvxpy.cvxcore.python import canonInterface
-        prog = self.prog
-        vec = canonInterface.get_parameter_vector(prog.total_param_size, prog.param_id_to_col,
-                                                  prog.param_id_to_size,
-                                                  lambda i: np.asarray(prog.id_to_param[i].value))
-        c = np.asarray(prog.q @ vec).ravel()
-        flat = np.asarray(prog.reduced_A.reduced_mat @ vec).ravel()
-        A = sp.csc_array((-flat[:self.split], self.a_indices, self.a_indptr), shape=(self.m, self.n))
+    def vector(self) -> np.ndarray:
+        """The reduced map's parameter vector: each parameter's logarithm in its column."""
+        vec = self.template.copy()
+        vec[self.columns] = np.log(np.array([p.value for p in self.params], dtype=float))
+        return vec
+
+    def data(self, copy: bool = True) -> dict:
+        """The solver's data at the parameters' current values (``copy``
+        False: A is the one matrix this object refills on every call)."""
+        vec = self.vector()
+        c = np.asarray(self.prog.q @ vec).ravel()
+        flat = np.asarray(self.prog.reduced_A.reduced_mat @ vec).ravel()
+        if self.A is None:
+            self.A = sp.csc_array((-flat[:self.split], self.a_indices, self.a_indptr), shape=(self.m, self.n))
+        A = self.A.copy() if copy else self.A
+        A.data = -flat[:self.split]    # the pattern is fixed: scipy's checks once, not per solve
         b = np.zeros(self.m)
-        np.add.at(b, self.b_rows, flat[self.split:])
+        if self.b_unique:
+            b[self.b_rows] += flat[self.split:]     # what np.add.at gives when no row repeats
+        else:
+            np.add.at(b, self.b_rows, flat[self.split:])
         return {**self.base, cvx.A: A, cvx.B: b, cvx.C: c[:-1]}
+
+    def solve(self):
+        """Clarabel's solution of the program at the parameters' current values."""
+        import clarabel
+        data = self.data(copy=False)
+        return clarabel.DefaultSolver(self.P, data[cvx.C], data[cvx.A], data[cvx.B], self.cones,
+                                      self.settings).solve()

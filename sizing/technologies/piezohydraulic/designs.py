@@ -147,7 +147,10 @@ def designs(b: PiezoBrief, catalog, sized) -> list[PiezoDesign]:
 
 def _solved(sizer: GPSizer, s: SizingInput) -> SizingResult:
     """``sizer.solve(s)``, read back when the same program was solved inside
-    ``stage_cache.reuse()`` (the re-solves behind the flips)."""
+    ``stage_cache.reuse()`` (the re-solves behind the flips); outside it
+    nothing is kept, so no key is built (a key copies every input field)."""
+    if not stage_cache.active():
+        return sizer.solve(s)
     return stage_cache.cached(stage_cache.gp_key(sizer.objectives, s), lambda: sizer.solve(s))
 
 

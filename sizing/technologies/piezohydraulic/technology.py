@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..registry import Group, Technology
-from . import designs, stage, words
+from . import designs, presentation, stage, words
 from .verify import simulate_cases
 
 
@@ -34,6 +34,19 @@ def traces(req, c: dict, stages, loads) -> list[dict] | None:
     return [{"load_N": float(s["load_N"][0]), "t": s["t"], "position_m": s["position_m"][0]} for s in sims]
 
 
+def evaluate(design, catalog, file: str) -> dict:
+    """``sizing evaluate`` of one design file (loaded when asked, not with the registry)."""
+    from ...engine.evaluate import evaluate_piezo
+    return evaluate_piezo(design, catalog, file)
+
+
+def verify_perturbed(task, tols, f, temps):
+    """Its perturbed samples through its own checks (``perturbed``, loaded
+    when robust runs, not with the registry)."""
+    from .perturbed import verify_perturbed
+    return verify_perturbed(task, tols, f, temps)
+
+
 TECHNOLOGY = Technology(
     name="piezohydraulic", label="piezohydraulic", order=0,
     part_kinds=("stack", "fluid", "seal", "amplifier", "material", "compensator"),
@@ -50,4 +63,5 @@ TECHNOLOGY = Technology(
     results_fields=lambda catalog: {"hysteresis_time_scales": designs.hysteresis_time_scales(catalog)},
     in_every_sweep_point=True, compared_with="dc_motor",
     perturbable=lambda candidate, asked: True,
+    evaluate=evaluate, verify_perturbed=verify_perturbed, report=presentation.PRESENTATION,
 )

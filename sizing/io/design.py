@@ -30,6 +30,11 @@ class LoadTable(Strict):
         return value
 
 
+def n_loads(load: LoadTable) -> int:
+    """How many load cases a design file's load gives."""
+    return len(load.force) if load.force is not None else len(load.dynamic_pressure)
+
+
 class PiezoDesignFile(Strict):
     technology: Literal["piezohydraulic"]
     stack: str

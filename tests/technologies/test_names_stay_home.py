@@ -19,7 +19,6 @@ HOME = "technologies/"
 
 # module (relative to sizing/) -> how many times it names a technology today
 STILL_NAMED = {
-    "api/checks.py": 5,
     "api/fitting.py": 6,
     "cli.py": 1,
     "diagnose/bench.py": 11,

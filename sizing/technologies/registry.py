@@ -76,6 +76,7 @@ class Technology:
     comparison_words: Callable | None = None    # (its comparison entry) -> the sentence that states them
     # (candidate, the technology robust was asked for or None) -> whether robust perturbs the candidate's parts
     perturbable: Callable = field(default=lambda candidate, asked: False)
+    thermal_statement: Callable | None = None   # (req, candidates) -> its words in results.json ``summary.thermal``
     evaluate: Callable | None = None        # (its design file, catalog, file name) -> ``sizing evaluate``'s figures
     # (robust's BatchTask, its tolerances, their factors, temperatures) -> (candidate per sample, simulated s)
     verify_perturbed: Callable | None = None

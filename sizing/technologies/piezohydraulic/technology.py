@@ -6,6 +6,7 @@ import numpy as np
 
 from ..registry import Group, Technology
 from . import designs, presentation, stage, words
+from .thermal_words import thermal_statement
 from .verify import simulate_cases
 
 
@@ -63,5 +64,5 @@ TECHNOLOGY = Technology(
     results_fields=lambda catalog: {"hysteresis_time_scales": designs.hysteresis_time_scales(catalog)},
     in_every_sweep_point=True, compared_with="dc_motor",
     perturbable=lambda candidate, asked: True,
-    evaluate=evaluate, verify_perturbed=verify_perturbed, report=presentation.PRESENTATION,
+    thermal_statement=thermal_statement, evaluate=evaluate, verify_perturbed=verify_perturbed, report=presentation.PRESENTATION,
 )

@@ -42,7 +42,7 @@ STILL_NAMED = {
     "diagnose/recalibrate.py": 4,
     "diagnose/synth.py": 2,
     "engine/comparison.py": 1,
-    "engine/evaluate.py": 7,
+    "engine/evaluate.py": 4,
     "engine/flip.py": 7,
     "engine/holding.py": 1,
     "engine/judge.py": 13,

@@ -31,7 +31,7 @@ def traces(req, c: dict, stages, loads) -> list[dict] | None:
 
 def evaluate(design, catalog, file: str) -> dict:
     """``sizing evaluate`` of one design file (loaded when asked, not with the registry)."""
-    from ...engine.evaluate import evaluate_dc
+    from .evaluate_file import evaluate_dc
     return evaluate_dc(design, catalog, file)
 
 

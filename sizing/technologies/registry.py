@@ -78,6 +78,8 @@ class Technology:
     perturbable: Callable = field(default=lambda candidate, asked: False)
     thermal_statement: Callable | None = None   # (req, candidates) -> its words in results.json ``summary.thermal``
     evaluate: Callable | None = None        # (its design file, catalog, file name) -> ``sizing evaluate``'s figures
+    # (req, catalog, candidate, the solve's records.Stages or None) -> what robust perturbs of the candidate
+    study_design: Callable | None = None
     # (robust's BatchTask, its tolerances, their factors, temperatures) -> (candidate per sample, simulated s)
     verify_perturbed: Callable | None = None
     report: Presentation = PLAIN            # how the report draws, tables and counts its designs

@@ -46,7 +46,7 @@ STILL_NAMED = {
     "engine/judge.py": 13,
     "engine/records.py": 12,
     "engine/resolve.py": 20,
-    "engine/sized.py": 15,
+    "engine/sized.py": 9,
     "engine/solve_summary.py": 1,
     "fit/dc_motor.py": 4,
     "io/campaign.py": 1,

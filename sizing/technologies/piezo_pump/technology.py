@@ -36,6 +36,12 @@ def verify_perturbed(task, tols, f, temps):
     return verify_perturbed(task, tols, f, temps)
 
 
+def study_design(req, catalog, c: dict, stages):
+    """What robust perturbs: the pump's design file, from its record."""
+    from .evaluate import design_from_candidate
+    return design_from_candidate(req, c)
+
+
 TECHNOLOGY = Technology(
     name="piezo_pump", label="piezo pump", order=2,
     part_kinds=("stack", "amplifier", "fluid", "seal", "valve", "accumulator"),
@@ -46,5 +52,5 @@ TECHNOLOGY = Technology(
     compared_with="dc_motor", comparison_fields=pump_power, comparison_words=pump_power_words,
     # only when asked for: its parts have no tolerance model in the probability of compliance yet
     perturbable=lambda candidate, asked: asked == "piezo_pump" and candidate.get("stage") == "simulated",
-    evaluate=evaluate, verify_perturbed=verify_perturbed, report=presentation.PRESENTATION,
+    evaluate=evaluate, study_design=study_design, verify_perturbed=verify_perturbed, report=presentation.PRESENTATION,
 )

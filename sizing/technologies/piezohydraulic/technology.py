@@ -48,6 +48,14 @@ def verify_perturbed(task, tols, f, temps):
     return verify_perturbed(task, tols, f, temps)
 
 
+def study_design(req, catalog, c: dict, stages):
+    """What robust perturbs: the (Combo, Variant, SizingResult) triple, as
+    the solve sized it or read back from its record."""
+    from ...engine.sized import sized_designs
+    held = stages.by_id.get(c["id"]) if stages is not None else None
+    return held.sized if held is not None else sized_designs(req, catalog, [c])[0]
+
+
 TECHNOLOGY = Technology(
     name="piezohydraulic", label="piezohydraulic", order=0,
     part_kinds=("stack", "fluid", "seal", "amplifier", "material", "compensator"),
@@ -64,5 +72,6 @@ TECHNOLOGY = Technology(
     results_fields=lambda catalog: {"hysteresis_time_scales": designs.hysteresis_time_scales(catalog)},
     in_every_sweep_point=True, compared_with="dc_motor",
     perturbable=lambda candidate, asked: True,
-    thermal_statement=thermal_statement, evaluate=evaluate, verify_perturbed=verify_perturbed, report=presentation.PRESENTATION,
+    thermal_statement=thermal_statement, evaluate=evaluate, study_design=study_design,
+    verify_perturbed=verify_perturbed, report=presentation.PRESENTATION,
 )

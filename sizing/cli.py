@@ -119,7 +119,7 @@ def _version(value: bool):
 @app.callback()
 def main_options(version: bool = typer.Option(False, "--version", callback=_version, is_eager=True,
                                               help="Print the version and exit.")):
-    """sizing: piezohydraulic and DC-motor actuators, from requirements to hardware."""
+    """sizing: smart-material and motor actuators, from requirements to hardware."""
 
 
 def _print_json(data) -> None:
@@ -461,7 +461,7 @@ def robust(requirements: Path = typer.Argument(..., help="requirements.toml (doc
            bouc_wen_fit: Optional[Path] = typer.Option(None, "--bouc-wen-fit", help="Output of sizing fit hysteresis: "
                                                        "its standard errors become tolerances of the stacks' Bouc-Wen parameters."),
            technology: Optional[str] = typer.Option(None, "--technology", help="Study only the best designs of this "
-                                                    "technology: piezohydraulic, dc_motor or piezo_pump (default: the best of the first two)."),
+                                                    "technology (a folder name of sizing/technologies; default: every one whose parts have a tolerance model)."),
            quiet: bool = typer.Option(False, "--quiet", help="No progress bar and no summary.")):
     """Probability of compliance of the best designs under part tolerances (Monte Carlo, full simulations)."""
     data = _run_study(api.robust, quiet, workers, requirements, out, catalog, samples=samples, seed=seed,

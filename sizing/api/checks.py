@@ -7,39 +7,40 @@ from pathlib import Path
 
 from ..errors import InputError
 from ..io.catalog import Catalog
-from ..io.design import PiezoDesignFile
 
 
-def n_loads(load) -> int:
-    return len(load.force) if load.force is not None else len(load.dynamic_pressure)
+def _checks(technology: str):
+    """A technology's ``checks`` module, imported by its folder's name (the
+    registry would load every technology's engine); None when it has none."""
+    import importlib
+    module = f"{__package__.rpartition('.')[0]}.technologies.{technology}.checks"
+    try:
+        return importlib.import_module(module)
+    except ModuleNotFoundError as exc:
+        if exc.name and module.startswith(exc.name):
+            return None
+        raise
 
 
 def check_evaluate_steps(design, cat: Catalog, file: str) -> None:
     """Refuse a design whose simulation would need more steps than the
-    limit: duration x rate x load cases."""
-    from ..technologies.dc_motor.actuator import output_rate
-    from ..technologies.piezohydraulic.verify import SETTLE_TIME_S
-    from ..limits import check_steps, dc_steps, piezo_steps
-    if isinstance(design, PiezoDesignFile):
-        ramp = design.ramp_time if design.ramp_time is not None else design.rise_time
-        check_steps(piezo_steps(ramp + SETTLE_TIME_S, n_loads(design.load)), file, "rise_time",
-                    "simulation steps (rise time x 20 kHz x load cases)")
-    elif getattr(design, "actuator", None) in cat.dc_actuators:
-        rate, out = cat.dc_actuators[design.actuator].pid.rate, output_rate(design.duration)
-        check_steps(dc_steps(design.duration, rate, n_loads(design.load), out), file, "duration",
-                    f"simulation steps (duration x {max(rate, out):g} Hz x load cases)")
+    limit (its technology's ``checks.check_design_steps``)."""
+    check = getattr(_checks(design.technology), "check_design_steps", None)
+    if check is not None:
+        check(design, cat, file)
 
 
 def check_solve_steps(req, cat: Catalog, file: str) -> None:
-    """Refuse requirements whose DC verification would need more steps than
-    the limit: catalog actuators x load cases x simulated time. The
-    piezohydraulic designs are simulated within what is left
-    (``technologies.piezohydraulic.stage.piezo_simulation_budget``): a slow, long stroke
-    simulates fewer of them, or none, instead of stopping the solve."""
-    from ..technologies.dc_motor.stage import dc_actuator_steps
-    from ..limits import check_steps
-    check_steps(dc_actuator_steps(req, cat), file, "[requirements].stroke",
-                "simulation steps (DC actuators x load cases x stroke / speed)")
+    """Refuse requirements whose verification would need more steps than
+    the limit (each technology's ``checks.check_requirements_steps``); the
+    technologies without such a check simulate within what is left (a slow,
+    long stroke simulates fewer designs, or none, instead of stopping the
+    solve); then the envelope."""
+    from ..technologies.registry import names
+    for technology in names():
+        check = getattr(_checks(technology), "check_requirements_steps", None)
+        if check is not None:
+            check(req, cat, file)
     check_envelope(req, cat, file)
 
 

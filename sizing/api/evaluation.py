@@ -5,7 +5,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..io.catalog import load_catalog
-from ..io.design import PiezoDesignFile, load_design
+from ..io.design import load_design
 from .checks import check_evaluate_steps, check_solve_steps
 from .output import Payload
 
@@ -40,7 +40,6 @@ def evaluate(design_path: str | Path, catalog_dir: str | Path | None = None,
     the checks of ``sizing solve``; the figures then add ``margins``,
     ``feasible``, ``driver`` and ``judged`` (the solve's metrics and
     static margins of the design, engine/judge.py)."""
-    from ..io.design import PumpDesignFile
     from ..io.provenance import assumed_values
 
     design = load_design(design_path)
@@ -51,11 +50,8 @@ def evaluate(design_path: str | Path, catalog_dir: str | Path | None = None,
         from ..io.requirements import load_requirements
         req = load_requirements(requirements)[0]
         check_solve_steps(req, cat, str(requirements))
-    from ..engine.evaluate import evaluate_dc, evaluate_piezo     # cvxpy and numba load once the inputs read well
-    from ..technologies.piezo_pump.evaluate import evaluate_pump
-    run = (evaluate_pump if isinstance(design, PumpDesignFile)
-           else evaluate_piezo if isinstance(design, PiezoDesignFile) else evaluate_dc)
-    figures = run(design, cat, str(design_path))
+    from ..technologies.registry import get     # cvxpy and numba load once the inputs read well
+    figures = get(design.technology).evaluate(design, cat, str(design_path))
     parts = {k: v for k, v in figures["design"].items() if k in PART_KEYS}
     figures["assumed"] = assumed_values(cat, parts)     # the catalog values this result rests on that are assumed
     if req is not None:
@@ -65,7 +61,7 @@ def evaluate(design_path: str | Path, catalog_dir: str | Path | None = None,
 
 def judge_designs(design_paths: list, requirements: str | Path, catalog_dir: str | Path | None = None) -> list[dict]:
     """What ``evaluate --requirements`` adds, for several design files at
-    once (their piezohydraulic simulations batched as the solve's):
+    once (their simulations batched as the solve's):
     per file ``margins``, ``feasible``, ``driver`` and ``judged``."""
     from ..engine.judge import judge_all
     from ..io.requirements import load_requirements

@@ -65,7 +65,7 @@ def robust(requirements_path: str | Path, out_dir: str | Path | None = "robust-o
            workers: int = 0, cluster=None, progress=None, bouc_wen_fit: str | Path | None = None,
            technology: str | None = None) -> StudyResult:
     """Probability of compliance of the ``designs`` best designs of ``solve``
-    (piezohydraulic and DC from parts; only ``technology``'s when given)
+    (those whose parts robust can perturb; only ``technology``'s when given)
     under the [tolerances] (docs/formats.md). ``workers`` > 0: a
     local Dask cluster of that many processes; ``scheduler``: a running one;
     ``cluster``: a dask cluster object. ``bouc_wen_fit``: a ``sizing fit
@@ -102,7 +102,7 @@ def run_robust(requirements_path, catalog_dir=None, samples: int = 1000, seed: i
         results = solved.results
         picked = pick_designs(results, designs, technology)
         if not picked:
-            raise InputError(str(requirements_path), None, "no sized design (piezohydraulic, or DC from parts) "
+            raise InputError(str(requirements_path), None, "no sized design whose parts have a tolerance model "
                                                            f"to study{'' if technology is None else ' of ' + technology}")
         data = study(req, cat, picked, samples, seed, ex, extra_spreads=extra, progress=_stage(progress, "sampling"),
                      stages=solved.stages)        # the solve's own records, not re-read from results

@@ -15,7 +15,7 @@ from ..technologies.registry import get as technology, technologies
 
 
 def actuator_noun(name: str) -> str:
-    """"DC motor actuator": what a technology's designs are called."""
+    """What a technology's designs are called (its label and "actuator")."""
     tech = technology(name)
     return tech.actuator if tech is not None else name
 

@@ -1,4 +1,6 @@
-"""Evaluate one design file: static figures and simulated load cases."""
+"""Evaluate one design file: static figures and simulated load cases (the
+stacks-and-oil design here; the others in their technology's folder, each
+reached through ``Technology.evaluate``), and what every evaluation shares."""
 from __future__ import annotations
 
 import math
@@ -7,10 +9,9 @@ import numpy as np
 
 from ..errors import InputError
 from ..io.catalog import Catalog
-from ..io.design import DCDesignFile, PiezoDesignFile
+from ..io.design import PiezoDesignFile
 from ..physics import hydraulics, structure, thermal
 from . import holding
-from ..technologies.dc_motor import actuator as dc_engine
 from ..technologies.piezohydraulic import force_path
 from .loads import load_cases, surface_mass
 from ..technologies.piezohydraulic.parts import (DEFAULT_PRESSURE_RATING_PA, Candidates, part_row, reference_bouc_wen, stack_bouc_wen,
@@ -72,7 +73,7 @@ def evaluate_piezo(design: PiezoDesignFile, catalog: Catalog, file: str) -> dict
     cases = load_cases(design.load)
     sims = simulate_cases(c, [case["load_N"] for case in cases], ramp,
                           load_stiffness=design.load.stiffness)
-    simulated = holding.held_cases([dict(case, **{k: _num(v[0]) for k, v in sim.items()})
+    simulated = holding.held_cases([dict(case, **{k: finite_or_none(v[0]) for k, v in sim.items()})
                                     for case, sim in zip(cases, sims)], static["output_stiffness_N_m"])
     return {
         "technology": "piezohydraulic",
@@ -83,7 +84,7 @@ def evaluate_piezo(design: PiezoDesignFile, catalog: Catalog, file: str) -> dict
                    "bouc_wen": dict(zip(["d33", "alpha", "beta", "gamma", "delta", "n"], bw.as_array().tolist())),
                    "bouc_wen_source": bw_source},
         "static": static,
-        "simulated": {"cases": simulated, "worst": _worst(simulated)},
+        "simulated": {"cases": simulated, "worst": worst_case(simulated)},
         "metrics": {k: float(v[0]) for k, v in metrics(c, ramp).items()},
         "force_path": force_path.as_list(members, 0, material.id, compensator.id if compensator else None,
                                          force_path.spacer_material(catalog.materials).id),
@@ -156,50 +157,14 @@ def geometry(design: PiezoDesignFile, stack, voltage, seal, warnings) -> tuple[f
     return float(design.ratio), wide_area
 
 
-def _num(value):
+def finite_or_none(value):
+    """A figure for results: None where it is not finite."""
     value = float(value)
     return value if math.isfinite(value) else None
 
 
-def _worst(cases: list[dict]) -> dict:
+def worst_case(cases: list[dict]) -> dict:
     """The case with the largest load: what the contracts' 'simulated' means."""
     if not cases:
         return {}
     return max(cases, key=lambda case: case["load_N"])
-
-
-def evaluate_dc(design: DCDesignFile, catalog: Catalog, file: str) -> dict:
-    if design.actuator is None:
-        from ..technologies.dc_motor.from_parts import evaluate_parts
-        cases = load_cases(design.load)
-        parts = {kind: lookup(catalog, getattr(catalog, kind + "s"), getattr(design, kind), file, kind)
-                 for kind in ("motor", "screw", "gear", "drive")}
-        gear, motor = parts["gear"], parts["motor"]
-        if gear is not None and gear.mount is not None and gear.mount not in (motor.gear_mounts or ()):
-            raise InputError(file, "gear", f"gearhead {gear.id} (mount {gear.mount}) does not mount on motor {motor.id} "
-                             f"(its mounts: {', '.join(motor.gear_mounts or ()) or 'none'})")
-        out = evaluate_parts(design, catalog, parts, cases)
-        if parts["drive"].bus_voltage < parts["motor"].rated_voltage:
-            # the solve ranks such designs too: the motor runs at the bus voltage
-            out["warnings"].append(f"drive {parts['drive'].id} has a {parts['drive'].bus_voltage:g} V bus, below the "
-                                   f"{parts['motor'].rated_voltage:g} V rated voltage of motor {parts['motor'].id}: "
-                                   "the motor runs at the bus voltage")
-        return out
-    act = lookup(catalog, catalog.dc_actuators, design.actuator, file, "actuator")
-    cases = load_cases(design.load)
-    sims = dc_engine.step_cases(act, design.step, [c["load_N"] for c in cases], design.duration)
-    static = dc_engine.static_figures(act, max(c["load_N"] for c in cases) if cases else 0.0)
-    simulated = holding.held_cases([dict(case, **{k: _num(v) for k, v in sim.items()})
-                                    for case, sim in zip(cases, sims)], static["output_stiffness_N_m"])
-    warnings = []
-    if design.temperature > act.max_temperature:
-        warnings.append(f"{act.id} is rated to {act.max_temperature:g} degC, below {design.temperature:g} degC")
-    return {
-        "technology": "dc_motor",
-        "design": {"actuator": act.id, "step_m": design.step, "pid": act.pid.model_dump(),
-                   "c1": act.c1, "c2": act.c2, "screw_lead_m": act.screw_lead},
-        "static": static,
-        "simulated": {"cases": simulated, "worst": _worst(simulated)},
-        "metrics": dc_engine.metrics(act),
-        "warnings": warnings,
-    }

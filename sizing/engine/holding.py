@@ -4,8 +4,8 @@ requirements' optional output stiffness (``min_stiffness``) and stroke
 reference (``stroke_from``).
 
 A load F on an output of stiffness k at rest pushes it back by F / k (the
-rest offset). A simulation that starts from that loaded rest (the
-piezohydraulic one; the DC servo holds its motor angle, so its chain's
+rest offset). A simulation that starts from that loaded rest (the stacks
+and oil one; the DC servo holds its motor angle, so its chain's
 compliance offsets the output the same way) counts its stroke from there,
 so from neutral the output reaches the stroke less F / k. Which of the two
 a requirement means is ``stroke_from``: "loaded_rest" (the default, the

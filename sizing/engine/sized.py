@@ -75,7 +75,7 @@ def dc_parts_design(catalog: Catalog, d: DCDesign) -> DCPartsDesign:
     return parts_design(catalog, d.parts, {k: float(d.controller[k]) for k in SETTINGS}, d.duration)
 
 
-def _dc_read_back(catalog: Catalog, cand: dict) -> DCPartsDesign:
+def read_back_parts(catalog: Catalog, cand: dict) -> DCPartsDesign:
     """The DC design of a results.json candidate sized from parts."""
     comp, ctl = cand.get("components", {}), cand.get("controller", {})
     gear = comp.get("gear")
@@ -113,26 +113,20 @@ SETTINGS = ("kp", "ki", "kd", "current_limit_A", "voltage_limit_V")
 
 def read_back(req: RequirementsFile, catalog: Catalog, cand: dict):
     """What robust perturbs, read back from a results.json candidate (a
-    solve whose records are gone): a piezohydraulic (Combo, Variant,
-    SizingResult) triple or a ``DCPartsDesign``."""
-    if cand.get("technology") == "dc_motor":
-        return _dc_read_back(catalog, cand)
-    return sized_designs(req, catalog, [cand])[0]
+    solve whose records are gone)."""
+    return study_designs(req, catalog, [cand])[0]
 
 
 def study_designs(req: RequirementsFile, catalog: Catalog, candidates: list[dict], stages=None) -> list:
-    """What ``sizing robust`` perturbs, per candidate: a piezohydraulic
-    (Combo, Variant, SizingResult) triple, a ``DCPartsDesign`` or a pump's
-    design file (``io.design.PumpDesignFile``). A design
-    the solve's own records hold (``stages``, ``records.Stages``: the
-    piezohydraulic designs and the DC designs from parts) is taken from
-    them as sized; any other is read back from its results.json record
-    (``read_back``)."""
-    by_id = stages.by_id if stages is not None else {}
-    dc = stages.dc if stages is not None else {}
-    from ..technologies.piezo_pump.evaluate import design_from_candidate
-    return [by_id[c["id"]].sized if c["id"] in by_id
-            else dc_parts_design(catalog, dc[c["id"]]) if isinstance(dc.get(c["id"]), DCDesign)
-            else design_from_candidate(req, c) if c.get("technology") == "piezo_pump"
-            else read_back(req, catalog, c)
-            for c in candidates]
+    """What ``sizing robust`` perturbs, per candidate, as its technology
+    builds it (``Technology.study_design``): taken as sized from the solve's
+    own records (``stages``, ``records.Stages``) when they hold it, else
+    read back from its results.json record."""
+    from ..technologies.registry import get
+    out = []
+    for c in candidates:
+        tech = get(c["technology"])
+        if tech is None or tech.study_design is None:
+            raise InputError(None, c.get("id"), "expected a design whose parts robust can perturb")
+        out.append(tech.study_design(req, catalog, c, stages))
+    return out

@@ -158,25 +158,9 @@ def _pct(margin) -> str:
 
 
 def _thermal_statement(req, candidates) -> str:
-    T = req.requirements.max_temperature
-    plain = [c for c in candidates if _group(c) == ("piezohydraulic", "uncompensated") and "thermal_drift" in c["margins"]]
-    if not plain:
-        return "No piezohydraulic design got as far as the thermal drift check."
-    drifting = [c for c in plain if c["margins"]["thermal_drift"] < 0]
-    smallest = min(plain, key=lambda c: abs(c["static"].get("thermal_drift_m", math.inf)))
-    drift = abs(smallest["static"]["thermal_drift_m"])
-    text = (f"Thermal budget from {req.options.drift_reference_temperature:g} to {T:g} degC (oil, casing, stacks, "
-            f"pistons, frame; net against {req.options.max_drift_fraction:.0%} of the "
-            f"{req.requirements.stroke * 1e3:g} mm stroke): the smallest net drift of any sized as-built design is "
-            f"{drift * 1e3:.1f} mm ({_label(smallest)}); its oil term alone is "
-            f"{smallest.get('thermal_budget', {}).get('oil_m', math.nan) * 1e3:.1f} mm. ")
-    if len(drifting) == len(plain):
-        text += ("The drift makes EVERY uncompensated piezohydraulic design infeasible. "
-                 "Passively compensated designs (a low-expansion spacer and a longer frame) and designs with a "
-                 "catalog compensator are shown separately.")
-    else:
-        text += f"{len(drifting)} of {len(plain)} sized uncompensated designs fail it."
-    return text
+    """The thermal budget in words, from the technologies that state one."""
+    return " ".join(words for t in technologies() if t.thermal_statement is not None
+                    and (words := t.thermal_statement(req, candidates)))
 
 
 def downsample(t, y):

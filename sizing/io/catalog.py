@@ -116,7 +116,7 @@ class Fluid(Entry):
     bulk_modulus: Qty("pressure", positive=True)
     bulk_modulus_temperature_coefficient: Qty("per_kelvin") = 0.0
     # absolute pressure at which the entrained air has all dissolved (the
-    # piezo pump's eq. P8); None: the free air does not dissolve
+    # pump's eq. P8 of docs/models.md); None: the free air does not dissolve
     air_dissolution_pressure: Optional[Qty("pressure", positive=True)] = None
     thermal_expansion: Qty("per_kelvin", positive=True)
     min_temperature: Qty("temperature")
@@ -178,7 +178,7 @@ class DCActuator(Entry):
     supply_voltage: Qty("voltage", positive=True)
     cost_usd: Qty("dimensionless", nonnegative=True)
     pid: PIDTable
-    # the voltage ceiling (docs/models.md, DC motor actuator): bus-referred back-EMF
+    # the voltage ceiling (docs/models.md, the motor actuator): bus-referred back-EMF
     # constant and winding resistance; absent = no voltage limit
     back_emf_constant: Optional[Qty("back_emf_constant", positive=True)] = None
     winding_resistance: Optional[Qty("resistance", positive=True)] = None
@@ -294,7 +294,7 @@ class Compensator(Entry):
 
 
 class Valve(Entry):
-    """A reed check valve of the piezo pump (catalogs/valves.toml): a reed
+    """A reed check valve of a pump (catalogs/valves.toml): a reed
     over a circular port, preloaded to its cracking pressure. With its
     wetted geometry (``reed_shape``, ``reed_width``, ``reed_length``,
     ``modal_factor``) the reed carries the oil it moves (physics/pump.py,
@@ -340,7 +340,7 @@ REFERENCE_OIL_DENSITY = 850.0
 
 
 class Accumulator(Entry):
-    """The piezo pump's bias-pressure accumulator (catalogs/accumulators.toml):
+    """A pump's bias-pressure accumulator (catalogs/accumulators.toml):
     it holds the low side at ``bias_pressure`` (gauge) and takes the oil's
     thermal expansion up to its capacity."""
 

@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Literal, Optional, Union
+from typing import Literal, Optional, Union, get_args
 
 from pydantic import Field, field_validator, model_validator
 
@@ -28,6 +28,11 @@ class LoadTable(Strict):
         if value is not None and not value:
             raise ValueError("expected at least one load case, got an empty list")
         return value
+
+
+def n_loads(load: LoadTable) -> int:
+    """How many load cases a design file's load gives."""
+    return len(load.force) if load.force is not None else len(load.dynamic_pressure)
 
 
 class PiezoDesignFile(Strict):
@@ -127,7 +132,7 @@ class DCDesignFile(Strict):
 
 
 class PumpDesignFile(Strict):
-    """A piezo pump design, the ``design`` block ``sizing solve`` writes
+    """A pump design, the ``design`` block ``sizing solve`` writes
     for one (CONTRACTS: pump_frequency, pump_diameter, cylinder_diameter,
     bias_pressure, valve, stack, n_stacks, voltage, fluid, seal, amplifier,
     accumulator, temperature), with the requirements its margins are judged
@@ -158,12 +163,15 @@ class PumpDesignFile(Strict):
     notes: Optional[str] = None
 
 
-DesignFile = Union[PiezoDesignFile, DCDesignFile, PumpDesignFile]
+DESIGN_FILES = (PiezoDesignFile, DCDesignFile, PumpDesignFile)
+DesignFile = Union[DESIGN_FILES]
 
 
 def load_design(path: str | Path) -> DesignFile:
-    return parse_tagged(path, "technology", {"piezohydraulic": PiezoDesignFile, "dc_motor": DCDesignFile,
-                                             "piezo_pump": PumpDesignFile})
+    """The design file of the technology its ``technology`` field names
+    (each kind's tag is its own ``technology`` literal)."""
+    tags = {get_args(kind.model_fields["technology"].annotation)[0]: kind for kind in DESIGN_FILES}
+    return parse_tagged(path, "technology", tags)
 
 
 def design_toml(block: dict) -> str:

@@ -83,7 +83,7 @@ class OptionsTable(Strict):
 
     max_stacks: int = Field(20, ge=1, le=200)             # stack counts tried: 1..max_stacks
     # smallest oil gap in the wide chamber; None: the gap is sized, the stack
-    # stroke plus a clearance and a manufacturing tolerance (technologies/piezohydraulic/verify.py)
+    # stroke plus a clearance and a manufacturing tolerance (the stacks' technology, verify.py)
     wide_gap: Optional[Qty("length", positive=True)] = None
     design_margin: Qty("dimensionless", nonnegative=True) = settings.DESIGN_MARGIN   # static sizing margin on stroke and force
     max_overshoot: Qty("dimensionless", positive=True) = settings.MAX_OVERSHOOT      # simulated overshoot allowed
@@ -146,7 +146,7 @@ class EnvelopeTable(Strict):
 
 # [tolerances] (docs/formats.md): relative 1-sigma normal spread of
 # a catalog field, keyed "kind.field". Used when the table is absent (sizing
-# robust); the piezohydraulic values are the contract's example, assumed:
+# robust); the stack, fluid and seal values are the contract's example, assumed:
 # typical datasheet tolerances of PICA stacks (stroke, stiffness), oil bulk
 # modulus data scatter and seal friction scatter, not measured on these parts.
 # DC parts: motor datasheets state +/-10 % on their data
@@ -154,9 +154,9 @@ class EnvelopeTable(Strict):
 # HIWIN torque motors, "+/-10 % for all specification values"), taken, like
 # the stack's, as the 1-sigma spread of k_t, R and R_th; the others are
 # assumed (README, "Robust sizing"). A tolerance applies to the designs whose
-# parts have that field: stack, fluid, seal, amplifier to piezohydraulic
-# designs, motor, screw, gear, drive to DC designs sized from parts;
-# operating.temperature to both.
+# parts have that field: stack, fluid, seal, amplifier to designs of stacks
+# and oil, motor, screw, gear, drive to motor designs sized from parts;
+# operating.temperature to all.
 PIEZO_DEFAULT_TOLERANCES = {"stack.stroke": 0.05, "stack.stiffness": 0.10, "fluid.bulk_modulus": 0.20,
                             "seal.friction_per_length": 0.30, "fluid.air_fraction": 0.001}
 DC_DEFAULT_TOLERANCES = {"motor.torque_constant": 0.10, "motor.winding_resistance": 0.10,
@@ -176,8 +176,8 @@ BOUC_WEN_TOLERANCES = tuple(f"stack.bouc_wen.{p}" for p in ("d33", "alpha", "bet
 
 
 def tolerance_fields() -> dict[str, list[str]]:
-    """Catalog fields a tolerance may name, per part kind (piezohydraulic
-    parts and DC parts): the numeric quantities, without temperatures (a
+    """Catalog fields a tolerance may name, per part kind (stack and oil
+    parts, motor parts): the numeric quantities, without temperatures (a
     relative spread of a degC value means nothing)."""
     from .catalog import Amplifier, Drive, Fluid, Gear, Motor, Screw, Seal, Stack
     out = {}

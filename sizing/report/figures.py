@@ -6,11 +6,11 @@ import plotly.graph_objects as go
 from plotly.subplots import make_subplots
 
 from .layout import no_overprint
+from ..technologies.registry import presentation, technologies
 from .words import tech_label
 
 UNITS = {"mass": ("mass_kg", 1.0, "mass (kg)"), "cost": ("cost_usd", 1.0, "cost (USD)"),
          "volume": ("volume_m3", 1e3, "volume (L)"), "power": ("power_W", 1.0, "peak power (W)")}
-SHOWN_STAGES = ("simulated", "sized", "gp_infeasible")
 MARGIN_ORDER = ("stroke", "blocked_force", "speed", "temperature", "amplifier_temperature", "pressure",
                 "drive_current", "amplifier_continuous_current", "natural_frequency", "overshoot", "thermal_drift",
                 "wide_gap", "packing", "compensator_capacity", "compensator_hold", "amplifier_units", "stack_temperature", "holding_force", "work")
@@ -26,21 +26,9 @@ HOVER_MARGINS = 3
 
 
 def hover_text(c: dict) -> str:
-    comp = c["components"]
-    if c["technology"] == "dc_motor" and "actuator" in comp:
-        head = f"DC actuator {comp['actuator']}"
-    elif c["technology"] == "dc_motor":
-        ctl = c.get("controller") or {}
-        head = (f"DC from parts: {comp['motor']}, {comp['screw']}, {comp['gear'] or 'no gear'}, {comp['drive']}"
-                f"<br>I-PD kp {ctl.get('kp', 0):.3g} A/m, ki {ctl.get('ki', 0):.3g} A/(m s), kd {ctl.get('kd', 0):.3g} A s/m")
-    elif "n_stacks" in comp:
-        ratio = comp.get("ratio")
-        head = (f"{comp['n_stacks']} x {comp['stack']}, R = {ratio:.0f}<br>{comp['fluid']}, {comp['seal']}, "
-                f"{comp['amplifier']}" if ratio else f"{comp['n_stacks']} x {comp['stack']}")
-        if c.get("variant") == "compensated":
-            head += "<br>with thermal compensator"
-    else:                                   # a technology with no drawing of its own: its short name
-        head = f"{tech_label(c['technology'])} {c.get('name', c['id'])}"
+    hover = presentation(c["technology"]).hover
+    # a technology with no drawing of its own: its short name
+    head = hover(c) if hover is not None else f"{tech_label(c['technology'])} {c.get('name', c['id'])}"
     # the three smallest margins: what decides the design (the full list is in results.json)
     shown = sorted(c["margins"].items(), key=lambda kv: kv[1] if kv[1] is not None else -float("inf"))[:HOVER_MARGINS]
     margins = ", ".join(f"{k} {v:+.0%}" if v is not None else f"{k} n/a" for k, v in shown)
@@ -67,42 +55,25 @@ def pareto_figure(results: dict) -> go.Figure:
     the Pareto front joined by a line."""
     xo, yo = _axes(results["objectives"])
     (xk, xs, xl), (yk, ys, yl) = UNITS[xo], UNITS[yo]
-    groups = {
-        "piezohydraulic, compensated, feasible": dict(symbol="circle", color="#1f77b4"),
-        "piezohydraulic, compensated, infeasible": dict(symbol="circle-open", color="#1f77b4"),
-        "piezohydraulic, uncompensated, feasible": dict(symbol="square", color="#2ca02c"),
-        "piezohydraulic, uncompensated, infeasible": dict(symbol="x-thin-open", color="#7f7f7f"),
-        "piezohydraulic, passive, feasible": dict(symbol="triangle-up", color="#9467bd"),
-        "piezohydraulic, passive, infeasible": dict(symbol="triangle-up-open", color="#9467bd"),
-        "DC motor, feasible": dict(symbol="diamond", color="#d62728"),
-        "DC motor, infeasible": dict(symbol="diamond-open", color="#d62728"),
-        "DC motor from parts, feasible": dict(symbol="triangle-up", color="#ff7f0e"),
-        "DC motor from parts, infeasible": dict(symbol="triangle-up-open", color="#ff7f0e"),
-        "piezo pump, feasible": dict(symbol="star", color="#17becf"),
-        "piezo pump, infeasible": dict(symbol="star-open", color="#17becf"),
-    }
+    groups = {f"{m.legend}, {verdict}": dict(symbol=symbol, color=color, size=m.size)
+              for t in technologies() for m in t.report.markers
+              for verdict, symbol, color in (("feasible", m.symbol, m.color),
+                                             ("infeasible", m.open_symbol, m.open_color or m.color))}
     pts = {k: ([], [], []) for k in groups}
     fronts: dict[str, list] = {}
     for c in results["candidates"]:
         m = c.get("metrics") or {}
         if m.get(xk) is None or m.get(yk) is None:
             continue
-        if c["technology"] == "dc_motor" and c.get("variant") == "parts":
-            if c.get("stage") not in SHOWN_STAGES:
+        marker = next((k for k in presentation(c["technology"]).markers if k.takes(c)), None)
+        if marker is not None:
+            if marker.stages is not None and c.get("stage") not in marker.stages:
                 continue
-            key = "DC motor from parts"
-        elif c["technology"] == "dc_motor":
-            key = "DC motor"
-        elif c["technology"] == "piezo_pump":
-            key = "piezo pump"
-        elif c["technology"] == "piezohydraulic":
-            if c.get("stage") not in SHOWN_STAGES:
-                continue
-            key = f"piezohydraulic, {c.get('variant', 'uncompensated')}"
-        else:                               # any other technology: one marker of its own
+            key = marker.legend
+        else:                               # a technology with no markers of its own: a brown hexagon
             key = tech_label(c["technology"])
             for verdict, symbol in (("feasible", "hexagon"), ("infeasible", "hexagon-open")):
-                groups.setdefault(f"{key}, {verdict}", dict(symbol=symbol, color="#8c564b"))
+                groups.setdefault(f"{key}, {verdict}", dict(symbol=symbol, color="#8c564b", size=8))
                 pts.setdefault(f"{key}, {verdict}", ([], [], []))
         key += ", feasible" if c["feasible"] else ", infeasible"
         pts[key][0].append(m[xk] * xs)
@@ -115,15 +86,14 @@ def pareto_figure(results: dict) -> go.Figure:
         x, y, text = pts[key]
         if not x:
             continue
-        size = 13 if key.startswith("DC motor,") else 8
         fig.add_trace(go.Scatter(x=x, y=y, mode="markers", name=key, text=text, hoverinfo="text",
-                                 marker=dict(symbol=style["symbol"], color=style["color"], size=size,
+                                 marker=dict(symbol=style["symbol"], color=style["color"], size=style["size"],
                                              line=dict(width=1.5, color=style["color"]))))
     for tech, pts_ in fronts.items():
         front = _front_2d(pts_)
         fig.add_trace(go.Scatter(x=[p[0] for p in front], y=[p[1] for p in front], mode="lines",
                                  name=f"{tech_label(tech)} front (feasible)",
-                                 line=dict(color="#d62728" if tech == "dc_motor" else "black", dash="dot"),
+                                 line=dict(color=presentation(tech).front_color, dash="dot"),
                                  hoverinfo="skip"))
     fig.update_layout(title=f"Designs in objective space ({xo} vs {yo}); hover for the design",
                       xaxis_title=xl, yaxis_title=yl, xaxis_type="log", yaxis_type="log",
@@ -148,7 +118,7 @@ def traces_figure(results: dict, traces: list[dict]) -> go.Figure:
             fig.add_trace(go.Scatter(x=case["t"], y=[v * 1e3 for v in case["position_m"]], mode="lines",
                                      name=tr.get("name", tr["id"]) + ("" if tr["feasible"] else " (infeasible)"),
                                      legendgroup=tr["id"], showlegend=(i == 0),
-                                     line=dict(color=color, dash="solid" if tr["technology"] != "dc_motor" else "dash")),
+                                     line=dict(color=color, dash=presentation(tr["technology"]).trace_dash)),
                           row=1, col=i + 1)
     t_req = results["requirements"]["stroke_time_s"]
     for i in range(n):
@@ -161,10 +131,10 @@ def traces_figure(results: dict, traces: list[dict]) -> go.Figure:
     return no_overprint(fig)
 
 
-def comparison_figure(results: dict, picks: list[dict]) -> go.Figure:
-    """Margins of the best piezohydraulic designs against the DC options, one
-    row per requirement (horizontal bars: the requirement names read level,
-    however many there are)."""
+def comparison_figure(results: dict, picks: list[dict], title: str) -> go.Figure:
+    """Margins of the best designs of each technology (``title``: which
+    against which), one row per requirement (horizontal bars: the
+    requirement names read level, however many there are)."""
     fig = go.Figure()
     keys = [k for k in MARGIN_ORDER if any(k in c["margins"] for c in picks)]
     for c in picks:
@@ -174,7 +144,7 @@ def comparison_figure(results: dict, picks: list[dict]) -> go.Figure:
                              hovertext=[f"{c.get('name', c['id'])}<br>{k}: {v:+.1%}" if v is not None else f"{k}: n/a"
                                         for k, v in zip(keys, x)], hoverinfo="text"))
     fig.add_vline(x=0, line=dict(color="black"))
-    fig.update_layout(barmode="group", title="Margin per requirement, piezohydraulic against DC (left of zero: missed)", xaxis_title="margin (%)", template="plotly_white",
+    fig.update_layout(barmode="group", title=f"Margin per requirement, {title} (left of zero: missed)", xaxis_title="margin (%)", template="plotly_white",
                       height=160 + len(keys) * (6 * max(1, len(picks)) + 12))     # 6 px a bar, 12 px between rows
     fig.update_xaxes(range=[-100, 200])
     fig.update_yaxes(autorange="reversed")

@@ -3,7 +3,6 @@ no network access when opened)."""
 from __future__ import annotations
 
 import html
-from collections import Counter
 
 from ..display import requirement as display_requirement
 from ..engine.comparison import format_metric
@@ -11,8 +10,9 @@ from .text import knife_edge_text
 from .words import tech_label
 from .bundle import plotly_tag
 
+from ..technologies.presentation import shown as _num
+from ..technologies.registry import presentation, technologies
 from .figures import MARGIN_ORDER, comparison_figure, pareto_figure, traces_figure
-from .force_path_html import section as force_path_section
 
 CSS = """
 body{font-family:system-ui,-apple-system,Segoe UI,Roboto,sans-serif;margin:2em auto;max-width:1200px;color:#222;padding:0 1em}
@@ -63,10 +63,6 @@ def _e(x) -> str:
     return html.escape(str(x))
 
 
-def _num(v, scale=1.0, fmt="{:.4g}") -> str:
-    return "n/a" if v is None else fmt.format(v * scale)
-
-
 def _margin_table(cands: list[dict]) -> str:
     keys = [k for k in MARGIN_ORDER if any(k in c["margins"] for c in cands)]
     keys += sorted({k for c in cands for k in c["margins"]} - set(keys))
@@ -98,23 +94,11 @@ def _design_table(cands: list[dict]) -> str:
     rows = []
     for c in cands:
         m, s, sim = c.get("metrics", {}), c.get("static", {}), c.get("simulated", {})
-        if c["technology"] == "dc_motor":
-            k = c["components"]
-            parts = (f"DC actuator {k['actuator']}" if "actuator" in k else
-                     f"DC from parts: {k['motor']}, {k['screw']}, {k['gear'] or 'no gear'}, {k['drive']}")
-        elif c["technology"] == "piezo_pump":
-            d = c.get("design", {})
-            parts = (f"pump: {d.get('n_stacks')} x {d.get('stack')} at {_num(d.get('pump_frequency'), fmt='{:.0f}')} Hz, "
-                     f"piston {_num(d.get('pump_diameter'), 1e3, '{:.0f}')} mm, bore {_num(d.get('cylinder_diameter'), 1e3, '{:.0f}')} mm, "
-                     f"{d.get('valve')}, bias {_num(d.get('bias_pressure'), 1e-6, '{:.2g}')} MPa, "
-                     f"{_num(s.get('output_power_W'), fmt='{:.0f}')} W out, {_num(s.get('amplifier_power_VA'), fmt='{:.0f}')} VA drive, {d.get('amplifier')}")
-        elif c["technology"] != "piezohydraulic":      # no table of parts of its own: its parts by kind
+        words = presentation(c["technology"]).parts
+        if words is not None:
+            parts = words(c)
+        else:                       # no table of parts of its own: its parts by kind
             parts = f"{tech_label(c['technology'])}: " + ", ".join(f"{v}" for v in (c.get("components") or {}).values())
-        else:
-            k = c["components"]
-            parts = (f"{k['n_stacks']} x {k['stack']}, R = {_num(k['ratio'], fmt='{:.1f}')}, "
-                     f"bores {_num(s.get('wide_diameter_m'), 1e3, '{:.0f}')}/{_num(s.get('narrow_diameter_m'), 1e3, '{:.1f}')} mm, "
-                     f"{k['fluid']}, {k['seal']}, {k['amplifier']}")
         rows.append(
             f"<tr><td>{c['rank']}</td>{design_cell(c)}<td class='parts'>{_e(parts)}</td>"
             f"<td>{_num(m.get('mass_kg'), fmt='{:.1f}')}</td><td>{_num(m.get('cost_usd'), fmt='{:,.0f}')}</td>"
@@ -132,7 +116,7 @@ def _checks_table(cands: list[dict]) -> str:
     """The physics checks beyond the seed, with their values."""
     rows = []
     for c in cands:
-        if c["technology"] != "piezohydraulic" or not c.get("static"):
+        if not presentation(c["technology"]).checks_table or not c.get("static"):
             continue
         s, f = c["static"], c.get("fluid_at_temperature", {})
         temps = "; ".join(f"{k} {v['rated_degC']:g}/{v['required_degC']:g}" for k, v in c.get("temperatures", {}).items())
@@ -152,39 +136,8 @@ def _checks_table(cands: list[dict]) -> str:
 
 
 def _pruned_table(results: dict) -> str:
-    pruned = [c for c in results["candidates"] if c.get("stage") == "pruned" and c["technology"] == "piezohydraulic"]
-    counted = ((results["summary"].get("counts") or {}).get("piezohydraulic") or {}).get("ruled_out_before_sizing", 0)
-    if counted and not pruned:        # counted by reason, not recorded (solve --detail full records each)
-        reasons = (results["summary"].get("ruled_out_by_technology") or {}).get("piezohydraulic") or {}
-        rows = "".join(f"<tr><td class='l'>{_e(k)}</td><td>{v:,}</td></tr>" for k, v in reasons.items())
-        return (f"<p>{counted:,} piezohydraulic combinations were ruled out before sizing; they are counted by the "
-                f"requirement each misses most, not recorded one by one (<code>sizing solve --detail full</code> "
-                f"keeps a record of each with its margins). Left out before ranking, by reason (combinations "
-                f"before sizing, designs after):</p><table><tr><th class='l'>ruled out by</th><th>count</th></tr>"
-                f"{rows}</table>" + _dc_pruned_table(results))
-    if not pruned:
-        return "<p>No combination was ruled out before sizing.</p>" + _dc_pruned_table(results)
-    by = Counter((c["components"]["stack"], c["driver"]) for c in pruned)
-    rows = "".join(f"<tr><td class='l'>{_e(s)}</td><td class='l'>{_e(d)}</td><td>{n}</td></tr>"
-                   for (s, d), n in sorted(by.items()))
-    return (f"<p>{len(pruned)} combinations were ruled out before sizing; each stays in results.json with its "
-            f"margins. By stack and the requirement that rules them out:</p><table><tr><th class='l'>stack</th>"
-            f"<th class='l'>ruled out by</th><th>combinations</th></tr>{rows}</table>" + _dc_pruned_table(results))
-
-
-def _dc_pruned_table(results: dict) -> str:
-    """DC combinations ruled out by the static screen, by motor and the
-    requirement that rules them out (the smallest margin)."""
-    pruned = [c for c in results["candidates"] if c.get("stage") == "pruned" and c.get("variant") == "parts"]
-    if not pruned:
-        return ""
-    by = Counter((c["components"]["motor"], c["driver"]) for c in pruned)
-    rows = "".join(f"<tr><td class='l'>{_e(m)}</td><td class='l'>{_e(d)}</td><td>{n}</td></tr>"
-                   for (m, d), n in sorted(by.items()))
-    return (f"<p>{len(pruned)} DC motor x screw x gear x drive combinations were ruled out by the static screen "
-            f"(force through screw and gear, back-EMF speed at the drive voltage, winding temperature at the "
-            f"holding current, buckling, life). By motor and the requirement that rules them out:</p>"
-            f"<table><tr><th class='l'>motor</th><th class='l'>ruled out by</th><th>combinations</th></tr>{rows}</table>")
+    """What each technology's screen ruled out before sizing."""
+    return "".join(t.report.pruned_words(results) for t in technologies())
 
 
 def _changes(results: dict, limit: int = 60) -> str:
@@ -217,25 +170,25 @@ def _requirement_value(requirement: str, value) -> str:
 
 
 def _pick_comparison(cands: list[dict]) -> list[dict]:
+    """The designs the comparison shows: each technology's own picks (its
+    best design when it names none), in the technologies' order."""
     picks = []
-    for tech, variant in (("piezohydraulic", "compensated"), ("piezohydraulic", "uncompensated")):
-        group = [c for c in cands if c["technology"] == tech and c.get("variant") == variant and c.get("stage") != "pruned"]
-        if group:
-            picks.append(group[0])
-    picks += [c for c in cands if c["technology"] == "dc_motor" and "actuator" in c["components"]]
-    picks += [c for c in cands if c.get("variant") == "parts" and c.get("stage") == "simulated"][:2]
-    picks += [c for c in cands if c["technology"] == "piezo_pump"][:1]
+    for t in technologies():
+        own = [c for c in cands if c["technology"] == t.name]
+        picks += t.report.comparison_picks(own) if t.report.comparison_picks is not None else own[:1]
     return picks
 
 
-def _dc_parts_line(counts: dict) -> str:
-    p = counts.get("dc_parts") or {}
-    if not p.get("combinations"):
-        return "no DC designs from parts"
-    return (f"{p['combinations']} DC motor x screw x gear x drive combinations ({p['pruned']} ruled out by the "
-            f"static screen, {p['simulated']} verified by simulation)")
+def _comparison_titles() -> tuple[str, str]:
+    """The comparison section's heading and its figure's title: those of the
+    technology the others are compared against."""
+    return next((t.report.comparison_titles for t in technologies() if t.report.comparison_titles),
+                ("The best designs compared", "best designs of each technology"))
 
 
+def _counts_words(results: dict) -> str:
+    """Each technology's counts, as it states them."""
+    return " and\n".join(t.report.counts_words(results) for t in technologies() if t.report.counts_words is not None)
 
 
 def _answer(summary: dict) -> str:
@@ -339,19 +292,22 @@ def _ruled_out_text(by_tech: dict, counts: dict | None = None) -> str:
             + "</ul><p>")
 
 
-def _count(n: int, noun: str) -> str:
-    return f"{n} {noun}{'' if n == 1 else 's'}"
-
-
 def _names(cands: list[dict], ids: list[str]) -> list[str]:
     """Short names of the candidates ``ids``, in order (the id where none)."""
     by_id = {c["id"]: c.get("name", c["id"]) for c in cands}
     return [by_id.get(i, i) for i in ids]
 
 
+def _figure_div(fig) -> str:
+    """A figure of a technology's own section, without plotly.js."""
+    return fig.to_html(full_html=False, include_plotlyjs=False, config={"displaylogo": False})
+
+
 def render(results: dict, traces: list[dict]) -> str:
     cands = results["candidates"]
-    figs = [pareto_figure(results), traces_figure(results, traces), comparison_figure(results, _pick_comparison(cands))]
+    heading, title = _comparison_titles()
+    figs = [pareto_figure(results), traces_figure(results, traces),
+            comparison_figure(results, _pick_comparison(cands), title)]
     divs = [f.to_html(full_html=False, include_plotlyjs=False, div_id=f"plot-{i}",
                       config={"displaylogo": False, "responsive": True}) for i, f in enumerate(figs)]
     req = results["requirements"]
@@ -372,7 +328,6 @@ def render(results: dict, traces: list[dict]) -> str:
         "<div class='box'><b>No design meets every requirement.</b> What blocks each technology is listed below.</div>")
     comp = [c for c in cands if c.get("variant") == "compensated" and c.get("stage") != "pruned"][:10]
     plain = [c for c in cands if c.get("variant") == "uncompensated" and c.get("stage") not in ("pruned",)][:10]
-    dc = [c for c in cands if c["technology"] == "dc_motor"]
     checks = "".join(f"<li><b>{_e(k)}</b>: {_e(v)}</li>" for k, v in CHECKS.items())
     assumptions = "".join(f"<li>{_e(a)}</li>" for a in results["assumptions"])
     dis = results["disagreements"]
@@ -388,10 +343,6 @@ def render(results: dict, traces: list[dict]) -> str:
                     for d in dis[:50]) + "</table>")
     loads = ", ".join(f"{c['load_N']:.0f} N" + (f" ({c['dynamic_pressure_Pa'] / 1e3:g} kPa)" if "dynamic_pressure_Pa" in c else "")
                       for c in results["load_cases"])
-    counts = results["counts"]
-    ph = (summary.get("counts") or {}).get("piezohydraulic") or {
-        "combinations": counts["combinations"], "ruled_out_before_sizing": counts["pruned"], "sized": counts["sized"],
-        "simulated": counts["simulated"]}      # a results.json written before summary.counts
     stamp = (f"sizing {_e(results['tool_version'])} &middot; requirements sha256 {_e(results['requirements_sha256'])}"
              f" &middot; catalog sha256 {_e(results['catalog_sha256'])} &middot; solved in {results.get('runtime_s', 0):.1f} s")
     body = f"""
@@ -401,10 +352,7 @@ def render(results: dict, traces: list[dict]) -> str:
 <p>Requirements: stroke {req['stroke_m'] * 1e3:g} mm, blocked force {req['blocked_force_N'] / 1e3:g} kN,
 speed {req['speed_m_s'] * 1e3:g} mm/s (stroke within {req['stroke_time_s']:g} s), every component to
 {req['max_temperature_degC']:g} degC. Load cases: {_e(loads)}. Objectives: minimise {_e(', '.join(results['objectives']))}.
-{ph['combinations']:,} piezohydraulic combinations ({ph['ruled_out_before_sizing']:,} ruled out before sizing,
-{ph['sized']:,} sized by geometric programs, {ph['simulated']:,} designs verified by simulation) and
-{_count(sum(1 for c in dc if 'actuator' in c['components']), 'catalog DC actuator')};
-{_dc_parts_line(counts)}.</p>
+{_counts_words(results)}.</p>
 {headline}
 <h2>Verdict per technology</h2><ul>{verdicts}</ul>
 <div class="box ok"><b>Technologies compared</b> (best of each, its binding check, and the ratio of their objectives):
@@ -422,11 +370,11 @@ they exist. Top feasible designs, then the best candidate of each technology:</p
 {_margin_table(comp) if comp else '<p>None evaluated.</p>'}
 <h2>Uncompensated designs (as built)</h2>
 {_margin_table(plain) if plain else '<p>No combination reached sizing.</p>'}
-{force_path_section(cands, lambda f: f.to_html(full_html=False, include_plotlyjs=False, config={"displaylogo": False}))}
+{"".join(t.report.section(cands, _figure_div) for t in technologies())}
 <h2>Checks beyond the seed</h2><ul>{checks}</ul>
 {_checks_table(top + best_each)}
 <h2>Time traces under each load case</h2>{divs[1]}
-<h2>Piezohydraulic against the DC motor</h2>{divs[2]}
+<h2>{_e(heading)}</h2>{divs[2]}
 {_margin_table(_pick_comparison(cands))}
 <h2>Where the static screen and the simulation disagree</h2>{dis_html}
 <h2>Ruled out before sizing</h2>{_pruned_table(results)}

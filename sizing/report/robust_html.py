@@ -53,8 +53,8 @@ def render(data: dict) -> str:
 half-normal air volume fraction): {esc(tol)}. Every sample is re-verified by the checks of <code>sizing solve</code>
 (static margins and a full simulation under the load cases {esc(', '.join(f'{f:.0f} N' for f in data['load_cases_N']))}).
 A tolerance applies to the designs whose parts have that field: stack, fluid, seal and amplifier fields to
-piezohydraulic designs, motor, screw, gear and drive fields to DC designs from parts (whose controller gains and
-drive limits stay as designed on the nominal parts), operating.temperature to both.
+designs of stacks and oil, motor, screw, gear and drive fields to motor designs from parts (whose controller gains and
+drive limits stay as designed on the nominal parts), operating.temperature to all.
 Interval: {esc(data['interval'])}. Sensitivity: {esc(data['sensitivity_method'])}.</p>
 <h2>Probability of compliance</h2>
 {table(['rank', 'design', 'mass kg', 'cost USD', 'P', '95 % interval', 'requirements that fail (P each)',

@@ -46,16 +46,16 @@ METHOD = ("Monte Carlo over the tolerances through the solve's checks and simula
 
 
 def studied(cand: dict) -> bool:
-    """Whether the tolerances can perturb the candidate's parts: sized
-    piezohydraulic designs and DC designs from parts (``sizing robust``'s
-    scope). The piezo pump joins here when its parts get a tolerance model."""
+    """Whether the tolerances can perturb the candidate's parts, as its
+    technology says (``Technology.perturbable``: ``sizing robust``'s scope
+    when no technology is named)."""
     from ..technologies.registry import get
     tech = get(cand["technology"])
     return "design" in cand and tech is not None and tech.perturbable(cand, None)
 
 
 def not_estimated(cand: dict) -> dict:
-    what = "a catalog actuator" if cand["technology"] == "dc_motor" else f"a {cand['technology']} design"
+    what = "a catalog actuator" if cand.get("variant") == "catalog" else f"a {cand['technology']} design"
     return {"p": None, "low": None, "high": None, "samples": 0,
             "method": f"not estimated: {what} has no tolerance model of its parts"}
 
@@ -82,7 +82,7 @@ class Study:
             t = self.tally[cand["id"]] = [0, 0, 0, study_designs(self.req, self.catalog, [cand], self.stages)[0]]
         while t[2] < len(SCHEDULE) and not (t[1] >= least and self._decided(t[0], t[1])):
             task = BatchTask(self.req, self.catalog, t[3], cand["id"], self.tols, SEED, 0, t[2], SCHEDULE[t[2]],
-                             self.loads)
+                             self.loads, cand["technology"])
             out = run_batch(task)
             t[0] += int(np.sum(out["feasible"]))
             t[1] += len(out["feasible"])

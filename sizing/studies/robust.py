@@ -1,14 +1,12 @@
 """``sizing robust``: probability of compliance of the best designs under
 part tolerances (docs/formats.md, robust.json).
 
-For each of the K best designs of ``sizing solve`` (piezohydraulic, and DC
-designs sized from parts), N samples of the tolerated catalog fields that
-apply to the design (``tolerances.py``) are drawn, and every sample is
-re-verified by the solve's own checks (piezohydraulic:
-``piezohydraulic.stage.verify_sized``; DC: ``technologies.dc_motor.from_parts.verify_parts``, with
-the controller and drive limits kept as designed on the nominal parts:
-static figures, margins and a full dynamic simulation under every load
-case). Work is split into tasks of one design x
+For each of the K best designs of ``sizing solve`` that its technology
+lets robust perturb (``Technology.perturbable``), N samples of the
+tolerated catalog fields that apply to the design (``tolerances.py``) are
+drawn, and every sample is re-verified by the solve's own checks
+(``Technology.verify_perturbed``: static figures, margins and a full
+dynamic simulation under every load case). Work is split into tasks of one design x
 one batch of samples, each seeded by (seed, design, batch), and run by
 ``executor.Executor`` (serial, local Dask cluster or a scheduler): the same
 seed gives the same numbers wherever they ran.
@@ -28,18 +26,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..engine.loads import load_cases
-from ..technologies.piezohydraulic.parts import reference_bouc_wen, stack_bouc_wen
 from ..engine.rank import nondominated_levels
-from ..technologies.dc_motor.catalog_actuators import dc_duration
-from ..technologies.dc_motor.from_parts import verify_parts
-from ..engine.sized import DCPartsDesign, study_designs
-from ..technologies.piezohydraulic.stage import verify_sized
-from ..technologies.piezohydraulic.verify import SETTLE_TIME_S
-from ..io.design import PumpDesignFile
+from ..engine.sized import study_designs
+from ..technologies.registry import get
 from .executor import Executor, task_seed
 from .stats import sensitivity, wilson
-from .tolerances import (BOUC_WEN_PREFIX, Tolerance, applicable, factors, operating_temperatures, perturbed_combo,
-                         perturbed_parts, tolerances_of)
+from .tolerances import Tolerance, applicable, factors, operating_temperatures, tolerances_of
 
 BATCH = 250                 # samples per task: one vectorised simulation per load case
 WORST_FLOOR = -1.0          # worst margin of a failed simulation, for the sensitivity
@@ -49,7 +41,7 @@ WORST_FLOOR = -1.0          # worst margin of a failed simulation, for the sensi
 class BatchTask:
     req: object
     catalog: object
-    design: object          # (Combo, Variant, SizingResult), or engine.sized.DCPartsDesign
+    design: object          # what engine.sized.study_designs gives for the candidate
     variant_id: str         # the candidate id to read
     tolerances: list[Tolerance]     # all of them: run_batch keeps those that apply to the design
     seed: int
@@ -57,6 +49,7 @@ class BatchTask:
     batch_index: int
     size: int
     loads: list[float]
+    technology: str         # whose ``verify_perturbed`` re-verifies the samples
 
 
 def run_batch(task: BatchTask) -> dict:
@@ -68,66 +61,11 @@ def run_batch(task: BatchTask) -> dict:
     f = factors(tols, z)
     r, o = task.req.requirements, task.req.options
     temps = operating_temperatures(tols, f, o.drift_reference_temperature, r.max_temperature)
-    verify = (_verify_dc if isinstance(task.design, DCPartsDesign)
-              else _verify_pump if isinstance(task.design, PumpDesignFile) else _verify_piezo)
-    picked, sim_s = verify(task, tols, f, temps)
+    picked, sim_s = get(task.technology).verify_perturbed(task, tols, f, temps)
     keys = sorted({k for c in picked for k in c["margins"]})
     margins = {k: np.array([_finite(c["margins"].get(k)) for c in picked]) for k in keys}
     return {"keys": [t.key for t in tols], "z": z, "margins": margins,
             "feasible": np.array([c["feasible"] for c in picked]), "simulated_s": float(sim_s)}
-
-
-def _verify_piezo(task: BatchTask, tols: list[Tolerance], f: np.ndarray, temps) -> tuple[list[dict], float]:
-    """The solve's own checks (``verify_sized``) of each perturbed sample;
-    (the design's candidate per sample, simulated seconds)."""
-    combo, variant, res = task.design
-    bw = None
-    if any(t.key.startswith(BOUC_WEN_PREFIX) for t in tols):
-        bw = stack_bouc_wen(combo.stack, reference_bouc_wen(task.catalog.stacks))[0]
-    sized = [(perturbed_combo(combo, tols, row, bw), variant, res) for row in f]
-    verified = verify_sized(task.req, task.catalog, sized, task.loads, chunk=task.size, temperatures=temps)
-    picked = [_pick(cands, task.variant_id) for cands in verified]
-    sim_s = sum(sum(case["ramp_time_s"] + SETTLE_TIME_S for case in c["simulated"].get("cases", []))
-                for c in picked)
-    return picked, sim_s
-
-
-def _verify_dc(task: BatchTask, tols: list[Tolerance], f: np.ndarray, temps) -> tuple[list[dict], float]:
-    """The DC solve's checks (``dc_sizing.verify_parts``) of each perturbed
-    sample, with the controller and drive limits as designed on the nominal
-    parts; (per sample its verdict, simulated seconds)."""
-    d = task.design
-    n = f.shape[0]
-    settings = {k: np.full(n, v) for k, v in d.settings.items()}
-    duration = d.duration if d.duration is not None else dc_duration(task.req)
-    picked = verify_parts(task.req, perturbed_parts(d.parts, tols, f), task.loads, settings,
-                          ambient=temps, duration=duration)
-    return picked, n * len(task.loads) * duration
-
-
-def _verify_pump(task: BatchTask, tols: list[Tolerance], f: np.ndarray, temps) -> tuple[list[dict], float]:
-    """The pump's screen checks and cycle simulation (``pump_evaluate.verify_samples``)
-    on each sample's perturbed parts, at the required maximum temperature;
-    (per sample its verdict, simulated seconds)."""
-    from ..technologies.piezo_pump import screen as pump_screen
-    from ..technologies.piezo_pump.evaluate import verify_samples
-    d, cat = task.design, task.catalog
-    group = pump_screen.Group(cat.stacks[d.stack], d.n_stacks, cat.amplifiers[d.amplifier], cat.valves[d.valve],
-                              cat.accumulators[d.accumulator], cat.fluids[d.fluid], cat.seals[d.seal])
-    bw = None
-    if any(t.key.startswith(BOUC_WEN_PREFIX) for t in tols):
-        bw = stack_bouc_wen(group.stack, reference_bouc_wen(cat.stacks))[0]
-    groups = [perturbed_combo(group, tols, row, bw) for row in f]
-    picked = verify_samples(d, cat, groups, task.loads)
-    return picked, f.shape[0] * len(task.loads) * 2.0 * d.stroke / d.speed
-
-
-def _pick(cands: list[dict], variant_id: str) -> dict:
-    """The sample's candidate of the design under study. A passive design
-    ("-pc") whose sample does not drift beyond the allowance needs no spacer:
-    its as-built candidate stands for it."""
-    by_id = {c["id"]: c for c in cands}
-    return by_id.get(variant_id) or by_id[variant_id.removesuffix("-pc")]
 
 
 def _finite(v) -> float:
@@ -135,11 +73,9 @@ def _finite(v) -> float:
 
 
 def pick_designs(results: dict, k: int, technology: str | None = None) -> list[dict]:
-    """The K best candidates robust can perturb, in rank order: sized
-    piezohydraulic designs, DC designs from parts (not the catalog's
-    ready-made DC actuators); only ``technology``'s when given, and the
-    simulated pumps only when asked for (``technology`` "piezo_pump")."""
-    from ..technologies.registry import get
+    """The K best candidates robust can perturb, in rank order (their
+    technology says which: ``Technology.perturbable``, some only when
+    asked for by name); only ``technology``'s when given."""
     out = [c for c in results["candidates"] if "design" in c and (tech := get(c["technology"])) is not None
            and tech.perturbable(c, technology) and technology in (None, c["technology"])]
     return out[:k]
@@ -150,8 +86,7 @@ def robust(req, catalog, candidates: list[dict], samples: int, seed: int, execut
     """robust.json for ``candidates`` (results.json entries). ``extra_spreads``:
     tolerances added to (and overriding) the requirements' ones, e.g. the
     Bouc-Wen spreads of a fit (``io.fit_spreads``). ``stages``: the solve's
-    records (``SolveOutput.stages``), whose piezohydraulic and DC designs
-    are taken as sized instead of being read back from results.json."""
+    records (``SolveOutput.stages``), whose designs are taken as sized instead of being read back from results.json."""
     tols = tolerances_of({**req.tolerance_spreads, **(extra_spreads or {})})
     loads = [c["load_N"] for c in load_cases(req.load)]
     designs = study_designs(req, catalog, candidates, stages)
@@ -159,7 +94,7 @@ def robust(req, catalog, candidates: list[dict], samples: int, seed: int, execut
     for d, (cand, design) in enumerate(zip(candidates, designs)):
         for b, start in enumerate(range(0, samples, batch)):
             tasks.append(BatchTask(req, catalog, design, cand["id"], tols, seed, d, b,
-                                   min(batch, samples - start), loads))
+                                   min(batch, samples - start), loads, cand["technology"]))
     done = executor.map(run_batch, tasks, progress=progress)
     out_designs = []
     for d, cand in enumerate(candidates):

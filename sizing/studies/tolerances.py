@@ -4,7 +4,7 @@ A tolerance ``"kind.field" = s`` is a relative 1-sigma normal spread: each
 sample multiplies the field by ``1 + s z`` with z ~ N(0, 1), floored at
 ``FACTOR_FLOOR`` so a positive quantity stays positive (at s = 10 % that
 floor is 9.5 sigma away). The perturbed parts then go through the solve's
-own checks (``piezohydraulic.stage.verify_sized``); nothing here computes physics
+own checks (``Technology.verify_perturbed``); nothing here computes physics
 beyond picking the inputs.
 
 Two rules tie fields together:
@@ -28,8 +28,8 @@ Two rules tie fields together:
   an efficiency (screw, gear) is capped at 1.
 
 A tolerance applies to the designs whose parts have that field
-(``applicable``): stack, fluid, seal and amplifier fields to piezohydraulic
-designs, motor, screw, gear and drive fields to DC designs from parts (gear
+(``applicable``): stack, fluid, seal and amplifier fields to designs of
+stacks and oil, motor, screw, gear and drive fields to DC designs from parts (gear
 fields only where the design has a gear), ``operating.temperature`` to all.
 """
 from __future__ import annotations
@@ -75,8 +75,9 @@ def tolerances_of(spreads: dict[str, float]) -> list[Tolerance]:
 
 
 def applicable(tols: list[Tolerance], design) -> list[Tolerance]:
-    """The tolerances that move ``design``'s parts (``engine.sized``: a
-    piezohydraulic triple or a DCPartsDesign), in the given order."""
+    """The tolerances that move ``design``'s parts (``engine.sized.study_designs``:
+    a (combo, variant, sizing) triple, a DCPartsDesign or a pump design
+    file), in the given order."""
     from ..engine.sized import DCPartsDesign
     from ..io.design import PumpDesignFile
     from ..io.requirements import DC_PARTS, PIEZO_PARTS
@@ -115,7 +116,7 @@ def operating_temperatures(tols: list[Tolerance], f: np.ndarray, low: float, hig
 def perturbed_combo(combo, tols: list[Tolerance], row: np.ndarray, bouc_wen: BoucWen | None = None):
     """The combo with its parts' fields scaled by one sample's factors.
     ``bouc_wen``: the stack's parameters as the solve uses them (measured or
-    transferred, ``technologies.piezohydraulic.parts.stack_bouc_wen``), needed when a
+    transferred, ``parts.stack_bouc_wen`` of the stacks' technology), needed when a
     ``stack.bouc_wen.*`` tolerance scales them."""
     updates = {"stack": {}, "fluid": {}, "seal": {}, "amplifier": {}}
     displacement, air, loop = 1.0, 0.0, {}

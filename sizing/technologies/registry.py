@@ -15,6 +15,8 @@ import threading
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
+from .presentation import PLAIN, Presentation
+
 _REGISTERED: dict[str, "Technology"] = {}
 _FOUND = False
 _FINDING = threading.RLock()        # solves may run in threads: the first finds the packages, the others wait
@@ -74,6 +76,13 @@ class Technology:
     comparison_words: Callable | None = None    # (its comparison entry) -> the sentence that states them
     # (candidate, the technology robust was asked for or None) -> whether robust perturbs the candidate's parts
     perturbable: Callable = field(default=lambda candidate, asked: False)
+    thermal_statement: Callable | None = None   # (req, candidates) -> its words in results.json ``summary.thermal``
+    evaluate: Callable | None = None        # (its design file, catalog, file name) -> ``sizing evaluate``'s figures
+    # (req, catalog, candidate, the solve's records.Stages or None) -> what robust perturbs of the candidate
+    study_design: Callable | None = None
+    # (robust's BatchTask, its tolerances, their factors, temperatures) -> (candidate per sample, simulated s)
+    verify_perturbed: Callable | None = None
+    report: Presentation = PLAIN            # how the report draws, tables and counts its designs
 
     @property
     def actuator(self) -> str:
@@ -116,6 +125,13 @@ def names() -> tuple[str, ...]:
 def get(name: str) -> Technology | None:
     _find()
     return _REGISTERED.get(name)
+
+
+def presentation(name: str) -> Presentation:
+    """How the report shows a technology's designs (the plain way when it is
+    not registered)."""
+    tech = get(name)
+    return tech.report if tech is not None else PLAIN
 
 
 def label(name: str) -> str:

@@ -153,7 +153,8 @@ def test_local_dask_cluster_gives_the_serial_numbers(tmp_path, small_catalog):
     from sizing.studies.robust import BatchTask, run_batch
     from sizing.studies.tolerances import tolerances_of
     design, _, loads = _nominal(req, small_catalog)
-    task = BatchTask(req, small_catalog, design, nominal[0]["id"], tolerances_of(req.tolerance_spreads), 11, 0, 1, 5, loads)
+    task = BatchTask(req, small_catalog, design, nominal[0]["id"], tolerances_of(req.tolerance_spreads), 11, 0, 1, 5, loads,
+                     nominal[0]["technology"])
     a, b = run_batch(task), run_batch(pickle.loads(pickle.dumps(task)))
     assert np.array_equal(a["z"], b["z"]) and all(np.array_equal(a["margins"][k], b["margins"][k]) for k in a["margins"])
     other = robust(req, small_catalog, cands[:1], samples=40, seed=12, executor=Executor(0), batch=20)
@@ -362,12 +363,12 @@ def test_dc_nominal_samples_reproduce_the_solve_and_the_controller_stays(tmp_pat
         assert design.settings["kp"] == cand["controller"]["kp"] and design.has_gear == (gear is not None)
         # zero spreads: every margin is the solve's, exactly
         out = run_batch(BatchTask(req, catalog, design, cand["id"], tolerances_of({"motor.torque_constant": 0.0}),
-                                  0, 0, 0, 2, loads))
+                                  0, 0, 0, 2, loads, cand["technology"]))
         assert {k: v[0] for k, v in out["margins"].items()} == cand["margins"]
         assert bool(out["feasible"][0]) == verdict(cand["margins"])[0]
         # gear fields apply only where there is a gear
         keys = run_batch(BatchTask(req, catalog, design, cand["id"], tolerances_of(req.tolerance_spreads),
-                                   0, 0, 0, 2, loads))["keys"]
+                                   0, 0, 0, 2, loads, cand["technology"]))["keys"]
         assert ("gear.efficiency" in keys) == (gear is not None) and "stack.stroke" not in keys
         assert "operating.temperature" in keys
     # a torque-constant factor moves k_t and k_e together (one flux); efficiency is capped at 1

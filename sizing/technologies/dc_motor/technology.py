@@ -2,10 +2,10 @@
 after it see it (``registry.Technology``)."""
 from __future__ import annotations
 
-from ...engine.records import DCActuatorDesign
+from ...engine.records import DCActuatorDesign, DCDesign
 from ...sim.dc_motor import DCMotorModel
 from ..registry import Group, Technology
-from . import actuator, stage, words
+from . import actuator, presentation, stage, words
 from .catalog_actuators import dc_duration
 from .verdict import dc_sourced
 
@@ -29,6 +29,27 @@ def traces(req, c: dict, stages, loads) -> list[dict] | None:
     return None
 
 
+def evaluate(design, catalog, file: str) -> dict:
+    """``sizing evaluate`` of one design file (loaded when asked, not with the registry)."""
+    from .evaluate_file import evaluate_dc
+    return evaluate_dc(design, catalog, file)
+
+
+def verify_perturbed(task, tols, f, temps):
+    """Its perturbed samples through its own checks (``perturbed``, loaded
+    when robust runs, not with the registry)."""
+    from .perturbed import verify_perturbed
+    return verify_perturbed(task, tols, f, temps)
+
+
+def study_design(req, catalog, c: dict, stages):
+    """What robust perturbs: a design from parts (``engine.sized.DCPartsDesign``),
+    as the solve sized it or read back from its record."""
+    from ...engine.sized import read_back_parts, dc_parts_design
+    held = stages.dc.get(c["id"]) if stages is not None else None
+    return dc_parts_design(catalog, held) if isinstance(held, DCDesign) else read_back_parts(catalog, c)
+
+
 TECHNOLOGY = Technology(
     name="dc_motor", label="DC motor", order=1,
     part_kinds=("dc_actuator", "motor", "screw", "gear", "drive"),
@@ -41,4 +62,5 @@ TECHNOLOGY = Technology(
     traces=traces, counts_key="dc_parts", in_every_sweep_point=True,
     summary_fields=lambda catalog, candidates: {"dc_sourced": dc_sourced(catalog, candidates)},
     perturbable=lambda candidate, asked: candidate.get("variant") == "parts",     # not the catalog's actuators
+    evaluate=evaluate, study_design=study_design, verify_perturbed=verify_perturbed, report=presentation.PRESENTATION,
 )

@@ -5,7 +5,8 @@ from __future__ import annotations
 import numpy as np
 
 from ..registry import Group, Technology
-from . import designs, stage, words
+from . import designs, presentation, stage, words
+from .thermal_words import thermal_statement
 from .verify import simulate_cases
 
 
@@ -34,6 +35,27 @@ def traces(req, c: dict, stages, loads) -> list[dict] | None:
     return [{"load_N": float(s["load_N"][0]), "t": s["t"], "position_m": s["position_m"][0]} for s in sims]
 
 
+def evaluate(design, catalog, file: str) -> dict:
+    """``sizing evaluate`` of one design file (loaded when asked, not with the registry)."""
+    from ...engine.evaluate import evaluate_piezo
+    return evaluate_piezo(design, catalog, file)
+
+
+def verify_perturbed(task, tols, f, temps):
+    """Its perturbed samples through its own checks (``perturbed``, loaded
+    when robust runs, not with the registry)."""
+    from .perturbed import verify_perturbed
+    return verify_perturbed(task, tols, f, temps)
+
+
+def study_design(req, catalog, c: dict, stages):
+    """What robust perturbs: the (Combo, Variant, SizingResult) triple, as
+    the solve sized it or read back from its record."""
+    from ...engine.sized import sized_designs
+    held = stages.by_id.get(c["id"]) if stages is not None else None
+    return held.sized if held is not None else sized_designs(req, catalog, [c])[0]
+
+
 TECHNOLOGY = Technology(
     name="piezohydraulic", label="piezohydraulic", order=0,
     part_kinds=("stack", "fluid", "seal", "amplifier", "material", "compensator"),
@@ -50,4 +72,6 @@ TECHNOLOGY = Technology(
     results_fields=lambda catalog: {"hysteresis_time_scales": designs.hysteresis_time_scales(catalog)},
     in_every_sweep_point=True, compared_with="dc_motor",
     perturbable=lambda candidate, asked: True,
+    thermal_statement=thermal_statement, evaluate=evaluate, study_design=study_design,
+    verify_perturbed=verify_perturbed, report=presentation.PRESENTATION,
 )

@@ -1,4 +1,4 @@
-"""Report section for piezohydraulic designs : the force
+"""The report's section of its own (``Presentation.section``): the force
 path as a bar of compliance shares, the thermal budget as a waterfall, the
 seal friction at pressure and what each design rests on that is assumed."""
 from __future__ import annotations
@@ -7,7 +7,7 @@ import html
 
 import plotly.graph_objects as go
 
-from .layout import no_overprint
+from ...report.layout import no_overprint
 
 MEMBER_COLORS = {"stacks": "#1f77b4", "spacer": "#aec7e8", "base_plate": "#ff7f0e", "frame": "#2ca02c",
                  "wide_piston": "#98df8a", "oil_column": "#9467bd", "compensator": "#c5b0d5",
@@ -21,7 +21,7 @@ def _e(text) -> str:
 
 
 def piezo_designs(cands: list[dict], limit: int = 6) -> list[dict]:
-    """The best-ranked sized piezohydraulic designs, one per variant first."""
+    """The best-ranked sized designs, one per variant first."""
     sized = [c for c in cands if c["technology"] == "piezohydraulic" and c.get("force_path")]
     picks, known = [], set()
     for c in sized:

@@ -4,7 +4,7 @@ The compiled kernels spread their candidates over numba's OpenMP threads.
 OpenMP's default wait policy keeps an idle thread spinning after each
 parallel region; the diagnosis calls a kernel thousands of times with one to
 six candidates, and on a loaded 2-core machine the spinning threads took the
-core the caller needed: a one-candidate call of the piezohydraulic kernel
+core the caller needed: a one-candidate call of the stack-and-oil kernel
 cost 14 ms of CPU (22 ms wall) against 1.5 ms with passive waiting, and a
 32-candidate call 1.8 ms a candidate against 1.5 ms
 (benchmarks/diagnose_speed.py). Idle threads therefore sleep

@@ -90,27 +90,69 @@ def campaign_noise(bench: Bench, seed: int) -> Noise:
     return Noise(position=float(np.median(floor)), voltage_V=float(np.median(volts)), seed=seed)
 
 
-def check_runs(kind: str, rig, inputs: dict, holdout: list[str], noise: Noise, n_null: int = 2,
-               seed: int = 0, progress=None) -> CheckResult:
-    """Diagnose synthetic runs of every effect at both sizes, plus nulls."""
+def _jobs(kind: str, rig, inputs: dict):
+    """(the rig's model, its applicable effects, the labels, the check's
+    cases as (effect or None, size index); the nulls last)."""
     model = Bench(kind, rig, [Run(n, None, t, {("voltage_V" if kind == "piezohydraulic" else "reference_m"): u,
                                                 "position_m": np.zeros(len(t))}) for n, (t, u) in inputs.items()],
                   []).model
     effects = [e.for_rig(rig, model) for e in library(kind) if e.applicable(rig, model)]
     labels = list(dict.fromkeys(e.name for e in effects)) + [NONE]   # a family once, whatever its forms
-    cases = []
     jobs = [(e, k) for e in effects for k in range(len(e.sizes_for(rig, model)) if e.params else 1)]
+    return model, labels, jobs
+
+
+def check_case(kind: str, rig, inputs: dict, holdout: list[str], noise: Noise, n_null: int, seed: int,
+               j: int) -> Case:
+    """Case ``j`` of the check: its runs synthesised (noise seeded by the
+    case number) and diagnosed without the truth."""
+    model, _, jobs = _jobs(kind, rig, inputs)
     jobs += [(None, k) for k in range(n_null)]
-    for j, (effect, k) in enumerate(jobs):
-        case_noise = Noise(noise.position, noise.voltage_V, seed=seed * 1000 + j)
-        if effect is None:
-            runs = synthesize(kind, rig, inputs, noise=case_noise)
-        else:
-            runs = synthesize(kind, rig, inputs, [effect], [effect.sizes_for(rig, model)[k]], noise=case_noise)
-        d = diagnose_runs(kind, rig, runs, holdout, seed=seed)
-        predicted = d.verdict["effect"] or NONE
-        case = Case(effect.name if effect else NONE, k, predicted, float(d.verdict["shrink_holdout"]), d.seconds)
-        cases.append(case)
+    effect, k = jobs[j]
+    case_noise = Noise(noise.position, noise.voltage_V, seed=seed * 1000 + j)
+    if effect is None:
+        runs = synthesize(kind, rig, inputs, noise=case_noise)
+    else:
+        runs = synthesize(kind, rig, inputs, [effect], [effect.sizes_for(rig, model)[k]], noise=case_noise)
+    d = diagnose_runs(kind, rig, runs, holdout, seed=seed)
+    return Case(effect.name if effect else NONE, k, d.verdict["effect"] or NONE, float(d.verdict["shrink_holdout"]),
+                d.seconds)
+
+
+def _one_thread_worker() -> None:
+    """A worker process of the check: one simulator thread, one BLAS thread
+    (the cores are shared out between the processes)."""
+    import numba
+    from threadpoolctl import threadpool_limits
+
+    numba.set_num_threads(1)
+    threadpool_limits(1)
+
+
+def check_runs(kind: str, rig, inputs: dict, holdout: list[str], noise: Noise, n_null: int = 2,
+               seed: int = 0, progress=None, workers: int = 1, only: list[int] | None = None) -> CheckResult:
+    """Diagnose synthetic runs of every effect at both sizes, plus nulls.
+    ``workers`` > 1 diagnoses that many cases at once in separate processes
+    (each case is seeded by its number, so the verdicts do not depend on
+    it); ``only``: the case numbers to run (default all)."""
+    _, labels, jobs = _jobs(kind, rig, inputs)
+    numbers = list(range(len(jobs) + n_null)) if only is None else list(only)
+    args = (kind, rig, inputs, holdout, noise, n_null, seed)
+    cases = []
+    if workers > 1 and len(numbers) > 1:
+        import multiprocessing
+        from concurrent.futures import ProcessPoolExecutor
+
+        # spawned, not forked: a fork of a process whose OpenMP threads ran can hang
+        with ProcessPoolExecutor(min(workers, len(numbers)), mp_context=multiprocessing.get_context("spawn"),
+                                 initializer=_one_thread_worker) as pool:
+            for case in pool.map(check_case, *zip(*[args + (j,) for j in numbers])):
+                cases.append(case)
+                if progress:
+                    progress(case)
+        return CheckResult(kind, labels, cases)
+    for j in numbers:
+        cases.append(check_case(*args, j))
         if progress:
-            progress(case)
+            progress(cases[-1])
     return CheckResult(kind, labels, cases)

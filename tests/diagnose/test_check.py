@@ -32,3 +32,23 @@ def test_check_on_the_dc_campaign_tells_effects_apart():
     table = result.table()
     assert table.splitlines()[0].startswith("| true \\ diagnosed |")
     assert np.trace(M) == M.sum() - len(misses)          # the diagonal holds every case but those misses
+
+
+@pytest.mark.slow
+def test_check_cases_in_worker_processes_match_the_serial_run():
+    """Each case is seeded by its number: diagnosed in two worker processes
+    (one simulator thread each) it gives the serial run's verdict and shrink
+    to the last bit, and ``only`` runs just the cases asked for."""
+    from sizing.diagnose.bench import Bench
+    from sizing.diagnose.check import campaign_noise, check_runs, clean_inputs
+    from sizing.io.campaign import campaign_split, load_campaign
+
+    campaign = load_campaign(ROOT / "studies/campaigns/dc-motor")
+    campaign_split(campaign, ["steps_b"])
+    bench = Bench(campaign.kind, campaign.rig, campaign.runs, ["steps_b"])
+    args = (campaign.kind, campaign.rig, clean_inputs(bench), ["steps_b"], campaign_noise(bench, 1))
+    serial = check_runs(*args, seed=1, only=[0, 1])
+    parallel = check_runs(*args, seed=1, only=[0, 1], workers=2)
+    assert len(serial.cases) == 2 and serial.cases[0].truth != NONE
+    assert [(c.truth, c.size, c.predicted, c.shrink) for c in parallel.cases] == \
+        [(c.truth, c.size, c.predicted, c.shrink) for c in serial.cases]

@@ -272,18 +272,19 @@ def diagnose(campaign: Path = typer.Argument(..., help="Campaign folder: rig.tom
              no_recalibrate: bool = typer.Option(False, "--no-recalibrate", help="Judge the effects against the stated nominal, without re-calibration."),
              check: bool = typer.Option(False, "--check", help="Inject each library effect into the campaign's own excitations, diagnose each without using the injected truth and print the confusion matrix."),
              seed: int = number_option(0, "--seed", "Seed of the screening and of --check's noise.", low=0, high=SEED_MAX),
+             workers: Optional[int] = number_option(None, "--workers", "--check: cases diagnosed at once, each in a process of its own (the verdicts do not depend on it). Default: the machine's cores, at most 4.", low=1),
              max_samples: Optional[int] = MaxSamplesOpt,
              max_steps: Optional[float] = MaxStepsOpt):
     """Say where the model and the hardware disagree, which unmodelled effect explains it, and how far the gap shrinks."""
     with use_limits(samples=max_samples, steps=max_steps):
-        _diagnose(campaign, holdout, out, recalibrate, no_recalibrate, check, seed)
+        _diagnose(campaign, holdout, out, recalibrate, no_recalibrate, check, seed, workers)
 
 
-def _diagnose(campaign, holdout, out, recalibrate, no_recalibrate, check, seed) -> None:
+def _diagnose(campaign, holdout, out, recalibrate, no_recalibrate, check, seed, workers=None) -> None:
     if check:
         def progress(case):
             typer.echo(f"  {case.truth:>22} size {case.size} -> {case.predicted} ({case.seconds:.1f} s)", err=True)
-        result = api.diagnose_check(campaign, holdout, seed=seed, progress=progress)
+        result = api.diagnose_check(campaign, holdout, seed=seed, progress=progress, workers=_workers(workers))
         typer.echo(result.table())
         typer.echo(f"right effect first: {100 * result.accuracy:.0f} %, null cases naming an effect: "
                    f"{100 * result.null_false_positive:.0f} %, median holdout shrink when right: "
@@ -433,13 +434,18 @@ class _StageBars:
             self.bar.stop()
 
 
+def _workers(workers: Optional[int]) -> int:
+    """``--workers``, or by default the machine's cores, at most 4."""
+    import os
+    return max(1, min(4, os.cpu_count() or 1)) if workers is None else workers
+
+
 def _run_study(fn, quiet: bool, workers: Optional[int], *args, **kwargs):
     """Run api.robust or api.sweep with progress bars and the --workers default
     (the number of cores, at most 4)."""
-    import os
     if workers is not None and workers < 0:
         raise InputError(None, "--workers", f"expected 0 or more, got {workers}")
-    n = max(1, min(4, os.cpu_count() or 1)) if workers is None else workers
+    n = _workers(workers)
     with _StageBars(quiet) as bars:
         return fn(*args, workers=n, progress=bars, **kwargs)
 

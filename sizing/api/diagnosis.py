@@ -65,10 +65,12 @@ def run_diagnose(campaign_dir, holdout, recalibrate=None, seed: int = 0) -> Diag
     return DiagnoseResult(found, f"Sim-to-real gap: {Path(campaign_dir).name}", (campaign_dir,))
 
 
-def diagnose_check(campaign_dir: str | Path, holdout: list[str] | None = None, seed: int = 0, progress=None):
+def diagnose_check(campaign_dir: str | Path, holdout: list[str] | None = None, seed: int = 0, progress=None,
+                   workers: int = 1):
     """The withheld-effect check on a campaign's own excitations and rig
     (``diagnose.check``: its result has ``table()``, ``matrix()``,
-    ``accuracy``); writes no file."""
+    ``accuracy``); ``workers`` cases at once, each in its own process;
+    writes no file."""
     from ..io.campaign import campaign_split, load_campaign
 
     campaign = load_campaign(campaign_dir)
@@ -78,4 +80,4 @@ def diagnose_check(campaign_dir: str | Path, holdout: list[str] | None = None, s
     from ..diagnose.check import campaign_noise, check_runs, clean_inputs
     bench = Bench(campaign.kind, campaign.rig, campaign.runs, holdout)
     return check_runs(campaign.kind, campaign.rig, clean_inputs(bench), holdout, campaign_noise(bench, seed),
-                      seed=seed, progress=progress)
+                      seed=seed, progress=progress, workers=workers)

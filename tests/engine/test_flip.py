@@ -39,6 +39,77 @@ def test_a_temperature_is_searched_in_degc_within_its_span():
     assert 120.2 < to <= 121.2
 
 
+class _Rivals:
+    """A search over two technologies whose best designs' masses are known
+    functions of the stroke: the recommended "a" (today 2 kg) and "b"."""
+
+    def __init__(self, a, b):
+        self.mass, self.calls = {"a": a, "b": b}, []
+        self.today = {"a": flip.resolve.Verdict(True, "a1", a(40.0)), "b": flip.resolve.Verdict(True, "b1", b(40.0))}
+
+    def recommended(self):
+        return "a", {"id": "a1"}
+
+    def touches(self, tech, probe):
+        return True
+
+    def best_at(self, tech, probe, x):
+        self.calls.append((tech, x))
+        return self.mass[tech](x)
+
+    def no_lighter(self, tech, probe, x, today):
+        return self.best_at(tech, probe, x) >= today
+
+
+def test_a_looser_value_that_lets_another_technology_lead_is_found_to_the_tolerance():
+    """"a" gets lighter at a shorter stroke (1.6 + 0.01 x kg), "b" faster
+    (2 + 0.5 (x - 23.7) kg): "b" leads below x = 11.45 / 0.49 = 23.37 mm.
+    The flip is found within 1 %, and re-evaluated at the flip plus and
+    minus the tolerance the recommendation changes on one side only."""
+    s = _Rivals(lambda x: 1.6 + 0.01 * x, lambda x: 2.0 + 0.5 * (x - 23.7))
+    p = _probe()
+    to = flip.loosening_flip(s, p, p.end(-1))
+    assert 11.45 / 0.49 * (1 - TOLERANCE) <= to < 11.45 / 0.49
+
+    def leads_b(x):
+        return s.best_at("b", p, x) < s.best_at("a", p, x)
+    assert leads_b(to * (1 - TOLERANCE)) and not leads_b(to * (1 + TOLERANCE))
+
+
+def test_nothing_flips_looser_when_no_rival_gets_under_today_at_the_end_of_the_range():
+    """Every rival no lighter at the loosest value than the recommendation
+    today: nothing flips in the range, one re-solve per rival, none of the
+    recommended technology."""
+    s = _Rivals(lambda x: 2.0, lambda x: 2.5 + x)
+    p = _probe()
+    assert flip.loosening_flip(s, p, p.end(-1)) is None and s.calls == [("b", 10.0)]
+
+
+def test_the_recommendation_flips_follow_the_design_the_policy_picks():
+    """The min_compliance policy picked a DC design over the nominal
+    piezohydraulic one: the entries searched for the nominal are replaced
+    by those of the pick, under its technology, each naming the design and
+    what is held; with the nominal picked they are kept and annotated."""
+    def techs():
+        rec = {"what": "requirement stroke", "field": "stroke", "from": 0.04, "to": 0.05,
+               "changes": "recommendation", "tolerance": TOLERANCE, "within": [0.04, 0.16]}
+        feas = dict(rec, changes="feasibility", to=0.08)
+        return {"piezohydraulic": {"flips": [feas, rec]}, "dc_motor": {"flips": [dict(feas, to=None)]}}
+    pick = {"id": "dc-1", "technology": "dc_motor"}
+    out = techs()
+    flip.restate(out, pick, flip.held_text(0.9, True, False), lambda: [
+        {"what": "requirement stroke", "field": "stroke", "from": 0.04, "to": 0.06, "changes": "recommendation",
+         "tolerance": TOLERANCE, "within": [0.04, 0.16]}])
+    assert [e["changes"] for e in out["piezohydraulic"]["flips"]] == ["feasibility"]
+    rec = [e for e in out["dc_motor"]["flips"] if e["changes"] == "recommendation"]
+    assert len(rec) == 1 and rec[0]["to"] == 0.06 and rec[0]["design"] == "dc-1" and "held" in rec[0]
+    assert out["dc_motor"]["flip"]["to"] == 0.06
+    out = techs()
+    flip.restate(out, {"id": "ph-1", "technology": "piezohydraulic"}, flip.held_text(0.9, False, True))
+    rec = out["piezohydraulic"]["flips"][1]
+    assert rec["to"] == 0.05 and rec["design"] == "ph-1" and "no design meets" in rec["held"]
+
+
 # --- the seed: each flip re-solved on both sides ------------------------------
 @pytest.fixture(scope="module")
 def seed(seed_solve):
@@ -116,3 +187,62 @@ def test_the_seed_flips_agree_with_sweep(seed):
         assert point(ph["to"] * (1 + TOLERANCE))["piezohydraulic"] == 0
     if dc["to"] is None:
         assert point(dc["within"][1])["dc_motor"] > 0
+
+
+def _recommended(req, cat, loads, field, value) -> tuple:
+    """(first objective, technology, id) of the lightest technology's best,
+    every technology re-solved whole with one requirement changed."""
+    from sizing.engine import resolve
+    from sizing.engine.solve import technology_stages
+    changed = req.model_copy(update={"requirements": req.requirements.model_copy(update={field: value})})
+    stages, found = technology_stages(), []
+    for tech in ("piezohydraulic", "dc_motor"):
+        v = resolve.verdict_of(changed, resolve.whole(stages, tech, changed, cat, loads))
+        if v.feasible:
+            found.append((v.objective, tech, v.best))
+    pump = resolve.pump_lightest(stages, changed, cat, loads)
+    if pump is not None:
+        found.append((pump[1], "piezo_pump", pump[0]))
+    return min(found, default=(None, None, None))
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("field", ["stroke", "blocked_force"])
+def test_each_seed_recommendation_flip_holds_on_one_side_and_not_the_other(seed, field):
+    """The recommendation's flips, stricter and looser: a tolerance past the
+    flip (away from today) the recommendation is another, a tolerance short
+    of it it is today's; where nothing flips, it is still today's at the end
+    of the range. Stricter, the recommended design itself (designs only drop
+    out); looser, its technology (another of its designs may get lighter)."""
+    req, cat, loads, results = seed
+    comp = results["summary"]["comparison"]
+    lead = comp["recommended"]["technology"]
+    entries = [f for f in comp["technologies"][lead]["flips"] if f["field"] == field and f["changes"] == "recommendation"]
+    assert {e["direction"] for e in entries} == {"stricter", "looser"}
+    assert all(e["design"] == comp["recommended"]["id"] and e["held"] for e in entries)
+    for e in entries:
+        stricter = e["direction"] == "stricter"
+        today = comp["recommended"]["id"] if stricter else lead
+        which = 2 if stricter else 1
+
+        def at(x, which=which):
+            return _recommended(req, cat, loads, field, x)[which]
+        if e["to"] is None:
+            assert at(e["within"][1] if stricter else e["within"][0]) == today
+            continue
+        away = 1 + TOLERANCE if stricter else 1 - TOLERANCE
+        assert at(e["to"] * away) != today and at(e["to"] / away) == today
+
+
+@pytest.mark.slow
+def test_the_piezohydraulic_mass_floor_bounds_every_design(seed):
+    """The floor the looser search settles on without sizing (n stacks and
+    one amplifier unit of each combination kept) is below the mass of
+    every piezohydraulic design the seed's solve sized, and none is known
+    for the DC motor."""
+    from sizing.engine import resolve
+    req, cat, _, results = seed
+    floor = resolve.mass_floor("piezohydraulic", req, cat)
+    masses = [c["metrics"]["mass_kg"] for c in results["candidates"]
+              if c["technology"] == "piezohydraulic" and c.get("stage") != "pruned" and c.get("metrics")]
+    assert masses and 0 < floor <= min(masses) and resolve.mass_floor("dc_motor", req, cat) is None

@@ -347,11 +347,14 @@ class Search:
     def floor_at(self, tech: str, probe: Probe, x: float) -> float:
         """A lower bound on ``best_at`` without sizing (``resolve.mass_floor``,
         when the first objective is mass); -inf where none is known."""
-        floor = None
-        if self.key == "mass_kg":
-            req, catalog = probe.apply(self.req, self.catalog, x)
-            floor = resolve.mass_floor(tech, req, catalog)
-        return -math.inf if floor is None else floor
+        key = ("floor", tech, probe.field, x)
+        if key not in self.bests:
+            floor = None
+            if self.key == "mass_kg":
+                req, catalog = probe.apply(self.req, self.catalog, x)
+                floor = resolve.mass_floor(tech, req, catalog)
+            self.bests[key] = -math.inf if floor is None else floor
+        return self.bests[key]
 
     @staticmethod
     def loosest(probes: list[Probe]) -> Probe:
@@ -528,32 +531,34 @@ def _applied(probes: list[Probe], req, catalog):
 
 
 def loosening_flip(search: Search, probe: Probe, end: float, loosest: list[Probe] = ()) -> float | None:
-    """Where a looser value lets another technology's best become lighter
-    (first objective) than the recommended technology's best, both
-    re-solved whole there. A looser value can only make a technology's best
-    lighter (feasibility and sizing are monotone), and the recommended
-    technology's best is never heavier than today's: so when every other
-    technology's best at the end of the range is no lighter than today's
-    recommendation, nothing flips in the whole range (one whole re-solve
-    per other technology; none for a catalog value no other technology's
-    design holds). ``loosest``: requirements whose looser ends are tried
-    together first (one whole re-solve per other technology for all of
-    them; monotone in each, so a best no lighter than today's there
-    settles every one of them), each alone only when that does not settle it."""
-    lead, _ = search.recommended()
-    today = search.today[lead].objective
+    """Where, at a looser value, the recommended design stops being the
+    recommendation: it stops complying (a looser value is not always easier:
+    a DC motor must reach the mean speed over a shorter stroke in less
+    time), or another technology's best gets lighter (first objective) than
+    it. Its own row is re-solved a step (cheap); the other technologies are
+    bounded from below by their mass floor (``Search.no_lighter``) and
+    re-solved whole only when that does not settle it, every requirement of
+    ``loosest`` at its loosest at once first (monotone in each for them, as
+    in their feasibility flips). Held, for the cost (a whole re-solve of
+    the recommended technology a step, about 2 s for the DC motor): a
+    lighter design of the recommended technology at the looser value, and
+    whether one of its designs still complies where the recommended one
+    stops (the recommendation then passes to it, or to another technology).
+    Bisection, as every flip, assumes one change in the range."""
+    lead, d0 = search.recommended()
     others = [t for t in search.today if t != lead and search.touches(t, probe)]
-    if probe in loosest:
-        corner = search.loosest(list(loosest))
-        if all(search.no_lighter(t, corner, 0.0, today) for t in others):
-            return None
-    if all(search.no_lighter(t, probe, end, today) for t in others):
-        return None
+    corner = search.loosest(list(loosest)) if probe in loosest else None
 
-    def overtaken(x: float) -> bool:
-        rivals = [search.best_at(t, probe, x) for t in others]
-        return min(rivals) < today and min(rivals) < search.best_at(lead, probe, x)
-    return bisect(overtaken, probe, end)
+    def settled(t: str, x: float, mine: float) -> bool:
+        return ((corner is not None and search.no_lighter(t, corner, 0.0, mine))
+                or search.no_lighter(t, probe, x, mine))
+
+    def kept(x: float) -> bool:
+        """The recommended design complies and no other technology's best is lighter."""
+        ok, mine = search.design_at(lead, probe, x, d0)
+        return ok and all(settled(t, x, mine) for t in others)
+
+    return bisect(lambda x: not kept(x), probe, end)
 
 
 def flips(req, catalog, loads, candidates: list[dict], deciding: dict[str, list[str]], stages) -> tuple[dict, int]:
@@ -576,11 +581,15 @@ def flips(req, catalog, loads, candidates: list[dict], deciding: dict[str, list[
     return out, search.solves
 
 
-def held_text(target: float, meets: bool, nominal: bool) -> str:
+def held_text(target: float, meets: bool | None, nominal: bool) -> str:
     """What a recommendation flip holds fixed of the ``[objectives]
     min_compliance`` policy (``studies/compliance.py``): the probabilities
     of compliance are estimated once, for today's values, and not at each
-    bisection step (a Monte Carlo through the simulation per step and design)."""
+    bisection step (a Monte Carlo through the simulation per step and design).
+    ``meets`` None: no technology is feasible, nothing is recommended."""
+    if meets is None:
+        return ("no technology is feasible: the recommendation changes where the first becomes feasible, "
+                "its probability of compliance there not estimated")
     if target <= 0:
         return "min_compliance 0: the nominal recommendation, no probability enters it"
     if not meets:
@@ -600,14 +609,14 @@ def restate(techs: dict, pick: dict | None, held: str, redo: Callable[[], list[d
     ``design`` (its id) and ``held``; ``redo()`` gives the entries anew when
     the pick is not the design they were searched for (the nominal
     lightest). ``flip`` is chosen again from the entries."""
-    if pick is None or any(t.get("flips") is None for t in techs.values()):
+    if any(t.get("flips") is None for t in techs.values()):
         return
     if redo is not None:
         for t in techs.values():
             t["flips"] = [e for e in t["flips"] if e["changes"] != "recommendation"]
         techs[pick["technology"]]["flips"] += redo()
     for t in techs.values():
-        t["flips"] = [dict(e, design=pick["id"], held=held) if e["changes"] == "recommendation" else e
+        t["flips"] = [dict(e, design=pick and pick["id"], held=held) if e["changes"] == "recommendation" else e
                       for e in t["flips"]]
         t["flip"] = smallest(t["flips"])
 

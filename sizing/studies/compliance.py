@@ -176,6 +176,7 @@ def _restate_flips(req, catalog, results: dict, chosen, nominal, target: float) 
     techs = results["summary"]["comparison"]["technologies"]
     pick = chosen or nominal
     if pick is None:
+        flip.restate(techs, None, flip.held_text(target, None, False))
         return
     redo = None
     if pick is not nominal:

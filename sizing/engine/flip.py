@@ -18,8 +18,8 @@ The recommendation (the lightest technology's best design, ``Search.
 recommended``) is searched the same way for the recommended technology's
 requirements and catalog values, in both directions: stricter, it changes
 where that design stops complying or another technology's best overtakes
-it; looser, where another technology's best gets lighter than the
-recommended technology's (``loosening_flip``). When no technology is
+it; looser, the same, with the other technologies bounded from below by
+their mass floor before any whole re-solve (``loosening_flip``). When no technology is
 feasible, the recommendation changes where the first one becomes feasible
 (the smallest of their feasibility flips, no further solve).
 

@@ -621,17 +621,17 @@ def restate(techs: dict, pick: dict | None, held: str, redo: Callable[[], list[d
         t["flip"] = smallest(t["flips"])
 
 
-def policy_flips(req, catalog, candidates: list[dict], techs: dict, pick: dict) -> list[dict]:
+def policy_flips(req, catalog, candidates: list[dict], techs: dict, pick: dict, stages) -> list[dict]:
     """The recommendation's flips for ``pick``, a design the
     ``min_compliance`` policy recommends over the nominal lightest, with the
     policy's estimates held (``held_text``): stricter values only, where
     the picked design (its combination re-sized there) stops complying
-    nominally, at the latest where its technology's feasibility flips."""
+    nominally, at the latest where its technology's feasibility flips.
+    ``stages``: the technologies' stages of the solve (``solve.technology_stages``)."""
     from . import stage_cache
     from .loads import load_cases
-    from .solve import technology_stages
     tech = pick["technology"]
-    search = Search(req, catalog, [c["load_N"] for c in load_cases(req.load)], candidates, technology_stages())
+    search = Search(req, catalog, [c["load_N"] for c in load_cases(req.load)], candidates, stages)
     deciding = [f"{r['part']}.{r['field']}" for r in pick.get("rests_on_assumed") or [] if r.get("decides")]
     ends = {e["field"]: e["to"] for e in techs[tech]["flips"] if e["changes"] == "feasibility" and e["to"] is not None}
     out = []

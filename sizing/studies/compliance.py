@@ -181,7 +181,8 @@ def _restate_flips(req, catalog, results: dict, chosen, nominal, target: float) 
     redo = None
     if pick is not nominal:
         def redo():
-            return flip.policy_flips(req, catalog, results["candidates"], techs, pick)
+            from ..engine.solve import technology_stages
+            return flip.policy_flips(req, catalog, results["candidates"], techs, pick, technology_stages())
     flip.restate(techs, pick, flip.held_text(target, chosen is not None, pick is nominal), redo)
 
 

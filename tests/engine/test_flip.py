@@ -321,7 +321,9 @@ def test_a_design_the_policy_picks_gets_its_own_recommendation_flips(seed, field
     comp = results["summary"]["comparison"]
     pick = next(c for c in results["candidates"] if c["feasible"] and c["technology"] == "dc_motor"
                 and c["id"] != comp["recommended"]["id"] and "actuator" not in c["components"])
-    entries = flip.policy_flips(req, cat, results["candidates"], copy.deepcopy(comp["technologies"]), pick)
+    from sizing.engine.solve import technology_stages
+    entries = flip.policy_flips(req, cat, results["candidates"], copy.deepcopy(comp["technologies"]), pick,
+                                technology_stages())
     e = next(e for e in entries if e["field"] == field)
     assert e["changes"] == "recommendation" and e["direction"] == "stricter"
     if e["to"] is None:

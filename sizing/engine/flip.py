@@ -14,13 +14,22 @@ which the verdict changes, to ``TOLERANCE`` of the value. Nothing changes
 at the end of the range: ``to`` is null and ``within`` says where it was
 looked for.
 
-The recommendation (the lightest technology's best design, ``resolve.
+The recommendation (the lightest technology's best design, ``Search.
 recommended``) is searched the same way for the recommended technology's
-requirements and catalog values, stricter only: it changes where that
-design stops being the best, or another technology's best overtakes it.
-When no technology is feasible, the recommendation changes where the first
-one becomes feasible (the smallest of their feasibility flips, no further
-solve).
+requirements and catalog values, in both directions: stricter, it changes
+where that design stops complying or another technology's best overtakes
+it; looser, the same, with the other technologies bounded from below by
+their mass floor before any whole re-solve (``loosening_flip``). When no technology is
+feasible, the recommendation changes where the first one becomes feasible
+(the smallest of their feasibility flips, no further solve).
+
+The ``[objectives] min_compliance`` policy (``studies/compliance.py``)
+then names the recommendation: the entries say which design they are for
+(``design``) and what of the policy they hold fixed (``held``): the
+probabilities of compliance are estimated once, at today's values, never
+at a bisection step. When the policy picks another design than the
+nominal lightest, its entries are searched anew for that design
+(``policy_flips``: where it stops complying nominally, stricter only).
 
 Bisection assumes the verdict changes once in the range (feasibility is
 monotone in each requirement); the acceptance test re-solves on both sides
@@ -145,6 +154,7 @@ class Search:
         self.known: dict[tuple, dict[float, dict]] = {}
         self.pool: dict[tuple, list] = {}
         self.screens: dict[str, dict[float, bool]] = {}
+        self.bests: dict[tuple, float] = {}
         self.solves = 0
 
     # --- designs at one value -----------------------------------------------
@@ -321,6 +331,50 @@ class Search:
             known[x] = resolve.pump_lightest(self.stages, req, catalog, self.loads)
         return known[x]
 
+    def best_at(self, tech: str, probe: Probe, x: float) -> float:
+        """The first objective of ``tech``'s best complying design with the
+        value ``x`` (a whole re-solve, kept per value; inf when none complies)."""
+        if tech == "piezo_pump":
+            found = self._pump(probe, x)
+            return math.inf if found is None else found[1]
+        key = (tech, probe.field, x)
+        if key not in self.bests:
+            req, catalog = probe.apply(self.req, self.catalog, x)
+            self.solves += 1
+            self.bests[key] = resolve.verdict_of(req, resolve.whole(self.stages, tech, req, catalog, self.loads)).objective
+        return self.bests[key]
+
+    def floor_at(self, tech: str, probe: Probe, x: float) -> float:
+        """A lower bound on ``best_at`` without sizing (``resolve.mass_floor``,
+        when the first objective is mass); -inf where none is known."""
+        key = ("floor", tech, probe.field, x)
+        if key not in self.bests:
+            floor = None
+            if self.key == "mass_kg":
+                req, catalog = probe.apply(self.req, self.catalog, x)
+                floor = resolve.mass_floor(tech, req, catalog)
+            self.bests[key] = -math.inf if floor is None else floor
+        return self.bests[key]
+
+    @staticmethod
+    def loosest(probes: list[Probe]) -> Probe:
+        """Every one of ``probes`` at the looser end of its range at once (a
+        technology's best there is no heavier than at any looser value of any
+        one of them: monotone in each)."""
+        return Probe("every requirement at its loosest", "loosest", 0.0, +1, True,
+                     lambda req, catalog, x: _applied(probes, req, catalog))
+
+    def no_lighter(self, tech: str, probe: Probe, x: float, today: float) -> bool:
+        """Whether ``tech``'s best with the value ``x`` is no lighter than
+        ``today``: its mass floor first, a whole re-solve only when the
+        floor does not settle it."""
+        return self.floor_at(tech, probe, x) >= today or self.best_at(tech, probe, x) >= today
+
+    def touches(self, tech: str, probe: Probe) -> bool:
+        """Whether moving the value can change ``tech``'s designs (a catalog
+        value only those that hold the part)."""
+        return probe.holding is None or any(resolve.holds(c, probe.holding) for c in self.solved[tech])
+
     def pump_screen(self, probe: Probe, x: float) -> bool:
         """Whether some pump row passes the static screen with the value ``x``."""
         if x not in self.screens.setdefault(probe.field, {}):
@@ -453,15 +507,58 @@ def screened_flip(search: Search, probe: Probe, end: float) -> float | None:
 
 
 def recommendation_flips(search: Search, probes: list[Probe], feasibility: list[dict]) -> list[dict]:
-    """Where the recommended design changes, one entry per probe (stricter
-    values); it changes at the latest where its technology's feasibility does."""
+    """Where the recommended design changes, two entries per probe: stricter
+    values (it changes at the latest where its technology's feasibility
+    does) and looser ones (``loosening_flip``)."""
     ends = {f["field"]: f["to"] for f in feasibility if f["to"] is not None}
     out = []
     for probe in probes:
         end = ends.get(probe.field, probe.end(probe.stricter))
         to = bisect(lambda x: search.recommendation_changes(probe, x), probe, end)
-        out.append(_entry(probe, to, probe.end(probe.stricter), "recommendation"))
+        out.append(dict(_entry(probe, to, probe.end(probe.stricter), "recommendation"), direction="stricter"))
+        looser = probe.end(-probe.stricter)
+        loosest = [p for p in probes if p.holding is None]
+        out.append(dict(_entry(probe, loosening_flip(search, probe, looser, loosest), looser, "recommendation"),
+                        direction="looser"))
     return out
+
+
+def _applied(probes: list[Probe], req, catalog):
+    """``req`` and ``catalog`` with each probe at the looser end of its range."""
+    for p in probes:
+        req, catalog = p.apply(req, catalog, p.end(-p.stricter))
+    return req, catalog
+
+
+def loosening_flip(search: Search, probe: Probe, end: float, loosest: list[Probe] = ()) -> float | None:
+    """Where, at a looser value, the recommended design stops being the
+    recommendation: it stops complying (a looser value is not always easier:
+    a DC motor must reach the mean speed over a shorter stroke in less
+    time), or another technology's best gets lighter (first objective) than
+    it. Its own row is re-solved a step (cheap); the other technologies are
+    bounded from below by their mass floor (``Search.no_lighter``) and
+    re-solved whole only when that does not settle it, every requirement of
+    ``loosest`` at its loosest at once first (monotone in each for them, as
+    in their feasibility flips). Held, for the cost (a whole re-solve of
+    the recommended technology a step, about 2 s for the DC motor): a
+    lighter design of the recommended technology at the looser value, and
+    whether one of its designs still complies where the recommended one
+    stops (the recommendation then passes to it, or to another technology).
+    Bisection, as every flip, assumes one change in the range."""
+    lead, d0 = search.recommended()
+    others = [t for t in search.today if t != lead and search.touches(t, probe)]
+    corner = search.loosest(list(loosest)) if probe in loosest else None
+
+    def settled(t: str, x: float, mine: float) -> bool:
+        return ((corner is not None and search.no_lighter(t, corner, 0.0, mine))
+                or search.no_lighter(t, probe, x, mine))
+
+    def kept(x: float) -> bool:
+        """The recommended design complies and no other technology's best is lighter."""
+        ok, mine = search.design_at(lead, probe, x, d0)
+        return ok and all(settled(t, x, mine) for t in others)
+
+    return bisect(lambda x: not kept(x), probe, end)
 
 
 def flips(req, catalog, loads, candidates: list[dict], deciding: dict[str, list[str]], stages) -> tuple[dict, int]:
@@ -482,6 +579,68 @@ def flips(req, catalog, loads, candidates: list[dict], deciding: dict[str, list[
     else:
         out = _first_feasible(out)
     return out, search.solves
+
+
+def held_text(target: float, meets: bool | None, nominal: bool) -> str:
+    """What a recommendation flip holds fixed of the ``[objectives]
+    min_compliance`` policy (``studies/compliance.py``): the probabilities
+    of compliance are estimated once, for today's values, and not at each
+    bisection step (a Monte Carlo through the simulation per step and design).
+    ``meets`` None: no technology is feasible, nothing is recommended."""
+    if meets is None:
+        return ("no technology is feasible: the recommendation changes where the first becomes feasible, "
+                "its probability of compliance there not estimated")
+    if target <= 0:
+        return "min_compliance 0: the nominal recommendation, no probability enters it"
+    if not meets:
+        return (f"the probabilities of compliance as solved: no design meets min_compliance {target:.0%}, so the "
+                "nominal lightest is recommended; whether one would meet it at another value is not re-estimated")
+    if nominal:
+        return (f"the probabilities of compliance as solved: the nominal lightest meets min_compliance {target:.0%} "
+                "and is not re-estimated at other values")
+    return (f"the policy's pick as solved: the lightest design meeting min_compliance {target:.0%}, its lighter "
+            "rivals missing it; none is re-estimated at other values, so only where the picked design stops "
+            "complying nominally is searched (stricter values), and looser values are not searched")
+
+
+def restate(techs: dict, pick: dict | None, held: str, redo: Callable[[], list[dict]] | None = None) -> None:
+    """The recommendation's flips (``techs[T]["flips"]``, in place) made
+    those of ``pick``, the design the policy recommends: each entry gains
+    ``design`` (its id) and ``held``; ``redo()`` gives the entries anew when
+    the pick is not the design they were searched for (the nominal
+    lightest). ``flip`` is chosen again from the entries."""
+    if any(t.get("flips") is None for t in techs.values()):
+        return
+    if redo is not None:
+        for t in techs.values():
+            t["flips"] = [e for e in t["flips"] if e["changes"] != "recommendation"]
+        techs[pick["technology"]]["flips"] += redo()
+    for t in techs.values():
+        t["flips"] = [dict(e, design=pick and pick["id"], held=held) if e["changes"] == "recommendation" else e
+                      for e in t["flips"]]
+        t["flip"] = smallest(t["flips"])
+
+
+def policy_flips(req, catalog, candidates: list[dict], techs: dict, pick: dict, stages) -> list[dict]:
+    """The recommendation's flips for ``pick``, a design the
+    ``min_compliance`` policy recommends over the nominal lightest, with the
+    policy's estimates held (``held_text``): stricter values only, where
+    the picked design (its combination re-sized there) stops complying
+    nominally, at the latest where its technology's feasibility flips.
+    ``stages``: the technologies' stages of the solve (``solve.technology_stages``)."""
+    from . import stage_cache
+    from .loads import load_cases
+    tech = pick["technology"]
+    search = Search(req, catalog, [c["load_N"] for c in load_cases(req.load)], candidates, stages)
+    deciding = [f"{r['part']}.{r['field']}" for r in pick.get("rests_on_assumed") or [] if r.get("decides")]
+    ends = {e["field"]: e["to"] for e in techs[tech]["flips"] if e["changes"] == "feasibility" and e["to"] is not None}
+    out = []
+    with stage_cache.reuse():
+        for probe in requirement_probes(req) + catalog_probes(catalog, deciding):
+            end = ends.get(probe.field, probe.end(probe.stricter))
+            to = bisect(lambda x: not search.design_at(tech, probe, x, pick)[0], probe, end)
+            out.append(dict(_entry(probe, to, probe.end(probe.stricter), "recommendation"), direction="stricter"))
+    return out
 
 
 def _first_feasible(out: dict) -> dict:

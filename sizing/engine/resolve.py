@@ -138,6 +138,21 @@ def units(stages, tech: str, req, catalog, loads, cs: list[dict]) -> list[dict]:
     raise ValueError(f"no re-solve by design for {tech!r}")
 
 
+def mass_floor(tech: str, req, catalog) -> float | None:
+    """A lower bound on the mass (kg) of every design ``tech`` can give for
+    ``req``, from its enumeration alone (no sizing); None where none is
+    known. Piezohydraulic: each combination the enumeration keeps (not
+    pruned) holds its n stacks and at least one amplifier unit, and a sized
+    design's mass adds hydraulics, structure and compensator to them
+    (``verify``'s mass; the same sum the pruned candidates' records state);
+    inf when every combination is pruned."""
+    if tech != "piezohydraulic":
+        return None
+    from ..technologies.piezohydraulic.search import enumerate_combos
+    return min((c.n * c.stack.mass + c.amplifier.mass for c in enumerate_combos(req, catalog) if not c.pruned),
+               default=math.inf)
+
+
 def pump_lightest(stages, req, catalog, loads) -> tuple[str, float] | None:
     """The pump's best complying design (id, first objective), None when
     none complies: of the rows the solve's pump stage would simulate, those

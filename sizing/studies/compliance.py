@@ -122,6 +122,7 @@ def attach(req, catalog, results: dict, stages=None) -> None:
         t["compliance"] = study.compliance(by_id[t["best"]]) if t["best"] in by_id else None
         t["knife_edges"] = knife_edges(by_id.get(t["best"], {}))
     comp["recommended"] = _recommended(study, nominal, chosen, examined)
+    _restate_flips(req, catalog, results, chosen, nominal, study.target)
     comp["recommendation"] = _sentence(techs, req, comp["recommended"], chosen, nominal, study)
     results["compliance_s"] = time.perf_counter() - start
 
@@ -165,6 +166,24 @@ def _policy(study: Study, cands: list[dict], nominal: dict | None, req) -> tuple
         if study.meets(estimate):
             return c, examined
     return None, examined
+
+
+def _restate_flips(req, catalog, results: dict, chosen, nominal, target: float) -> None:
+    """The recommendation's flips made those of the design recommended
+    under the policy (``flip.restate``): searched anew when the policy picked
+    another design than the nominal lightest they were searched for."""
+    from ..engine import flip
+    techs = results["summary"]["comparison"]["technologies"]
+    pick = chosen or nominal
+    if pick is None:
+        flip.restate(techs, None, flip.held_text(target, None, False))
+        return
+    redo = None
+    if pick is not nominal:
+        def redo():
+            from ..engine.solve import technology_stages
+            return flip.policy_flips(req, catalog, results["candidates"], techs, pick, technology_stages())
+    flip.restate(techs, pick, flip.held_text(target, chosen is not None, pick is nominal), redo)
 
 
 def _entry(cand: dict, compliance) -> dict:

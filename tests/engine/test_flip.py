@@ -4,6 +4,8 @@ reported flip checked by re-solving on both sides of it, and against
 ``sizing sweep``'s own grid points."""
 from __future__ import annotations
 
+import math
+
 import pytest
 
 from sizing.engine import flip
@@ -37,6 +39,94 @@ def test_a_temperature_is_searched_in_degc_within_its_span():
     assert p.end(+1) == 250.0 and p.end(-1) == -50.0 and _probe(20.0, -1, True).end(-1) == flip.COLD_LIMIT
     to = bisect(lambda x: x > 120.2, p, p.end(+1))
     assert 120.2 < to <= 121.2
+
+
+class _Rivals:
+    """A search over two technologies whose best designs' masses are known
+    functions of the stroke: the recommended "a" (today 2 kg) and "b"."""
+
+    def __init__(self, a, b):
+        self.mass, self.calls = {"a": a, "b": b}, []
+        self.today = {"a": flip.resolve.Verdict(True, "a1", a(40.0)), "b": flip.resolve.Verdict(True, "b1", b(40.0))}
+
+    def recommended(self):
+        return "a", {"id": "a1"}
+
+    def touches(self, tech, probe):
+        return True
+
+    def best_at(self, tech, probe, x):
+        self.calls.append((tech, x))
+        return self.mass[tech](x)
+
+    def no_lighter(self, tech, probe, x, today):
+        return self.best_at(tech, probe, x) >= today
+
+    def design_at(self, tech, probe, x, c):
+        mass = self.mass[tech](x)
+        return math.isfinite(mass), mass
+
+    def floor_at(self, tech, probe, x):
+        return -math.inf
+
+
+def test_a_looser_value_that_lets_another_technology_lead_is_found_to_the_tolerance():
+    """"a" gets lighter at a shorter stroke (1.6 + 0.01 x kg), "b" faster
+    (2 + 0.5 (x - 23.7) kg): "b" leads below x = 11.45 / 0.49 = 23.37 mm.
+    The flip is found within 1 %, and re-evaluated at the flip plus and
+    minus the tolerance the recommendation changes on one side only."""
+    s = _Rivals(lambda x: 1.6 + 0.01 * x, lambda x: 2.0 + 0.5 * (x - 23.7))
+    p = _probe()
+    to = flip.loosening_flip(s, p, p.end(-1))
+    assert 11.45 / 0.49 * (1 - TOLERANCE) <= to < 11.45 / 0.49
+
+    def leads_b(x):
+        return s.best_at("b", p, x) < s.best_at("a", p, x)
+    assert leads_b(to * (1 - TOLERANCE)) and not leads_b(to * (1 + TOLERANCE))
+
+
+def test_nothing_flips_looser_when_no_rival_gets_under_today_at_the_end_of_the_range():
+    """Every rival no lighter at the loosest value than the recommendation
+    today: nothing flips in the range, one re-solve per rival, none of the
+    recommended technology."""
+    s = _Rivals(lambda x: 2.0, lambda x: 2.5 + x)
+    p = _probe()
+    assert flip.loosening_flip(s, p, p.end(-1)) is None and s.calls == [("b", 10.0)]
+
+
+def test_a_looser_value_the_recommended_technology_cannot_meet_changes_the_recommendation():
+    """"a" stops complying below a 20 mm stroke (a DC motor must reach the
+    mean speed over a shorter stroke in less time), "b" stays heavier: the
+    recommendation passes on there, found within 1 %."""
+    s = _Rivals(lambda x: 2.0 if x >= 20.0 else math.inf, lambda x: 400.0)
+    p = _probe()
+    to = flip.loosening_flip(s, p, p.end(-1))
+    assert 20.0 * (1 - TOLERANCE) <= to < 20.0
+
+
+def test_the_recommendation_flips_follow_the_design_the_policy_picks():
+    """The min_compliance policy picked a DC design over the nominal
+    piezohydraulic one: the entries searched for the nominal are replaced
+    by those of the pick, under its technology, each naming the design and
+    what is held; with the nominal picked they are kept and annotated."""
+    def techs():
+        rec = {"what": "requirement stroke", "field": "stroke", "from": 0.04, "to": 0.05,
+               "changes": "recommendation", "tolerance": TOLERANCE, "within": [0.04, 0.16]}
+        feas = dict(rec, changes="feasibility", to=0.08)
+        return {"piezohydraulic": {"flips": [feas, rec]}, "dc_motor": {"flips": [dict(feas, to=None)]}}
+    pick = {"id": "dc-1", "technology": "dc_motor"}
+    out = techs()
+    flip.restate(out, pick, flip.held_text(0.9, True, False), lambda: [
+        {"what": "requirement stroke", "field": "stroke", "from": 0.04, "to": 0.06, "changes": "recommendation",
+         "tolerance": TOLERANCE, "within": [0.04, 0.16]}])
+    assert [e["changes"] for e in out["piezohydraulic"]["flips"]] == ["feasibility"]
+    rec = [e for e in out["dc_motor"]["flips"] if e["changes"] == "recommendation"]
+    assert len(rec) == 1 and rec[0]["to"] == 0.06 and rec[0]["design"] == "dc-1" and "held" in rec[0]
+    assert out["dc_motor"]["flip"]["to"] == 0.06
+    out = techs()
+    flip.restate(out, {"id": "ph-1", "technology": "piezohydraulic"}, flip.held_text(0.9, False, True))
+    rec = out["piezohydraulic"]["flips"][1]
+    assert rec["to"] == 0.05 and rec["design"] == "ph-1" and "no design meets" in rec["held"]
 
 
 # --- the seed: each flip re-solved on both sides ------------------------------
@@ -116,3 +206,134 @@ def test_the_seed_flips_agree_with_sweep(seed):
         assert point(ph["to"] * (1 + TOLERANCE))["piezohydraulic"] == 0
     if dc["to"] is None:
         assert point(dc["within"][1])["dc_motor"] > 0
+
+
+def _recommended(req, cat, loads, field, value) -> tuple:
+    """(first objective, technology, id) of the lightest technology's best,
+    every technology re-solved whole with one requirement changed."""
+    from sizing.engine import resolve
+    from sizing.engine.solve import technology_stages
+    changed = req.model_copy(update={"requirements": req.requirements.model_copy(update={field: value})})
+    stages, found = technology_stages(), []
+    for tech in ("piezohydraulic", "dc_motor"):
+        v = resolve.verdict_of(changed, resolve.whole(stages, tech, changed, cat, loads))
+        if v.feasible:
+            found.append((v.objective, tech, v.best))
+    pump = resolve.pump_lightest(stages, changed, cat, loads)
+    if pump is not None:
+        found.append((pump[1], "piezo_pump", pump[0]))
+    return min(found, default=(None, None, None))
+
+
+NOT_MONOTONE = pytest.mark.xfail(strict=True, reason=(
+    "the seed's light DC designs' winding temperature is not monotone in the stroke: re-solved, the recommended "
+    "one fails at exactly 80 mm (and 160 mm) and complies at 79 and 80.8 mm, so the bisection, which assumes "
+    "one change in the range, stops at 80 mm"))
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("direction", ["stricter", "looser"])
+@pytest.mark.parametrize("field", ["stroke", "blocked_force"])
+def test_each_seed_recommendation_flip_holds_on_one_side_and_not_the_other(seed, field, direction, request):
+    """The recommendation's flips, stricter and looser: a tolerance past the
+    flip (away from today) the recommended design is no longer recommended,
+    a tolerance short of it it is; where nothing flips, it still is at the
+    end of the range. Stricter: the lightest technology's best is another
+    design (designs only drop out); looser: it stops complying or another
+    technology's best, re-solved whole, is lighter than it."""
+    req, cat, loads, results = seed
+    comp = results["summary"]["comparison"]
+    lead = comp["recommended"]["technology"]
+    entries = [f for f in comp["technologies"][lead]["flips"] if f["field"] == field and f["changes"] == "recommendation"]
+    assert {e["direction"] for e in entries} == {"stricter", "looser"}
+    assert all(e["design"] == comp["recommended"]["id"] and e["held"] for e in entries)
+    if (field, direction) == ("stroke", "stricter"):
+        request.applymarker(NOT_MONOTONE)
+    if (field, direction) == ("stroke", "looser"):
+        request.applymarker(pytest.mark.xfail(strict=True, reason=(
+            "the recommended DC design's simulated speed margin is not monotone in the stroke just below 40 mm: "
+            "re-solved, it misses speed at 39.0 mm (-0.6 %), complies at 39.14 mm, misses at 39.3 and 39.6 mm "
+            "(-0.2 %, -0.1 %) and complies from 39.9 mm; the bisection, which assumes one change in the range, "
+            "stops at 38.9 mm")))
+    d0 = next(c for c in results["candidates"] if c["id"] == comp["recommended"]["id"])
+    for e in (e for e in entries if e["direction"] == direction):
+        stricter = e["direction"] == "stricter"
+
+        def kept(x):
+            if stricter:
+                return _recommended(req, cat, loads, field, x)[2] == d0["id"]
+            return _kept_looser(req, cat, loads, d0, field, x)
+        if e["to"] is None:
+            assert kept(e["within"][1] if stricter else e["within"][0])
+            continue
+        away = 1 + TOLERANCE if stricter else 1 - TOLERANCE
+        assert not kept(e["to"] * away) and kept(e["to"] / away)
+
+
+def _kept_looser(req, cat, loads, d0, field, value) -> bool:
+    """The recommended design ``d0`` (its row re-solved) still complies with
+    one requirement changed and no other technology's best (re-solved whole)
+    is lighter than it."""
+    from sizing.engine import resolve
+    from sizing.engine.rank import verdict
+    from sizing.engine.solve import technology_stages
+    changed = req.model_copy(update={"requirements": req.requirements.model_copy(update={field: value})})
+    stages = technology_stages()
+    fresh = next((f for f in resolve.units(stages, d0["technology"], changed, cat, loads, [d0]) if f["id"] == d0["id"]),
+                 None)
+    if fresh is None or not verdict(fresh["margins"])[0]:
+        return False
+    mass = fresh["metrics"]["mass_kg"]
+    rivals = [resolve.verdict_of(changed, resolve.whole(stages, t, changed, cat, loads)).objective
+              for t in ("piezohydraulic", "dc_motor") if t != d0["technology"]]
+    pump = resolve.pump_lightest(stages, changed, cat, loads)
+    return all(r >= mass for r in rivals + [pump[1] if pump else math.inf])
+
+
+@pytest.mark.slow
+def test_the_piezohydraulic_mass_floor_bounds_every_design(seed):
+    """The floor the looser search settles on without sizing (n stacks and
+    one amplifier unit of each combination kept) is below the mass of
+    every piezohydraulic design the seed's solve sized, and none is known
+    for the DC motor."""
+    from sizing.engine import resolve
+    req, cat, _, results = seed
+    floor = resolve.mass_floor("piezohydraulic", req, cat)
+    masses = [c["metrics"]["mass_kg"] for c in results["candidates"]
+              if c["technology"] == "piezohydraulic" and c.get("stage") != "pruned" and c.get("metrics")]
+    assert masses and 0 < floor <= min(masses) and resolve.mass_floor("dc_motor", req, cat) is None
+
+
+def _design_complies(req, cat, loads, c, field, value) -> bool:
+    """Design ``c`` (its part combination re-solved) with one requirement changed."""
+    from sizing.engine import resolve
+    from sizing.engine.rank import verdict
+    from sizing.engine.solve import technology_stages
+    changed = req.model_copy(update={"requirements": req.requirements.model_copy(update={field: value})})
+    fresh = resolve.units(technology_stages(), c["technology"], changed, cat, loads, [c])
+    return any(f["id"] == c["id"] and verdict(f["margins"])[0] for f in fresh)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("field", [pytest.param("stroke", marks=NOT_MONOTONE), "blocked_force"])
+def test_a_design_the_policy_picks_gets_its_own_recommendation_flips(seed, field):
+    """Had the policy picked the seed's second DC design from parts instead
+    of the nominal lightest, its stroke and blocked-force flips are where
+    it stops complying: re-solved a tolerance past the flip it fails, a
+    tolerance short of it it complies (or still complies at the end of the
+    range when nothing flips)."""
+    import copy
+    req, cat, loads, results = seed
+    comp = results["summary"]["comparison"]
+    pick = next(c for c in results["candidates"] if c["feasible"] and c["technology"] == "dc_motor"
+                and c["id"] != comp["recommended"]["id"] and "actuator" not in c["components"])
+    from sizing.engine.solve import technology_stages
+    entries = flip.policy_flips(req, cat, results["candidates"], copy.deepcopy(comp["technologies"]), pick,
+                                technology_stages())
+    e = next(e for e in entries if e["field"] == field)
+    assert e["changes"] == "recommendation" and e["direction"] == "stricter"
+    if e["to"] is None:
+        assert _design_complies(req, cat, loads, pick, field, e["within"][1])
+        return
+    assert not _design_complies(req, cat, loads, pick, field, e["to"] * (1 + TOLERANCE))
+    assert _design_complies(req, cat, loads, pick, field, e["to"] / (1 + TOLERANCE))

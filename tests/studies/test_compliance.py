@@ -74,6 +74,10 @@ def test_policy_picks_a_heavier_design_that_complies(seed_solve, tmp_path):
     assert rec["nominal_lightest"]["id"] == nominal["id"]
     assert rec["nominal_lightest"]["compliance"]["p"] < target
     assert rec["name"] in comp["recommendation"] and nominal["name"] in comp["recommendation"]
+    # the recommendation's flips are searched anew for the design picked, under its technology
+    flips = [e for t in comp["technologies"].values() for e in t["flips"] if e["changes"] == "recommendation"]
+    assert flips and all(e["design"] == rec["id"] and e["held"].startswith("the policy's pick") for e in flips)
+    assert all(e in comp["technologies"][rec["technology"]]["flips"] for e in flips)
 
 
 def test_report_and_terminal_flag_knife_edges(seed_solve):

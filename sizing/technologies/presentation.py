@@ -27,6 +27,15 @@ def shown(v, scale=1.0, fmt="{:.4g}") -> str:
     return "n/a" if v is None else fmt.format(v * scale)
 
 
+def ruled_out_by_part(pruned: list[dict], part: str) -> str:
+    """The table rows of ``pruned`` candidates counted by their ``part``
+    (a components key) and the requirement that rules them out."""
+    from collections import Counter
+    by = Counter((c["components"][part], c["driver"]) for c in pruned)
+    return "".join(f"<tr><td class='l'>{escaped(p)}</td><td class='l'>{escaped(d)}</td><td>{n}</td></tr>"
+                   for (p, d), n in sorted(by.items()))
+
+
 @dataclass(frozen=True)
 class Marker:
     """One legend entry of the objective-space figure: the technology's

@@ -22,6 +22,16 @@ _FOUND = False
 _FINDING = threading.RLock()        # solves may run in threads: the first finds the packages, the others wait
 
 
+def on_call(module: str, name: str) -> Callable:
+    """``module.name``, imported when first called rather than with the
+    registry (a technology's evaluate or perturbed checks load the engine)."""
+    def call(*args, **kwargs):
+        return getattr(importlib.import_module(module), name)(*args, **kwargs)
+    call.__name__ = call.__qualname__ = name
+    call.__doc__ = f"``{module}.{name}``, imported when first called."
+    return call
+
+
 def _nothing(*_args, **_kwargs):
     return None
 

@@ -3,9 +3,8 @@ actuators as large red diamonds, designs from parts as orange triangles,
 their parts and gains on hover and what the static screen ruled out."""
 from __future__ import annotations
 
-from collections import Counter
 
-from ..presentation import SIZED_STAGES, Marker, Presentation, escaped as _e
+from ..presentation import ruled_out_by_part, SIZED_STAGES, Marker, Presentation, escaped as _e
 
 COMBINATIONS = "DC motor x screw x gear x drive combinations"
 
@@ -49,9 +48,7 @@ def pruned_words(results: dict) -> str:
     pruned = [c for c in results["candidates"] if c.get("stage") == "pruned" and c.get("variant") == "parts"]
     if not pruned:
         return ""
-    by = Counter((c["components"]["motor"], c["driver"]) for c in pruned)
-    rows = "".join(f"<tr><td class='l'>{_e(m)}</td><td class='l'>{_e(d)}</td><td>{n}</td></tr>"
-                   for (m, d), n in sorted(by.items()))
+    rows = ruled_out_by_part(pruned, "motor")
     return (f"<p>{len(pruned)} {COMBINATIONS} were ruled out by the static screen "
             f"(force through screw and gear, back-EMF speed at the drive voltage, winding temperature at the "
             f"holding current, buckling, life). By motor and the requirement that rules them out:</p>"

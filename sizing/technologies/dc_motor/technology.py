@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from ...engine.records import DCActuatorDesign, DCDesign
 from ...sim.dc_motor import DCMotorModel
-from ..registry import Group, Technology
+from ..registry import Group, Technology, on_call
 from . import actuator, presentation, stage, words
 from .catalog_actuators import dc_duration
 from .verdict import dc_sourced
@@ -29,19 +29,6 @@ def traces(req, c: dict, stages, loads) -> list[dict] | None:
     return None
 
 
-def evaluate(design, catalog, file: str) -> dict:
-    """``sizing evaluate`` of one design file (loaded when asked, not with the registry)."""
-    from .evaluate_file import evaluate_dc
-    return evaluate_dc(design, catalog, file)
-
-
-def verify_perturbed(task, tols, f, temps):
-    """Its perturbed samples through its own checks (``perturbed``, loaded
-    when robust runs, not with the registry)."""
-    from .perturbed import verify_perturbed
-    return verify_perturbed(task, tols, f, temps)
-
-
 def study_design(req, catalog, c: dict, stages):
     """What robust perturbs: a design from parts (``engine.sized.DCPartsDesign``),
     as the solve sized it or read back from its record."""
@@ -62,5 +49,7 @@ TECHNOLOGY = Technology(
     traces=traces, counts_key="dc_parts", in_every_sweep_point=True,
     summary_fields=lambda catalog, candidates: {"dc_sourced": dc_sourced(catalog, candidates)},
     perturbable=lambda candidate, asked: candidate.get("variant") == "parts",     # not the catalog's actuators
-    evaluate=evaluate, study_design=study_design, verify_perturbed=verify_perturbed, report=presentation.PRESENTATION,
+    evaluate=on_call("sizing.technologies.dc_motor.evaluate_file", "evaluate_dc"),
+    study_design=study_design, verify_perturbed=on_call("sizing.technologies.dc_motor.perturbed", "verify_perturbed"),
+    report=presentation.PRESENTATION,
 )

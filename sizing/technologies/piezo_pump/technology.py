@@ -2,7 +2,7 @@
 see it (``registry.Technology``)."""
 from __future__ import annotations
 
-from ..registry import Group, Technology
+from ..registry import Group, Technology, on_call
 from . import presentation, stage, words
 from .designs import BEST_DEMONSTRATED_POWER_W, BEST_DEMONSTRATED_SOURCE
 
@@ -23,19 +23,6 @@ def pump_power_words(entry: dict) -> str:
             f"piezo pump, {best:.3g} W)")
 
 
-def evaluate(design, catalog, file: str) -> dict:
-    """``sizing evaluate`` of one design file (loaded when asked, not with the registry)."""
-    from .evaluate import evaluate_pump
-    return evaluate_pump(design, catalog, file)
-
-
-def verify_perturbed(task, tols, f, temps):
-    """Its perturbed samples through its own checks (``perturbed``, loaded
-    when robust runs, not with the registry)."""
-    from .perturbed import verify_perturbed
-    return verify_perturbed(task, tols, f, temps)
-
-
 def study_design(req, catalog, c: dict, stages):
     """What robust perturbs: the pump's design file, from its record."""
     from .evaluate import design_from_candidate
@@ -52,5 +39,7 @@ TECHNOLOGY = Technology(
     compared_with="dc_motor", comparison_fields=pump_power, comparison_words=pump_power_words,
     # only when asked for: its parts have no tolerance model in the probability of compliance yet
     perturbable=lambda candidate, asked: asked == "piezo_pump" and candidate.get("stage") == "simulated",
-    evaluate=evaluate, study_design=study_design, verify_perturbed=verify_perturbed, report=presentation.PRESENTATION,
+    evaluate=on_call("sizing.technologies.piezo_pump.evaluate", "evaluate_pump"),
+    study_design=study_design, verify_perturbed=on_call("sizing.technologies.piezo_pump.perturbed", "verify_perturbed"),
+    report=presentation.PRESENTATION,
 )

@@ -3,9 +3,8 @@ markers (one per variant), the stacks and bores in the tables, the force
 path section and what the screen ruled out before sizing."""
 from __future__ import annotations
 
-from collections import Counter
 
-from ..presentation import SIZED_STAGES, Marker, Presentation, escaped as _e, shown
+from ..presentation import ruled_out_by_part, SIZED_STAGES, Marker, Presentation, escaped as _e, shown
 
 
 def hover(c: dict) -> str:
@@ -59,9 +58,7 @@ def pruned_words(results: dict) -> str:
                 f"{rows}</table>")
     if not pruned:
         return "<p>No combination was ruled out before sizing.</p>"
-    by = Counter((c["components"]["stack"], c["driver"]) for c in pruned)
-    rows = "".join(f"<tr><td class='l'>{_e(s)}</td><td class='l'>{_e(d)}</td><td>{n}</td></tr>"
-                   for (s, d), n in sorted(by.items()))
+    rows = ruled_out_by_part(pruned, "stack")
     return (f"<p>{len(pruned)} combinations were ruled out before sizing; each stays in results.json with its "
             f"margins. By stack and the requirement that rules them out:</p><table><tr><th class='l'>stack</th>"
             f"<th class='l'>ruled out by</th><th>combinations</th></tr>{rows}</table>")

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..registry import Group, Technology
+from ..registry import Group, Technology, on_call
 from . import designs, presentation, stage, words
 from .thermal_words import thermal_statement
 from .verify import simulate_cases
@@ -35,19 +35,6 @@ def traces(req, c: dict, stages, loads) -> list[dict] | None:
     return [{"load_N": float(s["load_N"][0]), "t": s["t"], "position_m": s["position_m"][0]} for s in sims]
 
 
-def evaluate(design, catalog, file: str) -> dict:
-    """``sizing evaluate`` of one design file (loaded when asked, not with the registry)."""
-    from ...engine.evaluate import evaluate_piezo
-    return evaluate_piezo(design, catalog, file)
-
-
-def verify_perturbed(task, tols, f, temps):
-    """Its perturbed samples through its own checks (``perturbed``, loaded
-    when robust runs, not with the registry)."""
-    from .perturbed import verify_perturbed
-    return verify_perturbed(task, tols, f, temps)
-
-
 def study_design(req, catalog, c: dict, stages):
     """What robust perturbs: the (Combo, Variant, SizingResult) triple, as
     the solve sized it or read back from its record."""
@@ -72,6 +59,7 @@ TECHNOLOGY = Technology(
     results_fields=lambda catalog: {"hysteresis_time_scales": designs.hysteresis_time_scales(catalog)},
     in_every_sweep_point=True, compared_with="dc_motor",
     perturbable=lambda candidate, asked: True,
-    thermal_statement=thermal_statement, evaluate=evaluate, study_design=study_design,
-    verify_perturbed=verify_perturbed, report=presentation.PRESENTATION,
+    thermal_statement=thermal_statement, evaluate=on_call("sizing.engine.evaluate", "evaluate_piezo"), study_design=study_design,
+    verify_perturbed=on_call("sizing.technologies.piezohydraulic.perturbed", "verify_perturbed"),
+    report=presentation.PRESENTATION,
 )

@@ -7,19 +7,7 @@ from pathlib import Path
 
 from ..errors import InputError
 from ..io.catalog import Catalog
-
-
-def _checks(technology: str):
-    """A technology's ``checks`` module, imported by its folder's name (the
-    registry would load every technology's engine); None when it has none."""
-    import importlib
-    module = f"{__package__.rpartition('.')[0]}.technologies.{technology}.checks"
-    try:
-        return importlib.import_module(module)
-    except ModuleNotFoundError as exc:
-        if exc.name and module.startswith(exc.name):
-            return None
-        raise
+from ..technologies.registry import checks_module as _checks
 
 
 def check_evaluate_steps(design, cat: Catalog, file: str) -> None:

@@ -132,6 +132,31 @@ def names() -> tuple[str, ...]:
                         | set(_REGISTERED)))
 
 
+def checks_module(name: str):
+    """A technology's ``checks`` module, imported by its folder's name
+    (``technologies()`` would load every technology's engine); None when it
+    has none."""
+    module = f"{__package__}.{name}.checks"
+    try:
+        return importlib.import_module(module)
+    except ModuleNotFoundError as exc:
+        if exc.name and module.startswith(exc.name):
+            return None
+        raise
+
+
+def reserved_steps(req, catalog, but: str) -> float:
+    """The simulation steps the other technologies' verification needs
+    whatever is sized (their ``checks.required_steps``): what a technology
+    that fits its own simulations within the limit leaves them."""
+    total = 0.0
+    for name in names():
+        required = getattr(checks_module(name), "required_steps", None) if name != but else None
+        if required is not None:
+            total += required(req, catalog)
+    return total
+
+
 def get(name: str) -> Technology | None:
     _find()
     return _REGISTERED.get(name)

@@ -17,11 +17,16 @@ def check_design_steps(design, catalog, file: str) -> None:
                 f"simulation steps (duration x {max(rate, out):g} Hz x load cases)")
 
 
+def required_steps(req, catalog) -> float:
+    """The steps of simulating the catalog's actuators (``stage.dc_actuator_steps``)."""
+    from .stage import dc_actuator_steps
+    return dc_actuator_steps(req, catalog)
+
+
 def check_requirements_steps(req, catalog, file: str) -> None:
     """Refuse requirements whose verification of the catalog's actuators
     would need more steps than the limit: actuators x load cases x
     simulated time."""
     from ...limits import check_steps
-    from .stage import dc_actuator_steps
-    check_steps(dc_actuator_steps(req, catalog), file, "[requirements].stroke",
+    check_steps(required_steps(req, catalog), file, "[requirements].stroke",
                 "simulation steps (DC actuators x load cases x stroke / speed)")

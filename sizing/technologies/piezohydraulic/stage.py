@@ -102,14 +102,15 @@ def _enumerated(req, catalog, parts=None) -> list[Combo]:
 def piezo_simulation_budget(req, catalog, n_loads: int) -> int:
     """How many piezohydraulic designs are simulated: ``options.max_simulated``,
     or fewer when their steps (stroke time plus settling at 20 kHz, per load
-    case) would pass the step limit (``--max-steps``) left after the DC
-    actuators'; 0 when not even one fits (a slow, long stroke: 100 mm at
+    case) would pass the step limit (``--max-steps``) left after the other
+    technologies' (``registry.reserved_steps``: the DC catalog actuators'); 0 when not even one fits (a slow, long stroke: 100 mm at
     3 mm/s is 1.3e6 steps a design). The designs not simulated stay
     unverified, never feasible."""
     from ...limits import current, piezo_steps, simulations_within
-    from ..dc_motor.stage import dc_actuator_steps
+    from ..registry import reserved_steps
     each = piezo_steps(req.stroke_time + SETTLE_TIME_S, max(n_loads, 1))
-    return simulations_within(each, req.options.max_simulated, current().steps - dc_actuator_steps(req, catalog))
+    return simulations_within(each, req.options.max_simulated,
+                              current().steps - reserved_steps(req, catalog, but="piezohydraulic"))
 
 
 def _simulate(req, designs: list[PiezoDesign], loads, progress, budget=None) -> list[Simulation | None]:

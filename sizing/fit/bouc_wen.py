@@ -49,7 +49,7 @@ from ..physics.bouc_wen import (BoucWen, free_displacement, groups_jacobian, gro
                                 params_to_groups)  # noqa: F401  (params_to_groups: for callers of the estimator)
 from ..sim.signals import nrmse
 from .common import (Z95, ConvergenceWarning, HysteresisRecord, IdentifiabilityWarning, check_hysteresis_records, correlation,
-                     covariance, ess_inflation, filter_inputs, identifiability, lag1_correlation,
+                     covariance, ess_inflation, fd_columns, filter_inputs, identifiability, lag1_correlation,
                      residual_structure, run_weights)
 from .prior import regularise
 
@@ -126,7 +126,7 @@ class BoucWenEstimator:
             H0[7] += dh * H
             X = free_displacement(rec.time, rec.voltage_filtered, P, H0) / H
             J = np.zeros((len(rec.time), n_par))
-            J[:, :6] = ((X[1:7] - X[0]) / steps[:, None]).T
+            J[:, :6] = fd_columns(X[0], X[1:7], steps)
             J[:, 6 + k] = (X[7] - X[0]) / dh
             if self.fit_offset:
                 J[:, 6 + K + k] = 1.0

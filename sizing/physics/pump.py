@@ -57,15 +57,6 @@ def free_air(air_fraction, pressure, dissolution_pressure=np.inf):
     return a0 * share
 
 
-def air_fraction_at(air_fraction, pressure, polytropic=1.4, dissolution_pressure=np.inf):
-    """Free-air volume fraction at absolute pressure p, from a0 at
-    atmospheric pressure (the free air, eq. P8, compresses as p V^kappa = const)."""
-    a0 = np.asarray(air_fraction, float)
-    v_air = (free_air(a0, pressure, dissolution_pressure)
-             * (P_ATM / np.maximum(np.asarray(pressure, float), P_ATM * 1e-3)) ** (1.0 / polytropic))
-    return v_air / (1.0 - a0 + v_air)
-
-
 def wall_compliance(bore, wall_thickness, youngs_modulus):
     """Volumetric compliance of a thin cylindrical wall, dV / (V dp) = D / (E t), 1/Pa."""
     return np.asarray(bore) / (np.asarray(youngs_modulus) * np.asarray(wall_thickness))
@@ -109,17 +100,11 @@ def valve_lift(dp, cracking_pressure, port_area, reed_stiffness, max_lift):
     return np.clip(x, 0.0, np.asarray(max_lift))
 
 
-def valve_area(dp, cracking_pressure, port_area, reed_stiffness, max_lift):
-    """Open area of a reed valve, m^2: its curtain pi d x, at most the port."""
+def curtain_area(port_area, lift):
+    """Open area of a reed valve lifted by ``lift``, m^2: its curtain pi d x,
+    at most the port."""
     d = np.sqrt(4.0 * np.asarray(port_area) / np.pi)
-    x = valve_lift(dp, cracking_pressure, port_area, reed_stiffness, max_lift)
-    return np.minimum(np.pi * d * x, np.asarray(port_area))
-
-
-def orifice_flow(area, dp, density, discharge_coefficient):
-    """Q = C_d A sqrt(2 |dp| / rho), signed with dp, m^3/s."""
-    dp = np.asarray(dp, float)
-    return np.asarray(discharge_coefficient) * np.asarray(area) * np.sign(dp) * np.sqrt(2.0 * np.abs(dp) / np.asarray(density))
+    return np.minimum(np.pi * d * lift, np.asarray(port_area))
 
 
 def valve_flow(dp, density, cracking_pressure, port_area, reed_stiffness, max_lift, discharge_coefficient,
@@ -133,7 +118,7 @@ def valve_flow(dp, density, cracking_pressure, port_area, reed_stiffness, max_li
     dp = np.maximum(np.asarray(dp, float), 0.0)
     x = np.maximum(valve_lift(dp, cracking_pressure, port_area, reed_stiffness, max_lift), np.asarray(seat_gap))
     d = np.sqrt(4.0 * np.asarray(port_area) / np.pi)
-    k = np.asarray(discharge_coefficient) * np.minimum(np.pi * d * x, np.asarray(port_area)) * np.sqrt(2.0 / np.asarray(density))
+    k = np.asarray(discharge_coefficient) * curtain_area(port_area, x) * np.sqrt(2.0 / np.asarray(density))
     with np.errstate(divide="ignore", invalid="ignore"):
         rl = 12.0 * np.asarray(viscosity) * np.asarray(seat_width) / (np.pi * d * x**3)
         q = 2.0 * dp / (rl + np.sqrt(rl**2 + 4.0 * dp / k**2))
@@ -175,14 +160,6 @@ def stall_pressure(swept, compliance):
 def delivered_volume(swept, compliance, dp):
     """Eq. P4: volume delivered per cycle against a total drop dp, m^3 (>= 0)."""
     return np.maximum(np.asarray(swept) - np.asarray(compliance) * np.asarray(dp), 0.0)
-
-
-def delivery_fraction(swept, compliance, dp):
-    """Fraction of a cycle the outlet is open under a sine drive: from where
-    the chamber reaches the delivery pressure to the top of the stroke."""
-    opens = np.clip(np.asarray(compliance) * np.asarray(dp) / np.maximum(np.asarray(swept), 1e-30), 0.0, 1.0)
-    theta = np.arccos(1.0 - 2.0 * opens)               # x_f = (1 - cos theta) / 2 reaches ``opens``
-    return np.maximum((np.pi - theta) / (2.0 * np.pi), 1e-3)
 
 
 def sine_current(capacitance, voltage, frequency):

@@ -110,11 +110,7 @@ def unsettled(tech: str, candidates: list[dict]) -> list[dict] | None:
 def whole(stages, tech: str, req, catalog, loads) -> list[dict]:
     """Every candidate of ``tech`` re-solved for ``req`` and ``catalog``
     (``stages``: the technologies' stages of ``solve``, ``solve.technology_stages``)."""
-    if tech == "piezohydraulic":
-        return stages.piezohydraulic(req, catalog, loads, None, "summary")[0].candidates
-    if tech == "dc_motor":
-        return stages.dc_motor(req, catalog, loads, None, "summary")[0].candidates
-    raise ValueError(f"no whole re-solve for {tech!r}")
+    return getattr(stages, tech)(req, catalog, loads, None, "summary")[0].candidates
 
 
 def units(stages, tech: str, req, catalog, loads, cs: list[dict]) -> list[dict]:

@@ -45,7 +45,7 @@ STILL_NAMED = {
     "engine/flip.py": 10,
     "engine/judge.py": 13,
     "engine/records.py": 12,
-    "engine/resolve.py": 22,
+    "engine/resolve.py": 18,
     "engine/sized.py": 9,
     "engine/solve_summary.py": 1,
     "fit/dc_motor.py": 4,

@@ -69,7 +69,7 @@ def _timed(step) -> float:
 
 def _sizing_inputs(req, catalog) -> tuple[tuple, list]:
     """The seed's programs as ``designs.size`` builds them: objectives and inputs."""
-    from sizing.engine.records import PiezoBrief
+    from sizing.technologies.piezohydraulic.records import PiezoBrief
     from sizing.technologies.piezohydraulic import designs
     from sizing.technologies.piezohydraulic.search import enumerate_combos
     brief = PiezoBrief.of(req)

@@ -373,7 +373,7 @@ def fit_hysteresis(data: List[Path] = typer.Argument(..., help="Run CSVs (time_s
 
 @fit_app.command("dc-motor")
 def fit_dc_motor(data: List[Path] = typer.Argument(..., help="Run CSVs (time_s,reference_m,position_m), one run each."),
-                 rig: Path = typer.Option(..., "--rig", help="rig.toml of kind dc_motor: screw, controller, current limit, load (docs/formats.md)."),
+                 rig: Path = typer.Option(..., "--rig", help="rig.toml of a DC rig (its kind in docs/formats.md): screw, controller, current limit, load."),
                  holdout: Optional[List[str]] = typer.Option(None, "--holdout", help="Run (CSV name without .csv) kept out of the fit for validation; repeatable."),
                  out: Optional[Path] = typer.Option(None, "--out", help="TOML file to write (tables motor and fit); the HTML report goes beside it. Default: print the TOML."),
                  report: Optional[Path] = typer.Option(None, "--report", help="HTML report path (default: OUT with .html; none without --out)."),

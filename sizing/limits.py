@@ -30,8 +30,8 @@ BYTES_PER_SAMPLE = 3000
 # Memory per simulated step kept as output (3 channels x 8 bytes, plus the
 # input and work arrays): ~64 bytes.
 BYTES_PER_STEP = 64
-# Piezohydraulic integration: sub-steps of at most 50 us (sim/piezohydraulic
-# dt_max), i.e. at least 20 kHz.
+# Stack-and-oil integration: sub-steps of at most 50 us (the stack-and-oil
+# simulator's dt_max), i.e. at least 20 kHz.
 PIEZO_STEP_RATE_HZ = 20_000.0
 
 
@@ -101,7 +101,7 @@ def dc_steps(duration_s: float, rate_hz: float, n_cases: int = 1, output_rate_hz
 
 
 def piezo_steps(duration_s: float, n_cases: int = 1) -> float:
-    """Steps of a piezohydraulic simulation (sub-steps of at most 50 us)."""
+    """Steps of a stack-and-oil simulation (sub-steps of at most 50 us)."""
     return float(n_cases) * duration_s * PIEZO_STEP_RATE_HZ
 
 

@@ -19,6 +19,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..io.catalog import load_catalog
+from ..io.rig import DC_KIND, STACK_KIND
 from ..io.runs import read_runs, split_holdout
 from ..report.fit_toml import render_toml
 from . import output
@@ -140,7 +141,7 @@ def _unique(log) -> tuple[str, ...]:
 
 def _hysteresis_records(paths, holdout):
     """(training, holdout) HysteresisRecords of the run CSVs; every run needs a reversal."""
-    runs = read_runs(paths, kind="piezohydraulic")
+    runs = read_runs(paths, kind=STACK_KIND)
     train, hold = split_holdout(runs, holdout, ", ".join(str(p) for p in paths))
     from ..fit.common import HysteresisRecord, check_hysteresis_records
 
@@ -292,12 +293,12 @@ def _catalog_entry(entry_id, base_raw, base_named, bw, paths, prior_text, out) -
 def fit_dc_motor(paths, rig, holdout=None, out=None, report=None, fit_gains: bool = False,
                  n_starts: int = 3, seed: int = 0, progress=None) -> FitResult:
     """Fit c1, c2 (seed eq. 13-14; with ``fit_gains`` the rig's nonzero PID
-    gains too) of a dc_motor rig to reference/position run CSVs."""
+    gains too) of a DC rig (``io.rig.DC_KIND``) to reference/position run CSVs."""
     inputs = (*paths, rig)
     out, report = _checked_targets(out, report, inputs)
     rig_file, rig = rig, _dc_rig(rig)
     train, hold = _dc_records(paths, holdout, rig, rig_file)
-    from ..fit.dc_motor import DCMotorEstimator
+    from ..fit import DCMotorEstimator
     from ..sim.rigs import dc_model
     from . import fit_tables as tables
     with warnings.catch_warnings(record=True) as log:
@@ -317,7 +318,7 @@ def _dc_rig(rig_path):
     from ..io.rig import DCRig, load_rig
     rig = load_rig(rig_path)
     if not isinstance(rig, DCRig):
-        raise InputError(str(rig_path), "kind", 'expected "dc_motor" for sizing fit dc-motor')
+        raise InputError(str(rig_path), "kind", f'expected "{DC_KIND}" for sizing fit dc-motor')
     return rig
 
 
@@ -325,11 +326,11 @@ def _dc_records(paths, holdout, rig, rig_path):
     """(training, holdout) DCRecords of the run CSVs, within the step limit."""
     from ..limits import check_steps, dc_steps
 
-    runs = read_runs(paths, kind="dc_motor")
+    runs = read_runs(paths, kind=DC_KIND)
     check_steps(dc_steps(sum(float(r.time[-1] - r.time[0]) for r in runs), rig.controller.rate),
                 str(rig_path), "[controller].rate", "controller steps per simulation of the runs")
     train, hold = split_holdout(runs, holdout, ", ".join(str(p) for p in paths))
-    from ..fit.dc_motor import DCRecord
+    from ..fit import DCRecord
 
     def record(run):
         return DCRecord(run.name, run.time, run["reference_m"], run["position_m"], source=str(run.path))

@@ -153,7 +153,7 @@ class Search:
         self.today = {t: resolve.verdict_of(req, cs) for t, cs in self.solved.items()}
         self.known: dict[tuple, dict[float, dict]] = {}
         self.pool: dict[tuple, list] = {}
-        self.screens: dict[str, dict[float, bool]] = {}
+        self.screens: dict[tuple, dict[float, bool]] = {}
         self.bests: dict[tuple, float] = {}
         self.solves = 0
 
@@ -202,8 +202,8 @@ class Search:
     # --- one technology at one value -----------------------------------------
     def feasible_at(self, tech: str, probe: Probe, x: float) -> bool:
         """Whether ``tech`` has a complying design with the value ``x``."""
-        if tech == "piezo_pump":
-            return self._pump(probe, x) is not None
+        if resolve.by_complying(tech):
+            return self._lightest(tech, probe, x) is not None
         undecided = []
         for c in self._pool(tech, probe, x):
             ok = self.known_at(tech, probe, x, c)
@@ -323,19 +323,21 @@ class Search:
             self.pool[(tech, probe.field)] = sorted((c for f, c in ok if f), key=_slack, reverse=True)
         return self.pool[(tech, probe.field)]
 
-    def _pump(self, probe: Probe, x: float):
-        known = self.known.setdefault(("piezo_pump", probe.field), {})
+    def _lightest(self, tech: str, probe: Probe, x: float):
+        """(id, first objective) of ``tech``'s best complying design with the
+        value ``x``, read off its complying designs (``resolve.lightest``)."""
+        known = self.known.setdefault((tech, probe.field), {})
         if x not in known:
             req, catalog = probe.apply(self.req, self.catalog, x)
             self.solves += 1
-            known[x] = resolve.pump_lightest(self.stages, req, catalog, self.loads)
+            known[x] = resolve.lightest(tech, req, catalog, self.loads)
         return known[x]
 
     def best_at(self, tech: str, probe: Probe, x: float) -> float:
         """The first objective of ``tech``'s best complying design with the
         value ``x`` (a whole re-solve, kept per value; inf when none complies)."""
-        if tech == "piezo_pump":
-            found = self._pump(probe, x)
+        if resolve.by_complying(tech):
+            found = self._lightest(tech, probe, x)
             return math.inf if found is None else found[1]
         key = (tech, probe.field, x)
         if key not in self.bests:
@@ -375,12 +377,13 @@ class Search:
         value only those that hold the part)."""
         return probe.holding is None or any(resolve.holds(c, probe.holding) for c in self.solved[tech])
 
-    def pump_screen(self, probe: Probe, x: float) -> bool:
-        """Whether some pump row passes the static screen with the value ``x``."""
-        if x not in self.screens.setdefault(probe.field, {}):
+    def screen_at(self, tech: str, probe: Probe, x: float) -> bool:
+        """Whether some design of ``tech`` passes its static screen with the value ``x``."""
+        screens = self.screens.setdefault((tech, probe.field), {})
+        if x not in screens:
             req, catalog = probe.apply(self.req, self.catalog, x)
-            self.screens[probe.field][x] = resolve.pump_could_comply(req, catalog, self.loads)
-        return self.screens[probe.field][x]
+            screens[x] = resolve.could_comply(tech, req, catalog, self.loads)
+        return screens[x]
 
     # --- the recommendation --------------------------------------------------
     def recommended(self) -> tuple[str, dict] | None:
@@ -404,8 +407,8 @@ class Search:
         for tech, v in self.today.items():
             if tech == lead or not v.feasible or v.objective >= mine:
                 continue              # stricter values only make it heavier
-            if tech == "piezo_pump":
-                found = self._pump(probe, x)
+            if resolve.by_complying(tech):
+                found = self._lightest(tech, probe, x)
                 if found is not None and found[1] < mine:
                     return True
                 continue
@@ -478,29 +481,29 @@ def technology_flips(search: Search, tech: str, probes: list[Probe]) -> list[dic
                 not resolve.holds(c, probe.holding) for c in today.alive):
             out.append(_entry(probe, None, end, "feasibility"))   # a feasible design without the part survives
             continue
-        if today.feasible and tech != "piezo_pump":
+        if today.feasible and not resolve.by_complying(tech):
             to = search.tightening_flip(tech, probe, end)
-        elif tech == "piezo_pump" and not today.feasible:
-            to = screened_flip(search, probe, end)
+        elif resolve.screens(tech) and not today.feasible:
+            to = screened_flip(search, tech, probe, end)
         else:
             to = bisect(lambda x: search.feasible_at(tech, probe, x) != today.feasible, probe, end)
         out.append(_entry(probe, to, end, "feasibility"))
     return out
 
 
-def screened_flip(search: Search, probe: Probe, end: float) -> float | None:
-    """Where the piezo pump, infeasible today, becomes feasible (looser
-    values). Its static screen (``pump.could_comply``) decides "infeasible"
-    wherever no row passes it, and a re-solve there is that screen alone;
+def screened_flip(search: Search, tech: str, probe: Probe, end: float) -> float | None:
+    """Where ``tech``, infeasible today, becomes feasible (looser values).
+    Its static screen (``Resolving.screen``) decides "infeasible" wherever
+    no design passes it, and a re-solve there is that screen alone;
     so the screen's own flip is bisected first, on the screen alone, and the
     whole re-solves (simulation) go on from it, a tolerance, then two, four
     ... at a time, where the verdict is expected close by."""
-    feasible = lambda x: search.feasible_at("piezo_pump", probe, x)     # noqa: E731
+    feasible = lambda x: search.feasible_at(tech, probe, x)     # noqa: E731
     if not feasible(end):
         return None
-    if search.pump_screen(probe, probe.value):       # the screen decides nothing here
+    if search.screen_at(tech, probe, probe.value):       # the screen decides nothing here
         return bisect(feasible, probe, end)
-    screened = bisect(lambda x: search.pump_screen(probe, x), probe, end)
+    screened = bisect(lambda x: search.screen_at(tech, probe, x), probe, end)
     if feasible(screened):
         return screened
     return gallop(feasible, probe, end, screened, -probe.stricter)
@@ -533,14 +536,14 @@ def _applied(probes: list[Probe], req, catalog):
 def loosening_flip(search: Search, probe: Probe, end: float, loosest: list[Probe] = ()) -> float | None:
     """Where, at a looser value, the recommended design stops being the
     recommendation: it stops complying (a looser value is not always easier:
-    a DC motor must reach the mean speed over a shorter stroke in less
+    a design must reach the mean speed over a shorter stroke in less
     time), or another technology's best gets lighter (first objective) than
     it. Its own row is re-solved a step (cheap); the other technologies are
     bounded from below by their mass floor (``Search.no_lighter``) and
     re-solved whole only when that does not settle it, every requirement of
     ``loosest`` at its loosest at once first (monotone in each for them, as
     in their feasibility flips). Held, for the cost (a whole re-solve of
-    the recommended technology a step, about 2 s for the DC motor): a
+    the recommended technology a step, about 2 s for the DC designs): a
     lighter design of the recommended technology at the looser value, and
     whether one of its designs still complies where the recommended one
     stops (the recommendation then passes to it, or to another technology).

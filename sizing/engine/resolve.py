@@ -18,27 +18,25 @@ cheap without changing its answer:
   re-solved.
 
 A re-solve is asked one question at a time (does this design still comply
-at this value?) and answers for its whole part combination; a
-piezohydraulic one sizes only the structure materials and compensators of
-the designs asked about (each is a part combination of its own, sized by
-its own geometric program), and reads back, by their whole input, the
-programs, simulations and enumerations run before at the same value
-(``stage_cache.py``). A flip found this way is confirmed by re-solving the
-technology whole, except where today's solve judged every combination in
-full (``unsettled``): then only the combinations it left open and those
-feasible today can comply at a stricter value. The piezo pump is
-re-solved whole, but simulates only the rows its stage would simulate that
-pass every check the simulation does not replace
-(``pump.complying_designs``): the others cannot comply.
+at this value?) and answers for its whole part combination, as the
+technology re-solves by combination (``registry.Resolving``, in its
+folder), and reads back, by their whole input, the programs, simulations
+and enumerations run before at the same value (``stage_cache.py``). A flip
+found this way is confirmed by re-solving the technology whole, except
+where today's solve judged every combination in full (``unsettled``):
+then only the combinations it left open and those feasible today can
+comply at a stricter value. A technology whose verdict is read off its
+complying designs alone (``Resolving.complying``) is re-solved whole, but
+simulates only the designs that pass every check the simulation does not
+replace: the others cannot comply.
 """
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass, fields, replace
 
+from ..technologies.registry import resolving, technologies
 from .rank import OBJECTIVE_KEYS, standings
-
-DC_PARTS = {"motor": "motors", "screw": "screws", "gear": "gears", "drive": "drives", "actuator": "dc_actuators"}
 
 
 @dataclass(frozen=True)
@@ -69,42 +67,18 @@ def verdict_of(req, candidates: list[dict]) -> Verdict:
                    tuple(c for _, c in feasible))
 
 
-def piezo_key(c: dict) -> str:
-    """The part combination (``search.Combo.key``) of a piezohydraulic candidate."""
-    k = c["components"]
-    return f"ph-{k['stack']}-n{k['n_stacks']}-{k['fluid']}-{k['seal']}-{k['amplifier']}"
-
-
-def variant_key(c: dict) -> tuple:
-    """A piezohydraulic candidate's part combination with its structure
-    material and compensator: what one geometric program sizes (its passive
-    variant is built from the as-built one)."""
-    k = c["components"]
-    return piezo_key(c), k.get("material"), k.get("compensator")
-
-
 def unit_key(tech: str, c: dict) -> str:
-    """What one re-solve of candidate ``c`` covers: its piezohydraulic part
-    combination (every material and compensator), else the design itself."""
-    return piezo_key(c) if tech == "piezohydraulic" else c["id"]
-
-
-# margins a simulation replaces or adds (``candidate.sim_margins``): a design
-# left unsimulated that misses only these might comply once simulated
-SIMULATED = ("stroke", "speed", "overshoot", "stiffness")
+    """What one re-solve of candidate ``c`` covers (``Resolving.unit_key``:
+    its part combination, or the design itself)."""
+    return resolving(tech).unit_key(c)
 
 
 def unsettled(tech: str, candidates: list[dict]) -> list[dict] | None:
-    """The piezohydraulic designs a solve left open: sized, passing every
-    check a simulation does not replace, but not simulated (the solve
-    simulates at most ``options.max_simulated``). Every other design was
-    judged in full (simulated, or missing a check no simulation changes).
-    None for a technology whose solve does not record every design it
-    leaves unsimulated (the DC search counts those it drops)."""
-    if tech != "piezohydraulic":
-        return None
-    return [c for c in candidates if c.get("stage") == "sized"
-            and all(v >= 0 or k in SIMULATED for k, v in c["margins"].items())]
+    """The designs a solve left open: sized, passing every check a
+    simulation does not replace, but not simulated. None for a technology
+    whose solve does not record every design it leaves unsimulated (the DC
+    search counts those it drops)."""
+    return resolving(tech).unsettled(candidates)
 
 
 def whole(stages, tech: str, req, catalog, loads) -> list[dict]:
@@ -115,68 +89,50 @@ def whole(stages, tech: str, req, catalog, loads) -> list[dict]:
 
 def units(stages, tech: str, req, catalog, loads, cs: list[dict]) -> list[dict]:
     """The candidates of the part combinations of candidates ``cs``
-    re-solved for ``req`` and ``catalog``: piezohydraulic combinations
-    re-sized (the structure materials and compensators of ``cs``), DC designs from
-    parts (those of ``cs``, each simulated) or catalog DC actuators
-    re-simulated."""
-    if tech == "piezohydraulic":
-        keys = {piezo_key(c) for c in cs}
-        wanted = {variant_key(c) for c in cs}
-        parts = {tuple(c["components"][k] for k in ("stack", "fluid", "seal", "amplifier")) for c in cs}
-        return stages.piezohydraulic(
-            req, catalog, loads, None, "summary", only=lambda combo: combo.key in keys,
-            variants=lambda combo, v: (combo.key, v.material.id, v.compensator and v.compensator.id) in wanted,
-            parts=parts,
-        )[0].candidates
-    if tech == "dc_motor":
-        rows = {tuple((c.get("components") or {}).get(k) for k in ("motor", "screw", "gear", "drive")) for c in cs}
-        return stages.dc_motor(req, dc_parts_of(catalog, tuple(cs)), loads, None, "summary", rows=rows)[0].candidates
-    raise ValueError(f"no re-solve by design for {tech!r}")
+    re-solved for ``req`` and ``catalog`` (``Resolving.units``)."""
+    by_units = resolving(tech).units
+    if by_units is None:
+        raise ValueError(f"no re-solve by design for {tech!r}")
+    return by_units(getattr(stages, tech), req, catalog, loads, cs)
 
 
 def mass_floor(tech: str, req, catalog) -> float | None:
     """A lower bound on the mass (kg) of every design ``tech`` can give for
     ``req``, from its enumeration alone (no sizing); None where none is
-    known. Piezohydraulic: each combination the enumeration keeps (not
-    pruned) holds its n stacks and at least one amplifier unit, and a sized
-    design's mass adds hydraulics, structure and compensator to them
-    (``verify``'s mass; the same sum the pruned candidates' records state);
-    inf when every combination is pruned."""
-    if tech != "piezohydraulic":
-        return None
-    from ..technologies.piezohydraulic.search import enumerate_combos
-    return min((c.n * c.stack.mass + c.amplifier.mass for c in enumerate_combos(req, catalog) if not c.pruned),
-               default=math.inf)
+    known (``Resolving.mass_floor``)."""
+    return resolving(tech).mass_floor(req, catalog)
 
 
-def pump_lightest(stages, req, catalog, loads) -> tuple[str, float] | None:
-    """The pump's best complying design (id, first objective), None when
-    none complies: of the rows the solve's pump stage would simulate, those
-    that pass every check the simulation does not replace, simulated
-    (``complying_designs``: the same verdict and best design; the
-    static screen alone when no row passes those checks)."""
-    from ..technologies.piezo_pump.designs import complying_designs
-    from ..technologies.piezo_pump.record import pump_candidate
-    v = verdict_of(req, [pump_candidate(req, d) for d in complying_designs(req, catalog, loads)])
+def by_complying(tech: str) -> bool:
+    """Whether the flips read ``tech``'s verdict off its complying designs
+    alone (``lightest``) rather than re-solving designs one by one."""
+    return resolving(tech).complying is not None
+
+
+def lightest(tech: str, req, catalog, loads) -> tuple[str, float] | None:
+    """``tech``'s best complying design (id, first objective), None when
+    none complies: of the designs its stage would simulate, those that pass
+    every check the simulation does not replace, simulated
+    (``Resolving.complying``: the same verdict and best design)."""
+    v = verdict_of(req, resolving(tech).complying(req, catalog, loads))
     return (v.best, v.objective) if v.feasible else None
 
 
-def pump_could_comply(req, catalog, loads) -> bool:
-    """The pump's static screen alone (``pump.could_comply``)."""
-    from ..technologies.piezo_pump.designs import could_comply
-    return could_comply(req, catalog, loads)
+def pump_lightest(stages, req, catalog, loads) -> tuple[str, float] | None:
+    """``lightest`` of the technology whose verdict the flips read off its
+    complying designs (the pump); None when there is none."""
+    tech = next((t.name for t in technologies() if t.resolving.complying is not None), None)
+    return None if tech is None else lightest(tech, req, catalog, loads)
 
 
-def dc_parts_of(catalog, alive: tuple):
-    """The catalog with only the DC parts (and catalog actuators) that
-    ``alive`` DC designs use; the other technologies' parts are kept."""
-    used = {attr: set() for attr in DC_PARTS.values()}
-    for c in alive:
-        for kind, ident in (c.get("components") or {}).items():
-            if kind in DC_PARTS and ident is not None:
-                used[DC_PARTS[kind]].add(ident)
-    return replace(catalog, **{attr: {k: v for k, v in getattr(catalog, attr).items() if k in ids}
-                               for attr, ids in used.items()})
+def screens(tech: str) -> bool:
+    """Whether ``tech`` has a static screen the flips can bisect alone."""
+    return resolving(tech).screen is not None
+
+
+def could_comply(tech: str, req, catalog, loads) -> bool:
+    """``tech``'s static screen alone (``Resolving.screen``)."""
+    return resolving(tech).screen(req, catalog, loads)
 
 
 def group_of(catalog, ident: str) -> str:

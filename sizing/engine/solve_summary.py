@@ -31,6 +31,13 @@ def _requirements_si(req: RequirementsFile) -> dict:
             "options": o.model_dump(), "duty": req.duty.model_dump(), "envelope": req.envelope.model_dump()}
 
 
+def _reached() -> str:
+    """The technologies that count the stroke reached short of all of it
+    (``Technology.reached``), each after its label."""
+    said = [f"{t.label}: {t.reached}" for t in technologies() if t.reached]
+    return f" ({'; '.join(said)})" if said else ""
+
+
 def _assumptions(req: RequirementsFile) -> list[str]:
     o, r = req.options, req.requirements
     amp = ("the amplifier sits at the actuator and must work at the required temperature"
@@ -59,7 +66,7 @@ def _assumptions(req: RequirementsFile) -> list[str]:
         f"natural frequency at least {req.natural_frequency:.3g} Hz (10 cycles per stroke time unless options.min_natural_frequency); "
         f"simulated overshoot at most {o.max_overshoot:.0%}",
         "stroke under load: the aerodynamic load is a constant force; strokes are measured from the loaded rest; "
-        "speed = required stroke / time to reach it (DC motor: 98 % of it)",
+        "speed = required stroke / time to reach it" + _reached(),
         f"thermal drift of the enclosed oil from {o.drift_reference_temperature:g} to {r.max_temperature:g} degC must stay "
         f"within {o.max_drift_fraction:.0%} of the stroke unless compensated",
         ("compensated designs carry a catalog compensator (catalogs/compensators.toml) in their force path and "

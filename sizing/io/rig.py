@@ -99,5 +99,10 @@ class DCRig(Strict):
 Rig = Union[PiezoRig, DCRig]
 
 
+# the rig kinds (a rig.toml's ``kind``, and the columns of its run CSVs, ``runs.read_runs``)
+STACK_KIND = "piezohydraulic"       # a piezo stack driving oil
+DC_KIND = "dc_motor"                # a DC motor driving a lead screw
+
+
 def load_rig(path: str | Path) -> Rig:
-    return parse_tagged(path, "kind", {"piezohydraulic": PiezoRig, "dc_motor": DCRig})
+    return parse_tagged(path, "kind", {STACK_KIND: PiezoRig, DC_KIND: DCRig})

@@ -76,18 +76,13 @@ def tolerances_of(spreads: dict[str, float]) -> list[Tolerance]:
 
 def applicable(tols: list[Tolerance], design) -> list[Tolerance]:
     """The tolerances that move ``design``'s parts (``engine.sized.study_designs``:
-    a (combo, variant, sizing) triple, a DCPartsDesign or a pump design
-    file), in the given order."""
-    from ..engine.sized import DCPartsDesign
-    from ..io.design import PumpDesignFile
-    from ..io.requirements import DC_PARTS, PIEZO_PARTS
-    if isinstance(design, PumpDesignFile):          # judged at the required maximum temperature
-        return [t for t in tols if t.part in PIEZO_PARTS]
-    if isinstance(design, DCPartsDesign):
-        parts = tuple(p for p in DC_PARTS if p != "gear" or design.has_gear)
-    else:
-        parts = PIEZO_PARTS
-    return [t for t in tols if t.key == OPERATING_TEMPERATURE or t.part in parts]
+    a (combo, variant, sizing) triple, or a design that names the parts its
+    tolerances move, ``tolerated_parts``, and whether the operating
+    temperature is sampled for it, ``sampled_temperature``), in the given order."""
+    from ..io.requirements import PIEZO_PARTS
+    parts = getattr(design, "tolerated_parts", PIEZO_PARTS)
+    sampled = getattr(design, "sampled_temperature", True)
+    return [t for t in tols if (sampled and t.key == OPERATING_TEMPERATURE) or t.part in parts]
 
 
 def factors(tols: list[Tolerance], z: np.ndarray) -> np.ndarray:

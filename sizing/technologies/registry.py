@@ -36,6 +36,10 @@ def _nothing(*_args, **_kwargs):
     return None
 
 
+def _by_own_id(records) -> dict:
+    return {r.id: r for r in records}
+
+
 def _no_words(*_args, **_kwargs) -> str:
     return ""
 
@@ -49,6 +53,39 @@ class Group:
     label: str
     empty: str = "not evaluated"            # the summary's words when the group has no design
     caveat: Callable = _no_words            # (req, feasible candidates, catalog) -> words after the verdict
+
+
+def _own_id(c: dict) -> str:
+    return c["id"]
+
+
+@dataclass(frozen=True)
+class Resolving:
+    """How the flips (``engine/flip.py``, ``engine/resolve.py``) re-solve one
+    technology beyond re-running its ``solve`` whole. Every field has a
+    default: a technology that says nothing is re-solved whole.
+
+    ``units(its solve, req, catalog, loads, candidates)`` re-solves only the
+    part combinations of ``candidates`` (None: it cannot, and the flips
+    re-solve it whole); ``unit_key(c)`` names what one such re-solve covers;
+    ``unsettled(candidates)`` lists the designs its solve left open (None:
+    its solve does not record every design it leaves unsimulated);
+    ``mass_floor(req, catalog)`` bounds the mass of every design it can give
+    from its enumeration alone (None: none known). A technology whose
+    verdict the flips read off its complying designs alone gives
+    ``complying(req, catalog, loads)`` (candidate records of the designs
+    that can comply, simulated) and ``screen(req, catalog, loads)`` (whether
+    any design passes its static screen)."""
+
+    units: Callable | None = None
+    unit_key: Callable[[dict], str] = _own_id
+    unsettled: Callable = _nothing
+    mass_floor: Callable = _nothing
+    complying: Callable | None = None
+    screen: Callable | None = None
+
+
+WHOLE = Resolving()
 
 
 @dataclass(frozen=True)
@@ -93,6 +130,11 @@ class Technology:
     # (robust's BatchTask, its tolerances, their factors, temperatures) -> (candidate per sample, simulated s)
     verify_perturbed: Callable | None = None
     report: Presentation = PLAIN            # how the report draws, tables and counts its designs
+    resolving: Resolving = WHOLE            # how the flips re-solve it (``Resolving``)
+    # (req, catalog, its design files, their file names, load cases) -> per file {"margins", "metrics", ...}
+    judge: Callable | None = None
+    reached: str = ""                       # when a step counts as reached, if short of the whole stroke: "98 % of it"
+    held: Callable = _by_own_id             # (its records of a solve) -> {design id: design} (``records.Stages``)
 
     @property
     def actuator(self) -> str:
@@ -132,17 +174,22 @@ def names() -> tuple[str, ...]:
                         | set(_REGISTERED)))
 
 
-def checks_module(name: str):
-    """A technology's ``checks`` module, imported by its folder's name
-    (``technologies()`` would load every technology's engine); None when it
-    has none."""
-    module = f"{__package__}.{name}.checks"
+def folder_module(name: str, module: str):
+    """The ``module`` of a technology's folder, imported by the folder's name
+    (``technologies()`` would load every technology's engine); None when
+    it has none."""
+    dotted = f"{__package__}.{name}.{module}"
     try:
-        return importlib.import_module(module)
+        return importlib.import_module(dotted)
     except ModuleNotFoundError as exc:
-        if exc.name and module.startswith(exc.name):
+        if exc.name and dotted.startswith(exc.name):
             return None
         raise
+
+
+def checks_module(name: str):
+    """A technology's ``checks`` module (``folder_module``); None when it has none."""
+    return folder_module(name, "checks")
 
 
 def reserved_steps(req, catalog, but: str) -> float:
@@ -155,6 +202,19 @@ def reserved_steps(req, catalog, but: str) -> float:
         if required is not None:
             total += required(req, catalog)
     return total
+
+
+def held(name: str, records) -> dict:
+    """A technology's designs of a solve by id, from its records
+    (``Technology.held``; by each record's ``id`` when it is not registered)."""
+    tech = get(name)
+    return (tech.held if tech is not None else _by_own_id)(records)
+
+
+def resolving(name: str) -> Resolving:
+    """How the flips re-solve a technology (whole, when it is not registered)."""
+    tech = get(name)
+    return tech.resolving if tech is not None else WHOLE
 
 
 def get(name: str) -> Technology | None:

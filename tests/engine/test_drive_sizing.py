@@ -9,7 +9,7 @@ import math
 import pytest
 
 from sizing.technologies.piezohydraulic.designs import compensator_creep, effective_gap
-from sizing.engine.records import PiezoBrief
+from sizing.technologies.piezohydraulic.records import PiezoBrief
 from sizing.io.requirements import load_requirements
 from sizing.physics import amplifier, stack
 

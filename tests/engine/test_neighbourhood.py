@@ -16,7 +16,7 @@ import dataclasses
 import pytest
 
 from sizing.engine.loads import load_cases
-from sizing.engine.records import Variant
+from sizing.technologies.piezohydraulic.records import Variant
 from sizing.engine.solve import solve
 from sizing.technologies.piezohydraulic.stage import verify_sized
 from sizing.io.catalog import load_catalog
@@ -67,7 +67,7 @@ def test_no_lighter_feasible_design_next_to_the_best(drift, tmp_path):
     catalog = load_catalog()
     out = solve(req, sha, catalog, fast=True)       # the best designs; their flips are not needed
     best = _best(out.results)
-    design = out.stages.by_id[best["id"]]
+    design = out.stages.held("piezohydraulic", best["id"])
     loads = [c["load_N"] for c in load_cases(req.load)]
     neighbours = _neighbours(design, catalog)
     judged = verify_sized(req, catalog, neighbours, loads)

@@ -190,7 +190,7 @@ def test_the_closest_design_block_round_trips_through_evaluate(seed_pumps):
     """The closest pump's results.json ``design`` block, evaluated on its
     own (technologies/piezo_pump/evaluate.py), reproduces its metrics and margins."""
     from sizing.technologies.piezo_pump.evaluate import evaluate_pump
-    from sizing.io.design import PumpDesignFile
+    from sizing.technologies.piezo_pump.design_file import PumpDesignFile
     req, (out, candidates) = seed_pumps
     closest = max(candidates, key=lambda c: min(c["margins"].values()))
     r = evaluate_pump(PumpDesignFile.model_validate(closest["design"]), load_catalog(), "design.toml")

@@ -10,7 +10,7 @@ import pytest
 from sizing.technologies.piezo_pump.evaluate import evaluate_pump
 from sizing.errors import InputError
 from sizing.io.catalog import load_catalog
-from sizing.io.design import PumpDesignFile
+from sizing.technologies.piezo_pump.design_file import PumpDesignFile
 
 from ..conftest import run_cli
 

@@ -11,9 +11,11 @@ import pytest
 
 from sizing.technologies.piezohydraulic import designs as piezo_designs
 from sizing.technologies.piezohydraulic.record import design_candidate
-from sizing.engine.records import PiezoBrief, PiezoDesign, Simulation, VerifiedDesign
+from sizing.engine.records import Simulation
+from sizing.technologies.piezohydraulic.records import PiezoBrief, PiezoDesign, VerifiedDesign
 from sizing.technologies.piezohydraulic.search import enumerate_combos
-from sizing.engine.sized import sized_designs, study_designs
+from sizing.engine.sized import study_designs
+from sizing.technologies.piezohydraulic.read_back import sized_designs
 from sizing.engine.solve import solve
 from sizing.io.requirements import parse_requirements
 
@@ -80,11 +82,11 @@ def test_robust_takes_the_records_and_they_match_the_results_json_reading(built)
     req, catalog, _, _ = built
     out = solve(req, "0" * 64, catalog, fast=True)      # the records, not the flips
     piezo = [c for c in out.results["candidates"] if c["technology"] == "piezohydraulic" and "design" in c]
-    assert piezo and set(c["id"] for c in piezo) <= set(out.stages.by_id)
+    assert piezo and set(c["id"] for c in piezo) <= set(out.stages.designs["piezohydraulic"])
     from_records = study_designs(req, catalog, piezo, out.stages)
     read_back = sized_designs(req, catalog, piezo)
     for c, (combo, var, res), (combo2, var2, res2) in zip(piezo, from_records, read_back):
         assert combo.key == combo2.key and var == var2, c["id"]
         for f in ("ratio", "wide_area", "voltage_fraction", "cap_thickness", "frame_area"):
             assert getattr(res, f) == pytest.approx(getattr(res2, f), rel=1e-9), (c["id"], f)
-    assert all(isinstance(d, PiezoDesign) for d in out.stages.by_id.values())
+    assert all(isinstance(d, PiezoDesign) for d in out.stages.designs["piezohydraulic"].values())

@@ -9,7 +9,7 @@ import pytest
 
 from sizing.technologies.piezohydraulic import designs as piezo_designs
 from sizing.technologies.piezohydraulic.convex import GPSizer, SizingInput
-from sizing.engine.records import PiezoBrief
+from sizing.technologies.piezohydraulic.records import PiezoBrief
 from sizing.technologies.piezohydraulic.search import enumerate_combos
 from sizing.io.catalog import load_catalog
 from sizing.io.requirements import load_requirements

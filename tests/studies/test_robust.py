@@ -10,7 +10,7 @@ import pytest
 from scipy.stats import norm
 
 from sizing.technologies.piezohydraulic import designs as piezo_designs
-from sizing.engine.records import PiezoBrief
+from sizing.technologies.piezohydraulic.records import PiezoBrief
 from sizing.engine.evaluate import load_cases
 from sizing.technologies.piezohydraulic.search import enumerate_combos
 from sizing.technologies.piezohydraulic.stage import verify_sized
@@ -99,7 +99,7 @@ def test_stroke_tolerance_gives_the_closed_form_probability(tmp_path, small_cata
 
 
 def _sized(req, catalog, cand):
-    from sizing.engine.sized import sized_designs
+    from sizing.technologies.piezohydraulic.read_back import sized_designs
     return sized_designs(req, catalog, [cand])
 
 
@@ -312,7 +312,7 @@ def test_dc_designs_from_the_solve_records_match_the_results_json_reading(tmp_pa
     cands = [parts_candidate(req, catalog, d) for d in designs]
     read_back = [sized.read_back(req, catalog, c) for c in cands]
     monkeypatch.setattr(sized, "read_back", None)           # the records alone
-    from_records = sized.study_designs(req, catalog, cands, Stages.of((), designs))
+    from_records = sized.study_designs(req, catalog, cands, Stages.of({"dc_motor": designs}))
     assert len(from_records) == len(cands) == 2
     for a, b in zip(from_records, read_back):
         assert a.settings == b.settings and a.duration == b.duration and a.has_gear == b.has_gear

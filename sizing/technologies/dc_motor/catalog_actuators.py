@@ -12,7 +12,8 @@ from ...io.requirements import RequirementsFile
 from ...engine import holding
 from . import actuator as dc_engine
 from ...engine.rank import ceiling_margin, floor_margin
-from ...engine.records import DCActuatorDesign, Simulation, frozen
+from ...engine.records import Simulation, frozen
+from .records import DCActuatorDesign
 from ..piezohydraulic.search import temperature_margin
 
 

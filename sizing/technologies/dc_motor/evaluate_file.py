@@ -6,7 +6,7 @@ from ...engine.evaluate import finite_or_none, lookup, worst_case
 from ...engine.loads import load_cases
 from ...errors import InputError
 from ...io.catalog import Catalog
-from ...io.design import DCDesignFile
+from .design_file import DCDesignFile
 from . import actuator as dc_engine
 from .from_parts import evaluate_parts
 

@@ -31,7 +31,8 @@ from . import verdict as dc_verdict
 from .parts import drives_for_supply, enumerate_parts, metrics, mountable, static_screen, temperature_margin
 from .catalog_actuators import dc_duration
 from ...engine.rank import OBJECTIVE_KEYS, nondominated_levels, verdict
-from ...engine.records import DCDesign, DCParts, DCPartsOutcome, Simulation, frozen
+from ...engine.records import Simulation, frozen
+from .records import DCDesign, DCParts, DCPartsOutcome
 
 MAX_SIMULATED = 300     # designs simulated per solve (each under every load case)
 REAL_SHARE = 1 / 3      # of the simulation budget, first for designs whose parts all exist (dc_verdict)

@@ -10,8 +10,9 @@ from ...engine import holding
 from .assumed import resting
 from .parts import MASS_PARTS
 from .structure import structure_members
-from ...engine.records import DCActuatorDesign, DCDesign, Simulation
-from ...engine.sized import SETTINGS
+from ...engine.records import Simulation
+from .records import DCActuatorDesign, DCDesign
+from .read_back import SETTINGS
 
 
 def _cases(sim: Simulation, stiffness: float) -> list[dict]:

@@ -5,7 +5,9 @@ from __future__ import annotations
 
 from collections import Counter
 
-from ...engine.records import DCDesign, DCPartsOutcome, Outcome
+from ...engine.records import Outcome
+
+from .records import DCDesign, DCPartsOutcome
 from .catalog_actuators import actuator_designs
 from .from_parts import dc_parts_designs
 from .record import actuator_candidate, parts_candidate

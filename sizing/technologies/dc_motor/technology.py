@@ -2,10 +2,10 @@
 after it see it (``registry.Technology``)."""
 from __future__ import annotations
 
-from ...engine.records import DCActuatorDesign, DCDesign
+from .records import DCActuatorDesign, DCDesign
 from ...sim.dc_motor import DCMotorModel
 from ..registry import Group, Technology, on_call
-from . import actuator, presentation, stage, words
+from . import resolving, actuator, presentation, stage, words
 from .catalog_actuators import dc_duration
 from .verdict import dc_sourced
 
@@ -19,7 +19,7 @@ def supply_caveat(req, feasible: list[dict], catalog) -> str:
 
 def traces(req, c: dict, stages, loads) -> list[dict] | None:
     """Design ``c`` re-simulated under every load case with its traces kept."""
-    d, S = stages.dc.get(c["id"]), req.requirements.stroke
+    d, S = stages.held("dc_motor", c["id"]), req.requirements.stroke
     if isinstance(d, DCActuatorDesign):
         return actuator.step_cases(d.actuator, S, loads, dc_duration(req), keep_traces=True)
     if d is not None and d.model:
@@ -30,10 +30,10 @@ def traces(req, c: dict, stages, loads) -> list[dict] | None:
 
 
 def study_design(req, catalog, c: dict, stages):
-    """What robust perturbs: a design from parts (``engine.sized.DCPartsDesign``),
+    """What robust perturbs: a design from parts (``read_back.DCPartsDesign``),
     as the solve sized it or read back from its record."""
-    from ...engine.sized import read_back_parts, dc_parts_design
-    held = stages.dc.get(c["id"]) if stages is not None else None
+    from .read_back import dc_parts_design, read_back_parts
+    held = stages.held("dc_motor", c["id"]) if stages is not None else None
     return dc_parts_design(catalog, held) if isinstance(held, DCDesign) else read_back_parts(catalog, c)
 
 
@@ -51,5 +51,7 @@ TECHNOLOGY = Technology(
     perturbable=lambda candidate, asked: candidate.get("variant") == "parts",     # not the catalog's actuators
     evaluate=on_call("sizing.technologies.dc_motor.evaluate_file", "evaluate_dc"),
     study_design=study_design, verify_perturbed=on_call("sizing.technologies.dc_motor.perturbed", "verify_perturbed"),
-    report=presentation.PRESENTATION,
+    report=presentation.PRESENTATION, resolving=resolving.RESOLVING,
+    judge=on_call("sizing.technologies.dc_motor.judge", "judge"),
+    reached=f"{actuator.SETTLED:.0%}".replace("%", " %") + " of it",
 )

@@ -27,7 +27,8 @@ from ...sim.pump import PumpModel, simulate
 from . import screen
 from ..piezohydraulic.parts import reference_bouc_wen, stack_bouc_wen
 from ...engine.rank import OBJECTIVE_KEYS, floor_margin, nondominated_levels
-from ...engine.records import PumpDesign, PumpOutcome, Simulation, frozen
+from ...engine.records import Simulation, frozen
+from .records import PumpDesign, PumpOutcome
 
 MAX_FEASIBLE_SIMULATED = 24    # designs that pass the screen, verified by simulation
 MIN_CLOSEST_SIMULATED = 8      # and at least this many of the closest of those that do not,

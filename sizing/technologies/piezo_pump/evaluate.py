@@ -37,7 +37,7 @@ def pump_requirements(design) -> RequirementsFile:
 def design_from_candidate(req, cand: dict):
     """The pump design file a results.json pump candidate stands for, judged
     against ``req``'s stroke, speed, blocked force, duty and load."""
-    from ...io.design import PumpDesignFile
+    from .design_file import PumpDesignFile
     r = req.requirements
     return PumpDesignFile.model_validate({
         **cand["design"], "stroke": r.stroke, "speed": r.speed, "blocked_force": r.blocked_force,

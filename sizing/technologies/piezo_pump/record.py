@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from ...physics import pump as pump_phys
 from ...engine import holding
-from ...engine.records import PumpDesign
+from .records import PumpDesign
 
 
 def pump_candidate(req, d: PumpDesign) -> dict:

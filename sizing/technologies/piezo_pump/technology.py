@@ -3,7 +3,7 @@ see it (``registry.Technology``)."""
 from __future__ import annotations
 
 from ..registry import Group, Technology, on_call
-from . import presentation, stage, words
+from . import resolving, presentation, stage, words
 from .designs import BEST_DEMONSTRATED_POWER_W, BEST_DEMONSTRATED_SOURCE
 
 
@@ -41,5 +41,6 @@ TECHNOLOGY = Technology(
     perturbable=lambda candidate, asked: asked == "piezo_pump" and candidate.get("stage") == "simulated",
     evaluate=on_call("sizing.technologies.piezo_pump.evaluate", "evaluate_pump"),
     study_design=study_design, verify_perturbed=on_call("sizing.technologies.piezo_pump.perturbed", "verify_perturbed"),
-    report=presentation.PRESENTATION,
+    report=presentation.PRESENTATION, resolving=resolving.RESOLVING,
+    judge=on_call("sizing.technologies.piezo_pump.judge", "judge"),
 )

@@ -20,7 +20,8 @@ from ...engine import stage_cache
 from .convex import GPSizer, SizingInput, SizingResult
 from .parts import Candidates, part_row, reference_bouc_wen, stack_bouc_wen, structure_row
 from ...engine.rank import ceiling_margin, floor_margin
-from ...engine.records import PiezoBrief, PiezoDesign, Variant, frozen
+from ...engine.records import frozen
+from .records import PiezoBrief, PiezoDesign, Variant
 from .search import Combo, temperature_margin
 from .convex import DEFAULT_MAX_MASS, NO_LIMIT
 from .verify import (GAP_CLEARANCE_M, GAP_TOLERANCE_M, STACK_SPACING_M, metrics, ramp_time,

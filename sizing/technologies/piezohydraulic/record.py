@@ -13,7 +13,8 @@ from ...physics import stack as stack_phys, structure, thermal
 from ...engine import holding
 from . import designs as piezo_designs
 from ...engine.rank import ceiling_margin, floor_margin
-from ...engine.records import PiezoDesign, Simulation, VerifiedDesign
+from ...engine.records import Simulation
+from .records import PiezoDesign, VerifiedDesign
 from .search import Combo
 
 

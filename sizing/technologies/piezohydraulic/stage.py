@@ -28,7 +28,8 @@ import numpy as np
 
 from ...engine.rank import OBJECTIVE_KEYS, nondominated_levels, verdict
 from ...engine import stage_cache
-from ...engine.records import Outcome, PiezoBrief, PiezoDesign, Simulation, VerifiedDesign
+from ...engine.records import Outcome, Simulation
+from .records import PiezoBrief, PiezoDesign, VerifiedDesign
 from ...errors import SimulationError
 from ...io.catalog import Catalog
 from . import designs as piezo_designs

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..registry import Group, Technology, on_call
-from . import designs, presentation, stage, words
+from . import resolving, designs, presentation, stage, words
 from .thermal_words import thermal_statement
 from .verify import simulate_cases
 
@@ -28,7 +28,7 @@ def amplifier_caveat(req, feasible: list[dict], catalog) -> str:
 
 def traces(req, c: dict, stages, loads) -> list[dict] | None:
     """Design ``c`` re-simulated under every load case with its traces kept."""
-    d = stages.by_id.get(c["id"])
+    d = stages.held("piezohydraulic", c["id"])
     if d is None or not d.built:
         return None
     sims = simulate_cases(d.cand, loads, np.array([d.ramp]), target_stroke=req.requirements.stroke, keep_traces=True)
@@ -38,8 +38,8 @@ def traces(req, c: dict, stages, loads) -> list[dict] | None:
 def study_design(req, catalog, c: dict, stages):
     """What robust perturbs: the (Combo, Variant, SizingResult) triple, as
     the solve sized it or read back from its record."""
-    from ...engine.sized import sized_designs
-    held = stages.by_id.get(c["id"]) if stages is not None else None
+    from .read_back import sized_designs
+    held = stages.held("piezohydraulic", c["id"]) if stages is not None else None
     return held.sized if held is not None else sized_designs(req, catalog, [c])[0]
 
 
@@ -59,7 +59,9 @@ TECHNOLOGY = Technology(
     results_fields=lambda catalog: {"hysteresis_time_scales": designs.hysteresis_time_scales(catalog)},
     in_every_sweep_point=True, compared_with="dc_motor",
     perturbable=lambda candidate, asked: True,
-    thermal_statement=thermal_statement, evaluate=on_call("sizing.engine.evaluate", "evaluate_piezo"), study_design=study_design,
+    thermal_statement=thermal_statement, evaluate=on_call("sizing.technologies.piezohydraulic.evaluate_file", "evaluate_piezo"), study_design=study_design,
     verify_perturbed=on_call("sizing.technologies.piezohydraulic.perturbed", "verify_perturbed"),
-    report=presentation.PRESENTATION,
+    report=presentation.PRESENTATION, resolving=resolving.RESOLVING,
+    judge=on_call("sizing.technologies.piezohydraulic.judge", "judge"),
+    held=lambda records: {v.design.id: v.design for v in records},     # its records are VerifiedDesigns
 )

@@ -4,12 +4,15 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
-from typing import ClassVar
+from typing import TYPE_CHECKING, ClassVar
 
 from ..errors import InputError
-from ..io.catalog import Catalog, load_catalog
+from ..io.catalog import Catalog, Entry, load_catalog
 from . import output
 from .output import Payload
+
+if TYPE_CHECKING:                   # the types alone: not imported when the module loads
+    from ..io.catalog_diff import CatalogDiff
 
 
 def catalog(folder: str | Path | None = None) -> Catalog:
@@ -28,7 +31,7 @@ class CatalogEntry:
     """One catalog entry and its kind."""
 
     kind: str
-    entry: object
+    entry: Entry
 
     def to_dict(self) -> dict:
         return {"kind": self.kind, **self.entry.model_dump(mode="json")}
@@ -69,7 +72,7 @@ def catalog_diff(old: str | Path, new: str | Path | None = None):
 
 @dataclass(frozen=True)
 class CatalogDiffResult:
-    diff: object
+    diff: CatalogDiff
 
     def to_dict(self) -> dict:
         return self.diff.to_dict()

@@ -6,10 +6,13 @@ from __future__ import annotations
 import json
 from dataclasses import dataclass
 from pathlib import Path
-from typing import ClassVar
+from typing import TYPE_CHECKING, ClassVar
 
 from . import output
 from .output import PLOTLY_FILE, plotly_js
+
+if TYPE_CHECKING:                   # the types alone: not imported when the module loads
+    from ..diagnose.diagnosis import Diagnosis
 
 DIAGNOSE_OUTPUTS = ("diagnosis.json", "diagnosis.html", PLOTLY_FILE)
 
@@ -19,7 +22,7 @@ class DiagnoseResult:
     """The diagnosis (``sizing.diagnose``) of a campaign and the title of its
     page. Its attributes (``verdict``, ``fits``, ...) read through to it."""
 
-    diagnosis: object
+    diagnosis: Diagnosis
     title: str
     inputs: tuple = ()
     layout: ClassVar[str] = "folder"

@@ -23,7 +23,7 @@ class SolveResult(Payload):
     the ``results`` mapping."""
 
     results: dict
-    traces: object
+    traces: list
     catalog_folder: Path
     inputs: tuple = ()
     layout: ClassVar[str] = "folder"
@@ -102,18 +102,18 @@ def run_solve(requirements_path, catalog_dir=None, baseline=None, progress=None,
     studied = _load_robust(robust) if robust is not None else None
     from ..engine.solve import solve as run      # cvxpy and numba load once the inputs are known good
     out = run(req, sha, cat, progress=progress, detail=detail, fast=fast)
-    results = out.results
-    results["catalog_dir"] = str(cat.folder.resolve())
+    results = dict(out.results, catalog_dir=str(cat.folder.resolve()))
     from ..studies import compliance
     if fast:
         compliance.attach_fast(results, req)
     else:
         compliance.attach(req, cat, results, out.stages)
     if studied is not None:
-        _attach_compliance(results, studied)
+        results = _with_compliance(results, studied)
     if old is not None:
-        results["changes"], results["changes_summary"] = _rank_changes(old, results, baseline, cat.folder)
-        results["baseline_sha256"] = old.get("requirements_sha256")
+        changes, changes_summary = _rank_changes(old, results, baseline, cat.folder)
+        results = dict(results, changes=changes, changes_summary=changes_summary,
+                       baseline_sha256=old.get("requirements_sha256"))
     return SolveResult(results, out.traces, cat.folder, (requirements_path, catalog_dir, baseline, robust))
 
 
@@ -142,17 +142,18 @@ def _load_robust(path: str | Path) -> dict[str, dict]:
     return {d["id"]: d for d in designs}
 
 
-def _attach_compliance(results: dict, studied: dict[str, dict]) -> None:
-    """Each studied candidate, and each technology's best, carries its
-    probability of compliance under tolerances and its 95 % interval."""
-    for c in results["candidates"]:
-        if c["id"] in studied:
-            c["p_compliance"] = studied[c["id"]]["p_compliance"]
-            c["p_ci95"] = studied[c["id"]].get("p_ci95")
-    for tech in results["summary"]["comparison"]["technologies"].values():
-        entry = studied.get(tech["best"])
-        if entry is not None:
-            tech["p_compliance"], tech["p_ci95"] = entry["p_compliance"], entry.get("p_ci95")
+def _with_compliance(results: dict, studied: dict[str, dict]) -> dict:
+    """New results in which each studied candidate, and each technology's
+    best, carries its probability of compliance under tolerances and its
+    95 % interval."""
+    def carried(record: dict, entry: dict | None) -> dict:
+        if entry is None:
+            return record
+        return dict(record, p_compliance=entry["p_compliance"], p_ci95=entry.get("p_ci95"))
+    summary, comparison = results["summary"], results["summary"]["comparison"]
+    techs = {name: carried(t, studied.get(t["best"])) for name, t in comparison["technologies"].items()}
+    return dict(results, candidates=[carried(c, studied.get(c["id"])) for c in results["candidates"]],
+                summary=dict(summary, comparison=dict(comparison, technologies=techs)))
 
 
 def _load_baseline(path: str | Path) -> dict:

@@ -5,10 +5,14 @@ its results.json record."""
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING
 
 from .records import DCDesign, DCParts
 from ...errors import InputError
 from ...io.catalog import Catalog
+
+if TYPE_CHECKING:                   # the types alone: not imported when the module loads
+    from .parts import PartArrays
 
 
 @dataclass(frozen=True)
@@ -17,7 +21,7 @@ class DCPartsDesign:
     parts as one row of ``dc_parts.PartArrays`` and what was set on the
     nominal parts and stays when the parts vary (the controller's gains and
     the drive's current and voltage limits, ``dc_sizing.verify_parts``)."""
-    parts: object           # PartArrays, one row
+    parts: PartArrays       # one row
     settings: dict          # kp, ki, kd, current_limit_A, voltage_limit_V
     duration: float         # simulated time of each step (s), as solved
 

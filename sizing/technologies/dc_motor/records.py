@@ -5,16 +5,19 @@ actuator simulated (``DCActuatorDesign``), a design from parts
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Mapping
+from typing import TYPE_CHECKING, Mapping
 
 from ...engine.records import EMPTY, Simulation
+
+if TYPE_CHECKING:                   # the types alone: not imported when the module loads
+    from ...io.catalog import DCActuator
 
 
 @dataclass(frozen=True)
 class DCActuatorDesign:
     """A catalog DC actuator simulated under every load case (``dc_candidates``)."""
 
-    actuator: object                # io.catalog.DCActuator
+    actuator: DCActuator
     static: Mapping                 # dc.static_figures at the largest load, and free_stroke_m
     simulation: Simulation          # the step of the required stroke under every load case
     margins: Mapping

@@ -4,9 +4,12 @@ changed after it is made (``engine.records``)."""
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Mapping
+from typing import TYPE_CHECKING, Mapping
 
 from ...engine.records import EMPTY, Simulation
+
+if TYPE_CHECKING:                   # the types alone: not imported when the module loads
+    from .screen import Group
 
 
 @dataclass(frozen=True)
@@ -16,7 +19,7 @@ class PumpDesign:
     the cycle simulation (failed: it diverged). ``margins``: the static ones
     with the simulated speed in place of the cycle-averaged one."""
 
-    group: object                   # pump_screen.Group, the parts
+    group: Group                    # the parts
     voltage: float                  # V, the drive's peak
     frequency: float                # Hz, pumping
     pump_diameter: float            # m

@@ -7,11 +7,17 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Mapping
+from typing import TYPE_CHECKING, Mapping
 
 from ...engine.loads import load_cases, surface_mass
 from ...engine.records import EMPTY, Simulation
 from ...physics import structure
+
+if TYPE_CHECKING:                   # the types alone: not imported when the module loads
+    from ...io.catalog import Compensator, Material
+    from .convex import SizingResult
+    from .parts import Candidates
+    from .search import Combo
 
 
 @dataclass(frozen=True)
@@ -20,8 +26,8 @@ class Variant:
     compensation (no compensator: as built; ``passive``: a low-expansion
     spacer that cancels the thermal budget; else a catalog compensator)."""
 
-    material: object
-    compensator: object = None
+    material: Material
+    compensator: Compensator | None = None
     passive: bool = False
 
     @property
@@ -52,12 +58,12 @@ class PiezoDesign:
 
     origin: int
     id: str
-    combo: object                   # search.Combo
+    combo: Combo
     variant: Variant
-    gp: object                      # convex.SizingResult
+    gp: SizingResult
     spacer: float = 0.0             # m, passive-compensation spacer (0: none)
     bouc_wen: tuple | None = None   # (BoucWen, source) of its stack; None: not buildable
-    cand: object = None             # piezo.Candidates, one row
+    cand: Candidates | None = None  # one row
     ramp: float = math.nan          # s, the drive's voltage ramp (sized with the units)
     amplifier_units: float = math.nan   # amplifier units in parallel (sized against the speed and the duty)
     static: Mapping = field(default_factory=lambda: EMPTY)  # static figures, SI (verify.static_figures and the derived ones)

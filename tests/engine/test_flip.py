@@ -208,6 +208,29 @@ def test_the_seed_flips_agree_with_sweep(seed):
         assert point(dc["within"][1])["dc_motor"] > 0
 
 
+@pytest.mark.slow
+def test_the_seed_recommendation_stroke_flips_agree_with_sweep(seed):
+    """``sizing sweep``'s own grid points a tolerance either side of each
+    stroke flip of the recommendation: past the flip its best design is
+    another, short of it the recommended one."""
+    import tomllib
+    from sizing.studies.sweep import PointTask, run_point
+    req, cat, loads, results = seed
+    comp = results["summary"]["comparison"]
+    data = tomllib.loads((STUDIES / "seed-requirements.toml").read_text())
+
+    def best(stroke):
+        d = dict(data, requirements=dict(data["requirements"], stroke=stroke))
+        return run_point(PointTask(d, "seed-requirements.toml", cat, {"stroke": stroke}))["best"]["id"]
+    entries = [f for f in comp["technologies"][comp["recommended"]["technology"]]["flips"]
+               if f["field"] == "stroke" and f["changes"] == "recommendation" and f["to"] is not None]
+    assert entries
+    for e in entries:
+        away = 1 + TOLERANCE if e["direction"] == "stricter" else 1 - TOLERANCE
+        assert best(e["to"] * away) != comp["recommended"]["id"]
+        assert best(e["to"] / away) == comp["recommended"]["id"]
+
+
 def _recommended(req, cat, loads, field, value) -> tuple:
     """(first objective, technology, id) of the lightest technology's best,
     every technology re-solved whole with one requirement changed."""

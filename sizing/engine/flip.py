@@ -398,12 +398,21 @@ class Search:
 
     def recommendation_changes(self, probe: Probe, x: float) -> bool:
         """Whether the design recommended today is not recommended at a
-        stricter ``x``: it no longer complies, or another technology's
-        complying design is lighter in the first objective."""
+        stricter ``x``: it no longer complies, a lighter design of its own
+        technology that misses today complies there (a stricter value is
+        not always harder for every design: docs/validation.md, "The
+        seed's flips, re-solved"), or another technology's complying
+        design is lighter in the first objective."""
         lead, d0 = self.recommended()
         ok, mine = self.design_at(lead, probe, x, d0)
         if not ok:
             return True
+        lighter = [c for c in self.solved[lead] if not c.get("feasible") and _objective(c, self.key) < mine
+                   and c.get("margins") and (probe.holding is None or resolve.holds(c, probe.holding))]
+        if lighter:
+            found = self.solve_at(lead, probe, x, lighter)
+            if any(found[c["id"]][0] and found[c["id"]][1] < mine for c in lighter):
+                return True
         for tech, v in self.today.items():
             if tech == lead or not v.feasible or v.objective >= mine:
                 continue              # stricter values only make it heavier
@@ -517,7 +526,9 @@ def recommendation_flips(search: Search, probes: list[Probe], feasibility: list[
     out = []
     for probe in probes:
         end = ends.get(probe.field, probe.end(probe.stricter))
-        to = bisect(lambda x: search.recommendation_changes(probe, x), probe, end)
+        # from today's value outwards: the nearest change, where a lighter
+        # design that enters may leave again further on
+        to = gallop(lambda x: search.recommendation_changes(probe, x), probe, end, probe.value)
         out.append(dict(_entry(probe, to, probe.end(probe.stricter), "recommendation"), direction="stricter"))
         looser = probe.end(-probe.stricter)
         loosest = [p for p in probes if p.holding is None]

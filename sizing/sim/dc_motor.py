@@ -31,7 +31,14 @@ updated at each sample, so at a reversal the motor crosses the gap while
 the measurement stands still (with the loop closed on the motor's encoder
 instead, a play is a post-processing of the output: the diagnosis's
 ``backlash`` forms "play" and "coasting"). The reported position is the
-measured one.
+measured one. ``integrate_to_limit`` (inert at 0) changes the anti-wind-up:
+where a step of the integrator would carry the command past the current
+limit, it takes the part that brings the command to the limit (instead of
+none), so the closed loop is a continuous function of its parameters and
+reference. ``simulate(heat=True)`` also returns the integral of the square
+of the current flowing in the motor (the held current, or (U - k_e w) / R
+while voltage-driven, integrated in closed form), accumulated over every
+control period: an RMS read from it does not depend on the output grid.
 Many candidates run at once; positions are reported from the rest position.
 """
 from __future__ import annotations
@@ -49,8 +56,10 @@ PARAMS = (
     "current_limit", "load_force", "load_stiffness", "efficiency", "torque_constant",
     "coulomb_friction", "proportional_on_measurement", "bus_voltage", "back_emf_constant",
     "winding_resistance", "drive_current_limit", "static_friction", "stribeck_velocity", "loop_backlash",
+    "integrate_to_limit",
 )
 CHANNELS = ("position_m", "velocity_m_s", "current_A")
+HEAT = "current_squared_integral_A2s"   # the optional output of ``simulate(heat=True)``
 
 
 @dataclass
@@ -62,7 +71,10 @@ class DCMotorModel(ParameterSet):
     bus_voltage V (inf: no ceiling), back_emf_constant V s/rad (bus-referred),
     winding_resistance ohm, drive_current_limit A (inf: none),
     static_friction N (<= coulomb_friction: none), stribeck_velocity m/s,
-    loop_backlash m (total play inside the loop; 0: none). ``lead`` is output metres per motor radian x 2 pi
+    loop_backlash m (total play inside the loop; 0: none),
+    integrate_to_limit (1: the integrator takes the part of a step that
+    keeps the command within the current limit; 0: the whole step or
+    none). ``lead`` is output metres per motor radian x 2 pi
     (screw lead / gear ratio)."""
 
     c1: object
@@ -87,6 +99,7 @@ class DCMotorModel(ParameterSet):
     static_friction: object = 0.0
     stribeck_velocity: object = 0.0
     loop_backlash: object = 0.0
+    integrate_to_limit: object = 0.0
 
 
 @numba.njit(cache=True)
@@ -152,16 +165,33 @@ def _friction_level(v, i_fric, i_stat, v_s):
 
 
 @numba.njit(cache=True)
+def _exp_square_integral(i0, i1, c, T):
+    """Integral over [0, T] of i(t)^2 where i(t) = A + B exp(c t) runs from
+    i0 to i1 (the voltage-driven current: the speed relaxes exponentially
+    with the pole c, and i = (U - k_e w) / R is affine in it)."""
+    cT = c * T
+    if abs(cT) < 1e-6:          # linear within rounding: the mean square of a ramp
+        return T * (i0 * i0 + i0 * i1 + i1 * i1) / 3.0
+    e = np.exp(cT)
+    B = (i1 - i0) / (e - 1.0)
+    A = i0 - B
+    return A * A * T + 2.0 * A * B * (e - 1.0) / c + B * B * (e * e - 1.0) / (2.0 * c)
+
+
+@numba.njit(cache=True)
 def _advance(y, v, i, dt, c1, c1v, g, load_i, i_fric, U, ke, Rw, to_speed, limited, i_stat, v_s):
     """Advance the plant over dt with the drive holding current i, except
     where the bus voltage cannot push it: then the motor is voltage-driven
     (i = (U - k_e w) / R) from the instant R i + k_e w reaches U.
-    Returns y, v and the current flowing at the end."""
+    Returns y, v, the current flowing at the end and the integral of the
+    square of the current flowing over dt (A^2 s: exact while the speed
+    relaxes freely; a stop by friction inside a voltage-driven stretch
+    is not followed)."""
     if not limited:
         a, b, a_y, b_y = _zoh(c1, g, dt)
         f_run, f_stick = _friction_level(v, i_fric, i_stat, v_s)
         y, v = _plant_step(y, v, i - load_i, a, b, a_y, b_y, c1, g, dt, f_run, f_stick)
-        return y, v, i
+        return y, v, i, i * i * dt
     need = Rw * i + ke * v * to_speed
     if abs(need) <= U:
         # current-driven until the needed voltage reaches the bus
@@ -173,14 +203,19 @@ def _advance(y, v, i, dt, c1, c1v, g, load_i, i_fric, U, ke, Rw, to_speed, limit
         f_run, f_stick = _friction_level(v, i_fric, i_stat, v_s)
         y, v = _plant_step(y, v, i - load_i, a, b, a_y, b_y, c1, g, t1, f_run, f_stick)
         if t_hit >= dt:
-            return y, v, i
+            return y, v, i, i * i * dt
+        sq = i * i * t1
         dt = dt - t1
         v = v_star
+    else:
+        sq = 0.0
     V_app = U if Rw * i + ke * v * to_speed > 0.0 else -U
+    i0 = (V_app - ke * v * to_speed) / Rw
     a, b, a_y, b_y = _zoh(c1v, g, dt)
     f_run, f_stick = _friction_level(v, i_fric, i_stat, v_s)
     y, v = _plant_step(y, v, V_app / Rw - load_i, a, b, a_y, b_y, c1v, g, dt, f_run, f_stick)
-    return y, v, (V_app - ke * v * to_speed) / Rw
+    i1 = (V_app - ke * v * to_speed) / Rw
+    return y, v, i1, sq + _exp_square_integral(i0, i1, c1v, dt)
 
 
 @numba.njit(cache=True)
@@ -195,11 +230,12 @@ def _play(o, y, half):
 
 
 @numba.njit(cache=True)
-def _simulate_one(p, t_ref, r_row, t_out, rec):
+def _simulate_one(p, t_ref, r_row, t_out, rec, heat):
     c1, c2, lead, rate, kp, ki, kd = p[0], p[1], p[2], p[3], p[4], p[5], p[6]
     d_meas, i_max, F0, kL, eta, kt, Fc = p[7], p[8], p[9], p[10], p[11], p[12], p[13]
     p_meas, U, ke, Rw = p[14], p[15], p[16], p[17]
     i_drv, Fs, v_s, half = p[18], p[19], p[20], 0.5 * p[21]
+    to_limit = p[22] > 0.5
     Ts = 1.0 / rate
     g = lead / (2.0 * np.pi) * c2
     limited = U < np.inf and ke > 0.0
@@ -216,6 +252,7 @@ def _simulate_one(p, t_ref, r_row, t_out, rec):
     y_prev = y
     t = t_out[0]
     i = ki * integ          # the holding current, so the rest is a rest
+    sq = 0.0                # integral of the square of the current flowing since t_out[0], A^2 s
     j = 0
     n_out = t_out.shape[0]
     while j < n_out:
@@ -229,9 +266,13 @@ def _simulate_one(p, t_ref, r_row, t_out, rec):
             tau = t_out[j] - t
             if tau <= 0.0:
                 rec[0, j], rec[1, j], rec[2, j] = m, v, i
+                if heat:
+                    rec[3, j] = sq
             else:
-                rec[0, j], rec[1, j], rec[2, j] = _advance(y, v, i_act, tau, c1, c1v, g, load_i, i_fric,
-                                                          U, ke, Rw, to_speed, limited, i_stat, v_s)
+                rec[0, j], rec[1, j], rec[2, j], sq_tau = _advance(y, v, i_act, tau, c1, c1v, g, load_i, i_fric,
+                                                                  U, ke, Rw, to_speed, limited, i_stat, v_s)
+                if heat:
+                    rec[3, j] = sq + sq_tau
                 if half > 0.0:
                     rec[0, j] = _play(m, rec[0, j], half)
                 if drive_clipped:
@@ -240,8 +281,9 @@ def _simulate_one(p, t_ref, r_row, t_out, rec):
         if j >= n_out:
             break
         # controller tick at time t + Ts: sample, compute, hold
-        y, v, _ = _advance(y, v, i_act, Ts, c1, c1v, g, load_i, i_fric, U, ke, Rw, to_speed, limited,
-                           i_stat, v_s)
+        y, v, _, sq_Ts = _advance(y, v, i_act, Ts, c1, c1v, g, load_i, i_fric, U, ke, Rw, to_speed, limited,
+                                  i_stat, v_s)
+        sq += sq_Ts
         t += Ts
         m = _play(m, y, half) if half > 0.0 else y
         r = np.interp(t, t_ref, r_row)
@@ -251,6 +293,13 @@ def _simulate_one(p, t_ref, r_row, t_out, rec):
         i_try = kp * prop + ki * (integ + err * Ts) + kd * deriv
         if abs(i_try) < i_max or i_try * err < 0.0:
             integ += err * Ts
+        elif to_limit and ki != 0.0:
+            # the part of the step that brings the command to the limit:
+            # the integrator then depends continuously on the state (the
+            # whole-or-nothing rule jumps by ki e Ts where it switches)
+            room = ((i_max if i_try > 0.0 else -i_max) - (i_try - ki * err * Ts)) / ki
+            if room * err > 0.0:
+                integ += room
         i_new = kp * prop + ki * integ + kd * deriv
         i = min(max(i_new, -i_max), i_max)
         e_prev, y_prev = err, m
@@ -258,23 +307,29 @@ def _simulate_one(p, t_ref, r_row, t_out, rec):
 
 
 @numba.njit(cache=True, parallel=True)
-def _simulate(P, t_ref, R, t_out, r_stride):
+def _simulate(P, t_ref, R, t_out, r_stride, heat):
     n_cand = P.shape[0]
-    out = np.empty((n_cand, 3, t_out.shape[0]))
+    out = np.empty((n_cand, 4 if heat else 3, t_out.shape[0]))
     for c in numba.prange(n_cand):
-        _simulate_one(P[c], t_ref, R[c * r_stride], t_out, out[c])
+        _simulate_one(P[c], t_ref, R[c * r_stride], t_out, out[c], heat)
     return out
 
 
-def simulate(model: DCMotorModel, t_ref, reference, t_out=None) -> dict[str, np.ndarray]:
+def simulate(model: DCMotorModel, t_ref, reference, t_out=None, heat=False) -> dict[str, np.ndarray]:
     """Simulate each candidate following ``reference`` (m) given at t_ref (s).
-    Returns {channel: (n_cand, n_out)} for CHANNELS."""
+    Returns {channel: (n_cand, n_out)} for CHANNELS; with ``heat``, also
+    HEAT: the integral from t_out[0] of the square of the current flowing
+    in the motor (A^2 s), accumulated over every control period whatever
+    the output grid (the held current, or the voltage-driven current
+    (U - k_e w) / R integrated in closed form), so an RMS current read
+    from it does not alias the controller's staircase."""
     P = model.matrix()
     t_ref = np.ascontiguousarray(t_ref, dtype=float)
     R = np.ascontiguousarray(np.atleast_2d(np.asarray(reference, dtype=float)))
     t_out = t_ref if t_out is None else np.ascontiguousarray(t_out, dtype=float)
-    out = _simulate(P, t_ref, R, t_out, np.int64(R.shape[0] > 1))
+    out = _simulate(P, t_ref, R, t_out, np.int64(R.shape[0] > 1), bool(heat))
     bad = ~np.all(np.isfinite(out), axis=(1, 2))
     if bad.any():
         raise SimulationError(f"simulation diverged for candidates {np.flatnonzero(bad).tolist()}")
-    return {name: out[:, i, :] for i, name in enumerate(CHANNELS)}
+    names = CHANNELS + ((HEAT,) if heat else ())
+    return {name: out[:, i, :] for i, name in enumerate(names)}

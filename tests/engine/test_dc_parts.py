@@ -78,12 +78,16 @@ def test_static_screen_hand_numbers(seed):
 
 
 def test_duty_rms_of_a_held_current():
-    """Constant current: its RMS is itself whatever the period; a current held
-    for a fraction f of the period has RMS i sqrt(f)."""
+    """Constant current (its square's integral 9 t): its RMS is itself
+    whatever the period; a current held for a fraction f of the period has
+    RMS i sqrt(f)."""
     t = np.arange(0, 1.0, 1e-3)
-    assert dc_sizing.duty_rms(t, np.full((1, len(t)), 3.0), 2.0)[0] == pytest.approx(3.0)
+    held = np.full((1, len(t)), 3.0)
+    assert dc_sizing.duty_rms(t, 9.0 * t[None, :], held, 2.0)[0] == pytest.approx(3.0)
+    assert dc_sizing.duty_rms(t, 9.0 * t[None, :], held, 0.5)[0] == pytest.approx(3.0)
     pulse = np.where(t < 0.25, 4.0, 0.0)[None, :]
-    assert dc_sizing.duty_rms(t, pulse, 1.0)[0] == pytest.approx(4.0 * math.sqrt(0.25), rel=1e-3)
+    heat = 16.0 * np.minimum(t, 0.25)[None, :]
+    assert dc_sizing.duty_rms(t, heat, pulse, 1.0)[0] == pytest.approx(4.0 * math.sqrt(0.25), rel=1e-9)
 
 
 def _catalog_copy(tmp_path) -> Path:

@@ -21,7 +21,7 @@ import numpy as np
 
 from ...physics import motor as motor_phys
 from ...physics import screw as screw_phys
-from ...sim.dc_motor import DCMotorModel, simulate
+from ...sim.dc_motor import HEAT, DCMotorModel, simulate
 from ...sim.metrics import step_metrics
 from . import controller as ctl
 from .actuator import SETTLED, output_times
@@ -41,14 +41,35 @@ MIN_SIMULATED = 24      # filled with the closest-to-feasible when fewer pass th
 SIM_CHUNK = 64          # rows (design x load case) per batched simulation
 
 
-def duty_rms(t, current, period) -> np.ndarray:
-    """RMS current over one duty period from step responses (n, n_t): the
-    trace up to the period, then the final (holding) current for the rest."""
-    dt = t[1] - t[0]
-    inside = t < period - 1e-12
-    energy = np.sum(current[:, inside] ** 2, axis=1) * dt
-    rest = max(period - t[inside][-1] - dt, 0.0)
-    return np.sqrt((energy + rest * current[:, -1] ** 2) / period)
+def duty_rms(t, heat, current, period) -> np.ndarray:
+    """RMS current over one duty period from step responses (n, n_t):
+    ``heat``, the integral of the square of the current flowing from t[0]
+    (``simulate(heat=True)``, accumulated over every control period),
+    read at the period, then the final (holding) ``current`` for the rest
+    when the period outlasts the run. Read from the integral rather than
+    from samples of the current, the RMS does not depend on how the output
+    grid falls on the controller's held current."""
+    heat = np.atleast_2d(heat)
+    if period >= t[-1]:
+        energy = heat[:, -1] + (period - t[-1]) * current[:, -1] ** 2
+    else:
+        k = int(np.clip(np.searchsorted(t, period), 1, len(t) - 1))
+        w = (period - t[k - 1]) / (t[k] - t[k - 1])
+        energy = (1.0 - w) * heat[:, k - 1] + w * heat[:, k]
+    return np.sqrt(energy / period)
+
+
+def crossing_time(t, y, target, first) -> np.ndarray:
+    """The time each row of y (n, n_t) reaches ``target`` (n,), between the
+    samples ``first`` - 1 and ``first`` (the first at or past the target),
+    by linear interpolation: the time to stroke then moves continuously
+    with the design instead of by output samples."""
+    rows = np.arange(len(y))
+    k = np.clip(first, 1, y.shape[1] - 1)
+    y0, y1 = y[rows, k - 1], y[rows, k]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        w = np.where(y1 > y0, (target - y0) / (y1 - y0), 1.0)
+    return t[k - 1] + np.clip(w, 0.0, 1.0) * (t[k] - t[k - 1]) - t[0]
 
 
 def models(pl, static, gains, p, idx, loads, hot_resistance) -> DCMotorModel:
@@ -61,7 +82,8 @@ def models(pl, static, gains, p, idx, loads, hot_resistance) -> DCMotorModel:
         proportional_on_measurement=1.0, current_limit=rep(static["current_limit_A"]),
         load_force=np.tile(np.asarray(loads, float), len(idx)), efficiency=rep(pl["efficiency"]),
         torque_constant=rep(pl["torque_constant"]), bus_voltage=rep(static["drive_voltage_V"]),
-        back_emf_constant=rep(p.values["motor_back_emf_constant"]), winding_resistance=rep(hot_resistance))
+        back_emf_constant=rep(p.values["motor_back_emf_constant"]), winding_resistance=rep(hot_resistance),
+        integrate_to_limit=1.0)
 
 
 def _choose(margins, met, req, real=None) -> np.ndarray:
@@ -283,10 +305,10 @@ def _simulate(req, pl, static, gains, p, chosen, loads, duration, progress) -> d
     for start in range(0, len(chosen), per_chunk):
         idx = chosen[start:start + per_chunk]
         model = models(pl, static, gains, p, idx, loads, static["hot_resistance_ohm"])
-        out = simulate(model, t, ref)
+        out = simulate(model, t, ref, heat=True)
         y, v, i_trace = out["position_m"], out["velocity_m_s"], out["current_A"]
-        fig = step_metrics(t, y, np.full(len(y), SETTLED * S))
-        rms = duty_rms(t, i_trace, period)
+        fig = _step_figures(t, y, SETTLED * S)
+        rms = duty_rms(t, out[HEAT], i_trace, period)
         P = model.matrix()
         for k, design in enumerate(idx):
             rows = slice(k * n_l, (k + 1) * n_l)
@@ -301,6 +323,20 @@ def _simulate(req, pl, static, gains, p, chosen, loads, duration, progress) -> d
         if progress is not None:
             progress("simulating DC", min(start + per_chunk, len(chosen)), len(chosen))
     return result
+
+
+def _step_figures(t, y, target) -> dict:
+    """``step_metrics`` with the time to stroke (and the speed from it)
+    interpolated between output samples."""
+    fig = step_metrics(t, y, np.full(len(y), target))
+    hit = np.isfinite(fig["time_to_stroke_s"])
+    if hit.any():
+        first = np.argmax(y >= target, axis=1)
+        time = crossing_time(t, y, np.full(len(y), target), first)
+        fig["time_to_stroke_s"] = np.where(hit, time, fig["time_to_stroke_s"])
+        with np.errstate(divide="ignore"):
+            fig["speed_m_s"] = np.where(hit, np.where(time > 0, target / time, np.inf), fig["speed_m_s"])
+    return fig
 
 
 def _row_params(row) -> dict:

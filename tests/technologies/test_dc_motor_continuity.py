@@ -24,7 +24,7 @@ ROW = ("allied-mf0095020-48v", "hiwin-r12-05k4-fscdin", "belt-2", "servo-48v-10a
 @pytest.fixture(scope="module")
 def seed():
     req, _ = load_requirements(STUDIES / "seed-requirements.toml")
-    from sizing.engine.resolve import dc_parts_of
+    from sizing.technologies.dc_motor.resolving import parts_of as dc_parts_of
     parts = dc_parts_of(load_catalog(None), ({"components": dict(zip(("motor", "screw", "gear", "drive"), ROW))},))
     return req, parts, [c["load_N"] for c in load_cases(req.load)]
 

@@ -25,6 +25,9 @@ from .convex import (CONSTRAINTS, FEASIBLE_SLACK, PARAMETERS, POINT, VARIABLES, 
                      SizingResult, allowed_misses, binding_of, parameter_values)
 from .posynomial import Layout, Posynomial
 
+# the optimum's Newton steps: the seed's and low-duty's feasible rows are all
+# certified within 52; the rest are infeasible parts, for phase 1 to show
+OPTIMUM_ITERATIONS = 60
 SURELY_MISSED = 1e-4      # phase 1's largest slack beyond 1: infeasible whichever solver says so
 SLACK_DOUBT = 10.0        # a slack within this factor (in log) of FEASIBLE_SLACK's edge is left to the reference
 INFEASIBLE = "infeasible"     # the status the reference gives infeasible parts (cvxpy's word)
@@ -69,7 +72,7 @@ class BatchSizer:
         values = np.array([[p[k] for k in PARAMETERS] for p in map(parameter_values, inputs)])
         theta, vmax = np.log(values), values[:, PARAMETERS.index("vmax")]
         out: list[SizingResult | None] = [None] * len(inputs)
-        best = batch_gp.solve(self.problem, theta, np.zeros((len(inputs), len(VARIABLES))))
+        best = batch_gp.solve(self.problem, theta, np.zeros((len(inputs), len(VARIABLES))), OPTIMUM_ITERATIONS)
         for i in np.flatnonzero(best.certified):
             out[i] = SizingResult(True, *_point(best.y[i], vmax[i]), status="optimal")
         rest = np.flatnonzero(~best.certified)

@@ -1,17 +1,20 @@
 """Results of slow, deterministic computations kept on disk between runs,
 as numba keeps its compiled kernels: ``memo`` wraps a function of
-hashable arguments that returns a float.
+hashable arguments that returns a float (a plate's finite-element solve,
+a quantity's text in SI units).
 
 One JSON file per function in the cache folder (``SIZING_CACHE_DIR``, else
 ``~/.cache/sizing``, as the parsed catalogs), under ``computed/``, named by
 a hash of the function's module source and the versions of the packages
 it rests on, so that any change to the code that computes the values
-starts a new file. Files are written by ``io.atomic.store_cache`` (whole,
-then renamed); one that cannot be written only means the values are
-computed again next run, one that cannot be read is ignored.
+starts a new file. New values are written when the process exits (or at
+``flush()``), each file whole by ``io.atomic.store_cache`` and then
+renamed; one that cannot be written only means the values are computed
+again next run, one that cannot be read is ignored.
 """
 from __future__ import annotations
 
+import atexit
 import functools
 import hashlib
 import inspect
@@ -49,11 +52,23 @@ def memo(*packages: str):
             known, key = state["known"][where], repr(args)
             if key not in known:
                 known[key] = float(func(*args))
-                known.update({k: v for k, v in _read(where).items() if k not in known})   # another run's
-                _store(where, known)
+                _pending[where] = known
             return known[key]
+        cached.forget = state["known"].clear     # what was read: as a new process starts
         return cached
     return wrap
+
+
+_pending: dict[Path, dict] = {}       # files with values not yet written
+
+
+@atexit.register
+def flush() -> None:
+    """Write the values computed since the last flush (at exit, or when called)."""
+    while _pending:
+        path, values = _pending.popitem()
+        values.update({k: v for k, v in _read(path).items() if k not in values})     # another run's
+        _store(path, values)
 
 
 def _store(path: Path, values: dict) -> None:

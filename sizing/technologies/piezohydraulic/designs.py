@@ -110,12 +110,19 @@ def size(b: PiezoBrief, catalog, combos, progress=None, keep=None):
     accumulator adds its compliance to the force path; every compensator
     its mass and cost to the objective). ``keep(combo, variant)``: the
     variants to size (all by default)."""
-    vs = variants(b, catalog)
-    pairs = [(c, v) for c in combos for v in vs if keep is None or keep(c, v)]
+    rows = variant_inputs(b, catalog, combos, keep)
     _progress(progress, "sizing", 0, len(combos))
-    results = _solved(tuple(b.objectives), [sizing_input(b, c, v.material, v.compensator) for c, v in pairs])
+    results = _solved(tuple(b.objectives), [s for _, _, s in rows])
     _progress(progress, "sizing", len(combos), len(combos))
-    return [(c, v, res) for (c, v), res in zip(pairs, results)]
+    return [(c, v, res) for (c, v, _), res in zip(rows, results)]
+
+
+def variant_inputs(b: PiezoBrief, catalog, combos, keep=None) -> list[tuple[Combo, Variant, SizingInput]]:
+    """Each combination with each variant ``keep(combo, variant)`` keeps (all
+    by default), and the program's input for it, in the order ``size`` sizes them."""
+    vs = variants(b, catalog)
+    return [(c, v, sizing_input(b, c, v.material, v.compensator)) for c in combos for v in vs
+            if keep is None or keep(c, v)]
 
 
 def designs(b: PiezoBrief, catalog, sized) -> list[PiezoDesign]:

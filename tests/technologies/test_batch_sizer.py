@@ -82,8 +82,8 @@ def test_hand_made_inputs_agree_with_clarabel():
 def test_rows_the_batch_does_not_certify_go_to_clarabel(monkeypatch):
     """With no iteration allowed nothing is certified: every row is
     Clarabel's own answer, field for field."""
-    monkeypatch.setattr(batch_gp, "MAX_ITERATIONS", 0)
     monkeypatch.setattr(batch_gp.solve, "__defaults__", (0,))
+    monkeypatch.setattr(batch_sizer, "OPTIMUM_ITERATIONS", 0)
     sizer = BatchSizer(("mass", "cost"))
     got = sizer.solve(INPUTS)
     ref = GPSizer(("mass", "cost"))

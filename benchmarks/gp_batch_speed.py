@@ -16,14 +16,16 @@ machine's load does not enter them):
     python benchmarks/gp_batch_speed.py [--solve] [--repeat 3]
 
 Figures on this 2-core machine (one BLAS thread, shared by five jobs,
-load 3-5), the seed's 1014 programs: Clarabel 2.2-2.6 s CPU (1014 + 2 x
-139 solves), the batch 0.45-0.55 s (4.4-5x; 940 certified optimal, the
-139 infeasible ones through phase 1 and the closest design, none left to
-Clarabel); objectives within 4e-8 (log), geometry within 3e-4 (the
-optimum is flat in the frame and cap sizes: Clarabel stops at its 1e-8
-gap). The plate grids: 0.7-1.0 s solved, under 0.01 s read back. The
---fast seed solve: 4.6 s CPU warm (7.6 s before these changes: 1357
-Clarabel solves, the plates solved every run), wall 8 s at load 5.
+load 5-6), the seed's 936 variant programs (834 feasible): Clarabel one by
+one 1.99 s CPU (936 solves, and two more for each of the 102 infeasible
+ones), the batch 0.43-0.47 s (4.2-4.6x; every feasible row certified, the
+infeasible ones through phase 1 and the closest design, none left to
+Clarabel); the same feasibility and driver on every row, objectives within
+9e-7 (log), geometry within 1e-4 (the optimum is flat in the frame and cap
+sizes: Clarabel stops at its 1e-8 gap). The plate grids: 0.47-0.50 s
+solved, under 0.01 s read back. The --fast seed solve: 4.25 s CPU warm
+(7.6 s before: 1357 Clarabel solves, the plates solved and pint loaded on
+every run), wall 8 s at load 6.
 """
 from __future__ import annotations
 
@@ -103,6 +105,7 @@ def programs() -> None:
 
 
 def plates() -> None:
+    from sizing import disk_cache
     from sizing.physics import plate_fe
     _, _, catalog = seed_inputs()
     cases = {(round(float(m.poisson), 6), "simply_supported") for m in catalog.materials.values()}
@@ -115,6 +118,7 @@ def plates() -> None:
         t_solve = cpu() - t
         plate_fe._ratio_grid.cache_clear()
         plate_fe._compliance_factor.cache_clear()
+        disk_cache.flush()
         plate_fe._compliance_factor.__wrapped__.forget()     # a new process: nothing in memory
         t = cpu()
         read = [plate_fe._ratio_grid(*c) for c in sorted(cases)]
@@ -138,7 +142,7 @@ def solve(repeat: int) -> None:
             used = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
             best = min(best, (used, wall))
     print(f"seed solve --fast, warm, best of {repeat}: {best[0]:.2f} s CPU, {best[1]:.2f} s wall"
-          f" (load {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores); 7.6 s CPU before the batch and the plate cache")
+          f" (load {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores); 7.6 s CPU before the batch and the disk caches")
 
 
 def main() -> None:

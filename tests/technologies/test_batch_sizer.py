@@ -142,3 +142,17 @@ def test_every_seed_combination_agrees_with_clarabel(study):
         total = [math.prod(r.slack[k] for k in CONSTRAINTS) for r in (got[i], want[i])]
         assert total[0] == pytest.approx(total[1], rel=1e-6), i
     assert batch_sizer.INFEASIBLE in {r.status for r in want}
+
+
+def test_inside_a_reuse_block_only_new_inputs_are_solved(monkeypatch):
+    """The flips' re-solves (``stage_cache.reuse()``) read back what was
+    sized before and send only the new inputs to the batch."""
+    from sizing.engine import stage_cache
+    sizes = []
+    solve = BatchSizer.solve
+    monkeypatch.setattr(BatchSizer, "solve", lambda self, inputs: sizes.append(len(inputs)) or solve(self, inputs))
+    with stage_cache.reuse():
+        first = piezo_designs._solved(("mass", "cost"), INPUTS[:3])
+        again = piezo_designs._solved(("mass", "cost"), INPUTS)
+    assert sizes == [3, 2]
+    assert all(a is b for a, b in zip(first, again[:3]))

@@ -3,17 +3,33 @@
 Quantities in input files are strings with a unit (``"40 mm"``) or bare
 numbers that already are SI (temperatures: bare numbers are degC). pint is
 40-250x slower than floats, so values are converted once, when a file is read,
-and the models only ever see floats.
+and the models only ever see floats. Loading pint and building its registry
+takes most of a second, so the registry is built on the first conversion, and
+each text's SI value is kept on disk (``disk_cache``): a run that reads the
+same files again converts nothing and never loads pint.
 """
 from __future__ import annotations
 
 import math
 import re
+from functools import lru_cache
 
-import pint
+from . import disk_cache
 
-ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
-Q_ = ureg.Quantity
+
+@lru_cache(maxsize=1)
+def registry():
+    """The one pint registry (offset units such as degC convert to kelvin)."""
+    import pint
+    return pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+
+
+def __getattr__(name: str):
+    if name == "ureg":
+        return registry()
+    if name == "Q_":
+        return registry().Quantity
+    raise AttributeError(name)
 
 # SI unit of each kind of quantity, with the word used in error messages.
 KINDS: dict[str, tuple[str, str]] = {
@@ -131,7 +147,7 @@ def _check_unit_syntax(unit: str, text: str) -> None:
                             f"an exponent must be one number of at most {MAX_EXPONENT}")
 
 
-def parse_quantity(text: str) -> pint.Quantity:
+def parse_quantity(text: str):
     """Parse ``"1.96e7 N/m"`` or ``"100 degC"``. Offset units (degC) cannot be
     multiplied, so the number and the unit are split before pint sees them.
     Every failure (too long, bad syntax, unknown unit, division by zero, a
@@ -148,7 +164,7 @@ def parse_quantity(text: str) -> pint.Quantity:
         raise UnitError(f'expected a finite number, got "{_shown(text)}"')
     _check_unit_syntax(unit, text)
     try:
-        quantity = Q_(magnitude, unit or "")
+        quantity = registry().Quantity(magnitude, unit or "")
     except Exception as exc:   # pint raises many types (ZeroDivisionError, TokenError, ...)
         raise UnitError(f'unknown unit "{_shown(unit)}" in "{_shown(text)}"') from exc
     if not all(math.isfinite(float(p)) for p in quantity.dimensionality.values()):
@@ -156,7 +172,7 @@ def parse_quantity(text: str) -> pint.Quantity:
     return quantity
 
 
-def _temperature(quantity: pint.Quantity, value: str, word: str) -> float:
+def _temperature(quantity, value: str, word: str) -> float:
     """An absolute temperature in degC; a difference or a fraction is refused."""
     if _RELATIVE_TEMPERATURE.search(_NUMBER_UNIT.match(value).group(2)):
         raise UnitError(f'expected {word} (an absolute one, e.g. "100 degC"), got the relative "{_shown(value)}"')
@@ -181,19 +197,25 @@ def to_si(value: object, kind: str) -> float:
         except OverflowError:
             raise UnitError(f"expected {word}, got a number too large") from None
     elif isinstance(value, str):
-        quantity = parse_quantity(value)
-        try:
-            if kind == "temperature":
-                result = _temperature(quantity, value, word)
-            else:
-                result = float(quantity.to(unit).magnitude)
-        except UnitError:
-            raise
-        except Exception as exc:   # DimensionalityError, OverflowError, ...
-            raise UnitError(f'expected {word}, got "{_shown(value)}"') from exc
+        result = _text_to_si(value, kind)
     else:
         raise UnitError(f"expected {word}, got {_shown(repr(value))}")
     return check_range(result, kind, value)
+
+
+@disk_cache.memo("pint")
+def _text_to_si(value: str, kind: str) -> float:
+    """A quantity's text in the SI unit of ``kind`` (degC for temperatures)."""
+    unit, word = KINDS[kind]
+    quantity = parse_quantity(value)
+    try:
+        if kind == "temperature":
+            return _temperature(quantity, value, word)
+        return float(quantity.to(unit).magnitude)
+    except UnitError:
+        raise
+    except Exception as exc:   # DimensionalityError, OverflowError, ...
+        raise UnitError(f'expected {word}, got "{_shown(value)}"') from exc
 
 
 def check_range(number: float, kind: str, given: object = None) -> float:

@@ -16,7 +16,8 @@ weighted by 2 pi r), on quadratic triangles. Edges:
 What the oil sees is the volume the wetted face sweeps, so the stiffness is
 q pi a^2 / w_mean with w_mean the wetted face's mean deflection, as in
 ``structure.plate_stiffness``. In linear elasticity w_mean = q a / E x
-g(t / a, nu), so k = E a pi / g: one solve per (t / a, nu, edge), cached.
+g(t / a, nu), so k = E a pi / g: one solve per (t / a, nu, edge), kept on
+disk between runs (``disk_cache``).
 A 40 x 8 grid of quadratic triangles is converged to well within 1 %
 (tests/physics/test_plate_fe.py doubles it).
 """
@@ -26,6 +27,8 @@ import math
 from functools import lru_cache
 
 import numpy as np
+
+from .. import disk_cache
 
 FE_CHECK_RATIO = 0.3      # thickness over radius above which the plate model is checked against the solid
 FE_TOLERANCE = 0.10       # the plate model is used within this of the solid's stiffness, else the solid's
@@ -41,6 +44,7 @@ def stiffness(a, t, E, nu, edge="simply_supported", radial_cells=RADIAL_CELLS, t
 
 
 @lru_cache(maxsize=1024)
+@disk_cache.memo("scikit-fem", "scipy", "numpy")
 def _compliance_factor(ratio, nu, edge, radial_cells, thickness_cells) -> float:
     """g = w_mean E / (q a) of a disc with a = 1, E = 1, q = 1."""
     from skfem import Basis, BilinearForm, ElementTriP2, ElementVector, FacetBasis, Functional, LinearForm, MeshTri

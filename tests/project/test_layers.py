@@ -202,8 +202,9 @@ def _allowed(module: str, function: str, what: str) -> bool:
 # removes (``io.atomic.scratch_folder``); nothing else of it writes.
 SCRATCH_USERS = "sizing.io."
 # A cache outside every output folder, written by the atomic writer:
-# parsed catalogs keyed by content.
-CACHES = {("sizing.io.catalog", "_store")}
+# parsed catalogs keyed by content, and slow computations' results
+# (``disk_cache``: the plate's finite-element solves) keyed by their code.
+CACHES = {("sizing.io.catalog", "_store"), ("sizing.disk_cache", "_store")}
 
 
 def file_writers(trees: dict[str, ast.AST]) -> list[str]:

@@ -49,10 +49,7 @@ import math
 import warnings
 from dataclasses import dataclass, field
 
-import cvxpy as cp
 import numpy as np
-import scipy.sparse as sp
-from cvxpy import settings as cvx
 
 from ...physics import geometry, structure
 from ...physics.stack import LARGE_SIGNAL_CAPACITANCE_FACTOR
@@ -153,48 +150,35 @@ class SizingResult:
         return next((RULED_OUT_BY[k] for k in self.binding if k in RULED_OUT_BY), None)
 
 
-class GPSizer:
-    """The parametrised geometric program for a set of objectives."""
+VARIABLES = ("R", "A_w", "v", "t_cap", "A_frame", "gap", "amplifier_units",
+             # epigraph variables: keep the posynomials short (one cone per term)
+             "compliance", "force_with_seals", "reflected_mass")
+# the point a solve returns: the variables a design is built from
+POINT = VARIABLES[:7]
+PARAMETERS = ("nk", "x0", "V0", "vmax", "F", "S", "beta", "p", "w2", "cur", "m0", "c0", "vol0",
+              "rho", "coil", "pw", "E", "pc", "ps", "sig", "Ls", "knk", "rhom", "cm", "Apack", "cacc",
+              "f0", "fc", "msurf", "sh", "gmin", "gfloor", "tv", "Lmax", "Dmax", "Mmax", "wall", "uam", "uac",
+              "uramp", "urms", "umean", "kmin", "FL", "ccol")
 
-    def __init__(self, objectives=("mass", "cost")):
+
+class Program:
+    """The sizing program's expressions over its symbols: ``variable(name)``
+    and ``parameter(name)`` make them (cvxpy's for ``GPSizer``, plain
+    posynomials for the batch solver of ``batch_gp.py``), so both solve the
+    one program written here."""
+
+    def __init__(self, objectives, variable, parameter):
         self.objectives = tuple(objectives)
-        self.R = cp.Variable(pos=True, name="R")
-        self.A = cp.Variable(pos=True, name="A_w")
-        self.v = cp.Variable(pos=True, name="v")
-        self.t = cp.Variable(pos=True, name="t_cap")
-        self.Af = cp.Variable(pos=True, name="A_frame")
-        self.g = cp.Variable(pos=True, name="gap")
-        self.U = cp.Variable(pos=True, name="amplifier_units")
-        # epigraph variables: keep the posynomials short (one cone per term)
-        self.C = cp.Variable(pos=True, name="compliance")
-        self.Fs = cp.Variable(pos=True, name="force_with_seals")
-        self.M = cp.Variable(pos=True, name="reflected_mass")
-        names = ["nk", "x0", "V0", "vmax", "F", "S", "beta", "p", "w2", "cur", "m0", "c0", "vol0",
-                 "rho", "coil", "pw", "E", "pc", "ps", "sig", "Ls", "knk", "rhom", "cm", "Apack", "cacc",
-                 "f0", "fc", "msurf", "sh", "gmin", "gfloor", "tv", "Lmax", "Dmax", "Mmax", "wall", "uam", "uac",
-                 "uramp", "urms", "umean", "kmin", "FL", "ccol"]
-        self.par = {k: cp.Parameter(pos=True, name=k) for k in names}
-        terms = self._constraint_terms()
-        bounds = ([self.v <= self.par["vmax"], MIN_RATIO / self.R <= 1] + self._structure_bounds() + self._gap_bounds()
-                  + self._drive_bounds()
-                  + [self._compliance() / self.C <= 1, (self.par["F"] + self._seal_force()) / self.Fs <= 1,
-                     self._reflected() / self.M <= 1])
-        self.problem = cp.Problem(cp.Minimize(self._objective()), [t <= 1 for t in terms.values()] + bounds)
-        self.slack = {k: cp.Variable(pos=True, name=f"s_{k}") for k in CONSTRAINTS}
-        phase1 = [terms[k] <= self.slack[k] for k in CONSTRAINTS] + [1 / s <= 1 for s in self.slack.values()]
-        obj1 = 1
-        for s in self.slack.values():
-            obj1 = obj1 * s
-        self.phase1 = cp.Problem(cp.Minimize(obj1), phase1 + bounds)
-        # the closest design: the least objective with each requirement missed
-        # by no more than phase 1 had to (bounded geometry for infeasible parts)
-        self.allowed = {k: cp.Parameter(pos=True, name=f"allow_{k}") for k in CONSTRAINTS}
-        relaxed = [terms[k] / self.allowed[k] <= 1 for k in CONSTRAINTS]
-        self.relaxed = cp.Problem(cp.Minimize(self._objective()), relaxed + bounds)
-        assert self.problem.is_dgp(dpp=True) and self.phase1.is_dgp(dpp=True) and self.relaxed.is_dgp(dpp=True)
-        point = [self.R, self.A, self.v, self.t, self.Af, self.g, self.U]
-        self._runs = {id(p): _Resolver(p, point + extra) for p, extra in
-                      ((self.problem, []), (self.phase1, list(self.slack.values())), (self.relaxed, []))}
+        (self.R, self.A, self.v, self.t, self.Af, self.g, self.U,
+         self.C, self.Fs, self.M) = (variable(n) for n in VARIABLES)
+        self.par = {k: parameter(k) for k in PARAMETERS}
+
+    def _bounds(self) -> list:
+        """What every design keeps, besides the requirements' terms."""
+        return ([self.v <= self.par["vmax"], MIN_RATIO / self.R <= 1] + self._structure_bounds() + self._gap_bounds()
+                + self._drive_bounds()
+                + [self._compliance() / self.C <= 1, (self.par["F"] + self._seal_force()) / self.Fs <= 1,
+                   self._reflected() / self.M <= 1])
 
     # expressions ------------------------------------------------------
     def _geometry(self):
@@ -307,64 +291,58 @@ class GPSizer:
         """Amplifier units, a continuous count (``_drive_bounds``)."""
         return self.U
 
-    def _objective(self):
+    def _objective_factors(self) -> list:
+        """The requested objectives, each a posynomial; the objective is their product."""
         P, R, A, v = self.par, self.R, self.A, self.v
         x, narrow, stroke = self._geometry()
         p, g = P["p"], self.g
         metal, oil, structure = self._parts()
         exprs = {
-            "mass": self._mass(),
-            "cost": (P["c0"] + geometry.MACHINING_USD_PER_KG * metal + P["coil"] * oil + P["cm"] * structure
-                     + P["uac"] * self._units()),
-            "volume": P["vol0"] + geometry.hydraulic_volume(A, narrow, p, g, stroke),
-            "power": P["pw"] * v / R,
+            "mass": self._mass,
+            "cost": lambda: (P["c0"] + geometry.MACHINING_USD_PER_KG * metal + P["coil"] * oil + P["cm"] * structure
+                             + P["uac"] * self._units()),
+            "volume": lambda: P["vol0"] + geometry.hydraulic_volume(A, narrow, p, g, stroke),
+            "power": lambda: P["pw"] * v / R,
         }
+        return [exprs[name]() for name in self.objectives]
+
+    def _objective(self):
         obj = 1
-        for name in self.objectives:
-            obj = obj * exprs[name]
+        for factor in self._objective_factors():
+            obj = obj * factor
         return obj
+
+class GPSizer(Program):
+    """The parametrised geometric program for a set of objectives, solved
+    by Clarabel through cvxpy, one combination at a time."""
+
+    def __init__(self, objectives=("mass", "cost")):
+        import cvxpy as cp
+        super().__init__(objectives, lambda n: cp.Variable(pos=True, name=n),
+                         lambda n: cp.Parameter(pos=True, name=n))
+        terms = self._constraint_terms()
+        bounds = self._bounds()
+        self.problem = cp.Problem(cp.Minimize(self._objective()), [t <= 1 for t in terms.values()] + bounds)
+        self.slack = {k: cp.Variable(pos=True, name=f"s_{k}") for k in CONSTRAINTS}
+        phase1 = [terms[k] <= self.slack[k] for k in CONSTRAINTS] + [1 / s <= 1 for s in self.slack.values()]
+        obj1 = 1
+        for s in self.slack.values():
+            obj1 = obj1 * s
+        self.phase1 = cp.Problem(cp.Minimize(obj1), phase1 + bounds)
+        # the closest design: the least objective with each requirement missed
+        # by no more than phase 1 had to (bounded geometry for infeasible parts)
+        self.allowed = {k: cp.Parameter(pos=True, name=f"allow_{k}") for k in CONSTRAINTS}
+        relaxed = [terms[k] / self.allowed[k] <= 1 for k in CONSTRAINTS]
+        self.relaxed = cp.Problem(cp.Minimize(self._objective()), relaxed + bounds)
+        assert self.problem.is_dgp(dpp=True) and self.phase1.is_dgp(dpp=True) and self.relaxed.is_dgp(dpp=True)
+        point = [self.R, self.A, self.v, self.t, self.Af, self.g, self.U]
+        self._runs = {id(p): _Resolver(p, point + extra) for p, extra in
+                      ((self.problem, []), (self.phase1, list(self.slack.values())), (self.relaxed, []))}
 
     # solving -----------------------------------------------------------
     def set(self, s: SizingInput) -> None:
-        c_large = s.n_capacitance * LARGE_SIGNAL_CAPACITANCE_FACTOR
-        unit = s.amp_unit_current if math.isfinite(s.amp_unit_current) else s.max_current
-        continuous = s.amp_unit_continuous if math.isfinite(s.amp_unit_continuous) else unit
-        speed = s.stroke / s.stroke_time
-        charge = c_large * s.rated_voltage      # C at the full rated voltage
-        f = s.strokes_per_second
-        values = {
-            "nk": s.n_stiffness, "x0": s.stack_stroke, "V0": s.rated_voltage, "vmax": s.max_fraction,
-            "F": s.force * (1 + s.margin), "S": s.stroke * (1 + s.margin), "beta": s.bulk_modulus,
-            "p": s.pressure_rating, "w2": (2 * math.pi * s.natural_frequency) ** 2,
-            "cur": s.max_current / unit,        # the most units allowed
-            "ccol": max(s.column_compliance, 1e-30),
-            "kmin": max(s.min_stiffness, 1e-30), "FL": max(s.stroke_load * (1 + s.margin), 1e-30),
-            "uramp": charge * speed / (s.stack_stroke * unit),
-            "urms": max(charge * math.sqrt(2 * f * speed / s.stack_stroke) / continuous, 1e-12),
-            "umean": max(2 * charge * f / continuous, 1e-12),
-            "m0": max(s.fixed_mass, 1e-9), "c0": max(s.fixed_cost, 1e-9), "vol0": max(s.fixed_volume, 1e-12),
-            "rho": s.oil_density, "coil": max(s.oil_cost, 1e-12),
-            # power = V * i over the ramp that reaches the free stroke at the required speed
-            "pw": c_large * s.rated_voltage**2 * speed / s.stack_stroke,
-            "E": s.youngs_modulus,
-            "pc": float(structure.plate_compliance_factor(s.poisson, "flange", s.edge_restraint)) * 12 * (1 - s.poisson**2) / (math.pi * s.youngs_modulus),
-            "ps": 3 * (3 + s.poisson) * s.n_stiffness * s.stack_stroke / (8 * math.pi * s.allowable_stress),
-            "sig": s.allowable_stress, "Ls": s.stack_length, "knk": s.stiffness_ratio * s.n_stiffness,
-            "rhom": s.material_density, "cm": max(s.material_unit_cost, 1e-9), "Apack": s.packing_area,
-            "cacc": max(s.accumulator_compliance, 1e-30), "f0": max(s.seal_f0, 1e-12),
-            "fc": max(s.seal_cp * s.force * (1 + s.margin), 1e-12), "msurf": max(s.surface_mass, 1e-12),
-            "sh": float(structure.plate_shear_compliance(1.0, s.youngs_modulus, s.poisson)),
-            "gmin": max(s.gap_allowance, 1e-9), "gfloor": max(s.wide_gap, 1e-9),
-            "tv": math.sqrt(math.pi) / structure.MINDLIN_MAX_THICKNESS_RATIO,
-            "Lmax": s.max_length, "Dmax": s.max_diameter, "Mmax": s.max_mass,
-            "wall": 2 / math.sqrt(math.pi) * (1 + s.pressure_rating / geometry.DESIGN_STRESS),
-            "uam": max(s.amp_unit_mass, 1e-12), "uac": max(s.amp_unit_cost, 1e-12),
-        }
-        for k, val in values.items():
-            val = float(val)
-            if not 0 < val < math.inf:
-                raise ValueError(f"sizing parameter {k} must be positive and finite, got {val!r}")
-            self.par[k].save_value(np.asarray(val))     # checked above; cvxpy's own check costs more than a solve
+        for k, val in parameter_values(s).items():
+            self.par[k].save_value(np.asarray(val))     # checked there; cvxpy's own check costs more than a solve
 
     def solve(self, s: SizingInput) -> SizingResult:
         """Size one combination: the optimum, or the phase-1 point with the
@@ -378,16 +356,10 @@ class GPSizer:
             return SizingResult(False, math.nan, math.nan, math.nan, status=f"phase 1 {status1}",
                                 binding=["solver"])
         slack = {k: float(self.slack[k].value) for k in CONSTRAINTS}
-        binding = sorted((k for k in CONSTRAINTS if slack[k] > FEASIBLE_SLACK), key=lambda k: -slack[k])
-        if not binding:       # phase 1 met everything: the first solve was a numerical failure
-            binding = [max(slack, key=slack.get)]
+        binding = binding_of(slack)
         point = self._point()
-        # phase 1's least miss is often reached only as the geometry grows
-        # without bound (a stiffer path needs a larger bore, and so on): the
-        # closest design of bounded size misses each binding requirement by
-        # RELAXED_MISS times as much (in log terms) and is otherwise the optimum
-        for k in CONSTRAINTS:
-            _assign(self.allowed[k], max(slack[k], 1.0) ** (RELAXED_MISS if k in binding else 1.0) * FEASIBLE_SLACK)
+        for k, allowed in allowed_misses(slack, binding).items():
+            _assign(self.allowed[k], allowed)
         if self._run(self.relaxed) in ("optimal", "optimal_inaccurate"):
             point = self._point()
         return SizingResult(False, *point, slack=slack, binding=binding, status=status)
@@ -397,11 +369,71 @@ class GPSizer:
         point[2] = min(point[2], float(self.par["vmax"].value))   # v <= v_max, within the solver's tolerance
         return tuple(point)
 
-    def _run(self, problem: cp.Problem) -> str:
+    def _run(self, problem) -> str:
         return self._runs[id(problem)].run()
 
 
-def _assign(par: cp.Parameter, value: float) -> None:
+def binding_of(slack: dict) -> list:
+    """The requirements phase 1 could not meet, worst first; when it met
+    them all (the first solve was a numerical failure), the one nearest."""
+    binding = sorted((k for k in CONSTRAINTS if slack[k] > FEASIBLE_SLACK), key=lambda k: -slack[k])
+    return binding or [max(slack, key=slack.get)]
+
+
+def allowed_misses(slack: dict, binding: list) -> dict:
+    """What the closest design may miss each requirement by. Phase 1's
+    least miss is often reached only as the geometry grows without bound
+    (a stiffer path needs a larger bore, and so on): the closest design of
+    bounded size misses each binding requirement by RELAXED_MISS times as
+    much (in log terms) and is otherwise the optimum."""
+    return {k: max(slack[k], 1.0) ** (RELAXED_MISS if k in binding else 1.0) * FEASIBLE_SLACK for k in CONSTRAINTS}
+
+
+def parameter_values(s: SizingInput) -> dict:
+    """The program's parameters for one combination, each checked positive and finite."""
+    c_large = s.n_capacitance * LARGE_SIGNAL_CAPACITANCE_FACTOR
+    unit = s.amp_unit_current if math.isfinite(s.amp_unit_current) else s.max_current
+    continuous = s.amp_unit_continuous if math.isfinite(s.amp_unit_continuous) else unit
+    speed = s.stroke / s.stroke_time
+    charge = c_large * s.rated_voltage      # C at the full rated voltage
+    f = s.strokes_per_second
+    values = {
+        "nk": s.n_stiffness, "x0": s.stack_stroke, "V0": s.rated_voltage, "vmax": s.max_fraction,
+        "F": s.force * (1 + s.margin), "S": s.stroke * (1 + s.margin), "beta": s.bulk_modulus,
+        "p": s.pressure_rating, "w2": (2 * math.pi * s.natural_frequency) ** 2,
+        "cur": s.max_current / unit,        # the most units allowed
+        "ccol": max(s.column_compliance, 1e-30),
+        "kmin": max(s.min_stiffness, 1e-30), "FL": max(s.stroke_load * (1 + s.margin), 1e-30),
+        "uramp": charge * speed / (s.stack_stroke * unit),
+        "urms": max(charge * math.sqrt(2 * f * speed / s.stack_stroke) / continuous, 1e-12),
+        "umean": max(2 * charge * f / continuous, 1e-12),
+        "m0": max(s.fixed_mass, 1e-9), "c0": max(s.fixed_cost, 1e-9), "vol0": max(s.fixed_volume, 1e-12),
+        "rho": s.oil_density, "coil": max(s.oil_cost, 1e-12),
+        # power = V * i over the ramp that reaches the free stroke at the required speed
+        "pw": c_large * s.rated_voltage**2 * speed / s.stack_stroke,
+        "E": s.youngs_modulus,
+        "pc": float(structure.plate_compliance_factor(s.poisson, "flange", s.edge_restraint)) * 12 * (1 - s.poisson**2) / (math.pi * s.youngs_modulus),
+        "ps": 3 * (3 + s.poisson) * s.n_stiffness * s.stack_stroke / (8 * math.pi * s.allowable_stress),
+        "sig": s.allowable_stress, "Ls": s.stack_length, "knk": s.stiffness_ratio * s.n_stiffness,
+        "rhom": s.material_density, "cm": max(s.material_unit_cost, 1e-9), "Apack": s.packing_area,
+        "cacc": max(s.accumulator_compliance, 1e-30), "f0": max(s.seal_f0, 1e-12),
+        "fc": max(s.seal_cp * s.force * (1 + s.margin), 1e-12), "msurf": max(s.surface_mass, 1e-12),
+        "sh": float(structure.plate_shear_compliance(1.0, s.youngs_modulus, s.poisson)),
+        "gmin": max(s.gap_allowance, 1e-9), "gfloor": max(s.wide_gap, 1e-9),
+        "tv": math.sqrt(math.pi) / structure.MINDLIN_MAX_THICKNESS_RATIO,
+        "Lmax": s.max_length, "Dmax": s.max_diameter, "Mmax": s.max_mass,
+        "wall": 2 / math.sqrt(math.pi) * (1 + s.pressure_rating / geometry.DESIGN_STRESS),
+        "uam": max(s.amp_unit_mass, 1e-12), "uac": max(s.amp_unit_cost, 1e-12),
+    }
+    for k, val in values.items():
+        val = float(val)
+        if not 0 < val < math.inf:
+            raise ValueError(f"sizing parameter {k} must be positive and finite, got {val!r}")
+        values[k] = val
+    return values
+
+
+def _assign(par, value: float) -> None:
     """A positive parameter's value: saved as it is when positive and
     finite (cvxpy's own check then passes), else through cvxpy's check."""
     if 0 < value < math.inf:
@@ -422,7 +454,7 @@ class _Resolver:
     (tests/engine/test_solve.py compares both paths); when cvxpy's compiled
     form is not available the ordinary path is used."""
 
-    def __init__(self, problem: cp.Problem, variables: list):
+    def __init__(self, problem, variables: list):
         self.problem, self.variables = problem, variables
         self.compiled = None            # (solver, cone program, log parameters, variable columns)
         self.direct = True
@@ -437,6 +469,7 @@ class _Resolver:
         return self._direct()
 
     def _cvxpy(self) -> str:
+        import cvxpy as cp
         try:
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")
@@ -495,6 +528,8 @@ class _ConeData:
 
     def __init__(self, solver, prog, base: dict, logs: list):
         from cvxpy.cvxcore.python import canonInterface
+        import scipy.sparse as sp
+        from cvxpy import settings as cvx
         from cvxpy.reductions.solvers.conic_solvers.clarabel_conif import dims_to_solver_cones
         self.solver, self.prog, self.base = solver, prog, base
         indices, indptr, shape = prog.reduced_A.problem_data_index
@@ -517,6 +552,7 @@ class _ConeData:
 
     @classmethod
     def of(cls, solver, prog, logs) -> "_ConeData | None":
+        from cvxpy import settings as cvx
         if solver.name() != "CLARABEL":     # ``solve`` speaks Clarabel's interface
             return None
         try:
@@ -540,6 +576,8 @@ class _ConeData:
     def data(self, copy: bool = True) -> dict:
         """The solver's data at the parameters' current values (``copy``
         False: A is the one matrix this object refills on every call)."""
+        import scipy.sparse as sp
+        from cvxpy import settings as cvx
         vec = self.vector()
         c = np.asarray(self.prog.q @ vec).ravel()
         flat = np.asarray(self.prog.reduced_A.reduced_mat @ vec).ravel()
@@ -557,6 +595,7 @@ class _ConeData:
     def solve(self):
         """Clarabel's solution of the program at the parameters' current values."""
         import clarabel
+        from cvxpy import settings as cvx
         data = self.data(copy=False)
         return clarabel.DefaultSolver(self.P, data[cvx.C], data[cvx.A], data[cvx.B], self.cones,
                                       self.settings).solve()

@@ -17,7 +17,8 @@ from ...physics import amplifier, geometry, stack as stack_phys, structure, ther
 from ...physics.bouc_wen import BoucWen
 from . import force_path
 from ...engine import stage_cache
-from .convex import GPSizer, SizingInput, SizingResult
+from .batch_sizer import BatchSizer
+from .convex import SizingInput, SizingResult
 from .parts import Candidates, part_row, reference_bouc_wen, stack_bouc_wen, structure_row
 from ...engine.rank import ceiling_margin, floor_margin
 from ...engine.records import frozen
@@ -110,15 +111,19 @@ def size(b: PiezoBrief, catalog, combos, progress=None, keep=None):
     accumulator adds its compliance to the force path; every compensator
     its mass and cost to the objective). ``keep(combo, variant)``: the
     variants to size (all by default)."""
-    sizer = _sizer(tuple(b.objectives))
-    out = []
+    rows = variant_inputs(b, catalog, combos, keep)
+    _progress(progress, "sizing", 0, len(combos))
+    results = _solved(tuple(b.objectives), [s for _, _, s in rows])
+    _progress(progress, "sizing", len(combos), len(combos))
+    return [(c, v, res) for (c, v, _), res in zip(rows, results)]
+
+
+def variant_inputs(b: PiezoBrief, catalog, combos, keep=None) -> list[tuple[Combo, Variant, SizingInput]]:
+    """Each combination with each variant ``keep(combo, variant)`` keeps (all
+    by default), and the program's input for it, in the order ``size`` sizes them."""
     vs = variants(b, catalog)
-    for i, c in enumerate(combos):
-        out.extend((c, v, _solved(sizer, sizing_input(b, c, v.material, v.compensator)))
-                   for v in vs if keep is None or keep(c, v))
-        if i % 8 == 0 or i == len(combos) - 1:
-            _progress(progress, "sizing", i + 1, len(combos))
-    return out
+    return [(c, v, sizing_input(b, c, v.material, v.compensator)) for c in combos for v in vs
+            if keep is None or keep(c, v)]
 
 
 def designs(b: PiezoBrief, catalog, sized) -> list[PiezoDesign]:
@@ -146,19 +151,26 @@ def designs(b: PiezoBrief, catalog, sized) -> list[PiezoDesign]:
     return as_built + _build(b, passive, spacer)
 
 
-def _solved(sizer: GPSizer, s: SizingInput) -> SizingResult:
-    """``sizer.solve(s)``, read back when the same program was solved inside
-    ``stage_cache.reuse()`` (the re-solves behind the flips); outside it
+def _solved(objectives: tuple, inputs: list[SizingInput]) -> list[SizingResult]:
+    """Every input sized (``batch_sizer.BatchSizer``, all at once); inside
+    ``stage_cache.reuse()`` (the re-solves behind the flips) an input
+    solved before is read back and only the rest are solved. Outside it
     nothing is kept, so no key is built (a key copies every input field)."""
     if not stage_cache.active():
-        return sizer.solve(s)
-    return stage_cache.cached(stage_cache.gp_key(sizer.objectives, s), lambda: sizer.solve(s))
+        return _sizer(objectives).solve(inputs)
+    keys = [stage_cache.gp_key(objectives, s) for s in inputs]
+    out = [stage_cache.lookup(k) for k in keys]
+    todo = [i for i, res in enumerate(out) if res is None]
+    for i, res in zip(todo, _sizer(objectives).solve([inputs[i] for i in todo])):
+        out[i] = res
+        stage_cache.remember(keys[i], res)
+    return out
 
 
 @lru_cache(maxsize=8)
-def _sizer(objectives: tuple) -> GPSizer:
-    """One program per objective set, compiled once per process."""
-    return GPSizer(list(objectives))
+def _sizer(objectives: tuple) -> BatchSizer:
+    """One set of programs per objective set, laid out once per process."""
+    return BatchSizer(objectives)
 
 
 def resize_passive(b: PiezoBrief, catalog, built: list[PiezoDesign]) -> list[PiezoDesign]:
@@ -169,12 +181,12 @@ def resize_passive(b: PiezoBrief, catalog, built: list[PiezoDesign]) -> list[Pie
     (its spacer from the re-sized geometry's own budget), so re-verifying
     its sizing reproduces it. Other designs are returned as they are."""
     spacer = force_path.spacer_material(catalog.materials)
-    sizer = _sizer(tuple(b.objectives))
     idx = [i for i, d in enumerate(built) if d.variant.passive and d.built]
+    again = _solved(tuple(b.objectives), [sizing_input(b, built[i].combo, built[i].variant.material, None, spacer,
+                                                       built[i].spacer) for i in idx])
     triples = []
-    for i in idx:
+    for i, res in zip(idx, again):
         d = built[i]
-        res = _solved(sizer, sizing_input(b, d.combo, d.variant.material, None, spacer, d.spacer))
         triples.append((d.combo, d.variant.as_built(), res if math.isfinite(res.wide_area) else d.gp))
     again = {d.origin: d for d in designs(b, catalog, triples) if d.variant.passive}
     out = list(built)

@@ -55,7 +55,7 @@ def cpu() -> float:
 
 
 def seed_inputs():
-    from sizing.engine.records import PiezoBrief
+    from sizing.technologies.piezohydraulic.records import PiezoBrief
     from sizing.io.catalog import load_catalog
     from sizing.io.requirements import load_requirements
     from sizing.technologies.piezohydraulic.designs import variant_inputs

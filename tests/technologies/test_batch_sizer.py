@@ -10,7 +10,7 @@ import math
 import numpy as np
 import pytest
 
-from sizing.engine.records import PiezoBrief
+from sizing.technologies.piezohydraulic.records import PiezoBrief
 from sizing.io.catalog import load_catalog
 from sizing.io.requirements import load_requirements
 from sizing.technologies.piezohydraulic import batch_gp, batch_sizer

@@ -5,8 +5,11 @@ simulates "measured" runs with each library effect injected at each of its
 two realistic sizes (and null runs with no effect), with the noise level
 estimated from the campaign, diagnoses each without being told which, and tabulates the
 confusion matrix: true effect (rows) against the verdict (columns; "none"
-for a null verdict). It tells whether a test campaign can tell the effects
-apart before anyone trusts a verdict on real data.
+for a null verdict), and which effects the campaign can tell at all
+(``can_tell``: the sizes named right, and the verdicts of the others,
+"undetectable" when an injected effect stayed within the floors). It
+tells whether a test campaign can tell the effects apart before anyone
+trusts a verdict on real data.
 """
 from __future__ import annotations
 
@@ -31,6 +34,7 @@ class Case:
     predicted: str
     shrink: float
     seconds: float
+    status: str = ""
 
 
 @dataclass
@@ -56,6 +60,21 @@ class CheckResult:
         null = [c for c in self.cases if c.truth == NONE]
         return float(np.mean([c.predicted != NONE for c in null])) if null else float("nan")
 
+    def can_tell(self) -> dict:
+        """{effect: (sizes named right, sizes tried, statuses of the others)}:
+        which effects this campaign's excitations, noise and holdout can
+        tell. An effect named at neither size is one the campaign cannot
+        tell at those sizes: "undetectable" when its gap stayed within the
+        floors, a wrong name or "unexplained" otherwise."""
+        out = {}
+        for c in self.cases:
+            if c.truth == NONE:
+                continue
+            right, tried, other = out.get(c.truth, (0, 0, ()))
+            ok = c.predicted == c.truth
+            out[c.truth] = (right + ok, tried + 1, other if ok else other + (c.status or c.predicted,))
+        return out
+
     @property
     def median_shrink(self) -> float:
         good = [c.shrink for c in self.cases if c.truth != NONE and c.predicted == c.truth]
@@ -69,12 +88,18 @@ class CheckResult:
                  "|---|" + "---|" * len(short)]
         for name, row in zip(self.labels, M):
             lines.append(f"| {name} | " + " | ".join(str(v) if v else "." for v in row) + " |")
+        told = self.can_tell()
+        lines += ["", "| effect | sizes told | the others |", "|---|---|---|"]
+        for name, (right, tried, other) in told.items():
+            lines.append(f"| {name} | {right}/{tried} | {', '.join(other) or '-'} |")
         return "\n".join(lines)
 
     def to_json(self) -> dict:
         return {"kind": self.kind, "labels": self.labels, "matrix": self.matrix().tolist(),
                 "accuracy": self.accuracy, "null_false_positive_rate": self.null_false_positive,
                 "median_shrink_correct": self.median_shrink,
+                "can_tell": {k: {"sizes_told": r, "sizes_tried": n, "others": list(o)}
+                             for k, (r, n, o) in self.can_tell().items()},
                 "cases": [c.__dict__ for c in self.cases]}
 
 
@@ -116,7 +141,7 @@ def check_case(kind: str, rig, inputs: dict, holdout: list[str], noise: Noise, n
         runs = synthesize(kind, rig, inputs, [effect], [effect.sizes_for(rig, model)[k]], noise=case_noise)
     d = diagnose_runs(kind, rig, runs, holdout, seed=seed)
     return Case(effect.name if effect else NONE, k, d.verdict["effect"] or NONE, float(d.verdict["shrink_holdout"]),
-                d.seconds)
+                d.seconds, d.verdict["status"])
 
 
 def _one_thread_worker() -> None:

@@ -13,7 +13,7 @@ import numpy as np
 
 from ..errors import InputError
 from . import attribution, judge, where
-from .floor import form_floor, noise_floor, total_floor
+from .floor import campaign_form_floor, form_floor, noise_floor, total_floor
 from .bench import Bench
 from .effects import library
 from .recalibrate import DEFAULT, nuisance, recalibrate as recalibrate_model
@@ -117,6 +117,22 @@ def floors_by_channel(bench, nominal, noise_position: float, forms, settings: Se
     return out
 
 
+def stated_form_floor(verdict: Verdict, campaign: float | None, settings: Settings = DEFAULT_SETTINGS) -> Verdict:
+    """The verdict with the position's model-form floor stated: the prior
+    it was judged against and the campaign's own reading
+    (floor.campaign_form_floor), in ``form_floor_position``; an
+    "undetectable" verdict says both in its reason."""
+    stated = {"prior": settings.form_floor_prior, "campaign": campaign,
+              "campaign_from": "the best fitted candidate's training NRMSE beyond the training runs' noise floor"}
+    verdict = verdict.with_details(form_floor_position=stated)
+    if verdict.status != "undetectable" or campaign is None:
+        return verdict
+    return verdict.replace(reasons=verdict.reasons + (
+        f"the model-form floor of the position is the prior {settings.form_floor_prior:g} of the span "
+        f"(settings.form_floor_prior); on this campaign the library's best account leaves {campaign:.4f} on the "
+        f"training runs beyond their noise",))
+
+
 def diagnose_runs(kind: str, rig, runs, holdout: list[str], recalibrate: list[str] | None = None,
                   seed: int = 0, pairs: bool = True, settings: Settings = DEFAULT_SETTINGS) -> Diagnosis:
     """``recalibrate``: None re-fits the default parameters (recalibrate.DEFAULT)
@@ -163,10 +179,11 @@ def diagnose_runs(kind: str, rig, runs, holdout: list[str], recalibrate: list[st
     inputs = dict(baseline_holdout=base_ho, floor_holdout=floor_ho, fits=fits, baseline_blocks=base_blocks,
                   seed=seed, run_length=shortest, line=line, form_floor=form_ho, channels=channels)
     verdict = judge.verdict(**inputs, settings=settings)
+    verdict = stated_form_floor(verdict, campaign_form_floor(fits, floor, bench.train), settings)
     floors = {c: {k: v for k, v in ch.items() if k != "blocks"} for c, ch in channels.items()}
     named = verdict.status in ("explained", "partial") and best_sim is not None
     left = (where.gap_map(bench, best_sim if named else nominal, max_entries=5)
-            if named or verdict.status == "unexplained" else None)
+            if named or verdict.status in ("unexplained", "undetectable") else None)
     verdict = verdict.with_details(floors=floors, **({} if left is None else {"remaining": [
         {k: e[k] for k in ("run", "label", "share", "t_start_s", "t_end_s", "channel")} for e in left]}))
     return Diagnosis(kind=kind, bench=bench, baseline_sim=sims, baseline_nrmse=base, baseline_holdout=base_ho,

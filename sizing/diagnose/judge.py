@@ -12,8 +12,9 @@ Verdict (all measures are the combined measure of bench.py, holdout runs):
   (decided first, before the line rule), unless the holdout gap has a
   spectral line that the best candidate removes (``narrowband_gap``):
   then the line rule below judges it;
-- "unexplained" (named nothing) as well when the baseline is within
-  ``gap_factor`` x the floor (noise and model form together), unless the
+- "undetectable" (named nothing) when the baseline is above that but within
+  ``gap_factor`` x the floor (noise and model form together; "unexplained"
+  when the gap has a line no candidate removes), unless the
   holdout gap has a spectral line (gap_lines, a narrow band the
   broadband model-form floor does not cover): then the best candidate is
   judged on the share of the lines' energy it removes (line rule);
@@ -428,13 +429,23 @@ def nothing_fitted(ev: Evidence) -> Verdict | None:
 def within_form_floor(ev: Evidence) -> Verdict | None:
     """Above the noise but within ``gap_factor`` x the floor with model form,
     and judged neither on lines nor on the noise alone: no effect is blamed
-    for what a nominal of another form leaves."""
+    for what a nominal of another form leaves. The status is
+    "undetectable": the data show a gap beyond the noise, of a size that
+    the difference between two faithful simulators of the rig also
+    leaves, so no effect of that size can be told on this campaign (an
+    effect there may be real: a larger one, or a campaign whose best
+    account leaves the noise, ``noise_matched``, would tell it). A gap with
+    a spectral line that no candidate removes stays "unexplained": the
+    broadband model-form floor does not cover a line."""
     if not ev.in_band or ev.basis != "gap":
         return None
-    return ev.null("within_form_floor",
-                   f"the gap ({ev.baseline:.4f}) is above the noise floor but within {ev.settings.gap_factor:g} x "
-                   f"the model-form floor {ev.floor:.4f}: no effect is blamed for what a nominal of "
-                   f"another form leaves")
+    lined = "line" in ev.details
+    verdict = ev.null("within_form_floor",
+                      f"the gap ({ev.baseline:.4f}) is above the noise floor but within {ev.settings.gap_factor:g} x "
+                      f"the model-form floor {ev.floor:.4f}: no effect is blamed for what a nominal of "
+                      f"another form leaves" + ("" if lined else "; an effect of this size cannot be told on "
+                                                                  "this campaign"))
+    return verdict if lined else verdict.replace(status="undetectable")
 
 
 def explains(ev: Evidence) -> Verdict | None:

@@ -20,22 +20,33 @@ noise and keeps the corners:
 3. backward pruning: knots whose removal raises the residual sum of squares
    by less than ``knot_penalty`` log(n) sigma^2 are removed (a BIC-like
    penalty for a knot's slope change and position);
-4. accepted only when the residual rms is within ``piecewise_accept`` x the white noise
-   sigma; otherwise (a sine, a chirp, a measured waveform) ``None``, and
+4. each knot moved to its best position between samples (``refine``)
+   before the pruning and after each of its two passes: a commanded corner falls between
+   two log samples, and on a fast ramp against the log rate (220 V/s
+   logged at 500 Hz: 0.44 V a sample) a knot held to a sample misplaces
+   it by up to half a sample, 0.2 V, seven times a 0.03 V noise; the
+   pruning then keeps spurious knots next to it that bend the holds
+   either side (on such a ramp-and-hold log, 28 knots for 16 corners and
+   0.021 V rms from the clean command; with the knots between samples,
+   18 knots and 0.004 V);
+5. accepted only when the residual rms is within ``piecewise_accept`` x the white noise
+   sigma (and, before the knots are moved, within ``piecewise_screen`` x that:
+   a quick refusal of a sine or a chirp); otherwise (a sine, a chirp, a measured waveform) ``None``, and
    the caller keeps its smoother.
 """
 from __future__ import annotations
 
 import numpy as np
 from scipy.linalg import solve_banded
-from scipy.ndimage import gaussian_filter1d, maximum_filter1d, median_filter
+from scipy.ndimage import convolve1d, gaussian_filter1d, maximum_filter1d, median_filter
 
 from .settings import DEFAULT
 
 
 def hat_fit(v: np.ndarray, knots: np.ndarray) -> np.ndarray:
     """Least-squares continuous piecewise-linear fit of v with nodes at the
-    sorted sample indices ``knots`` (first 0, last len(v) - 1)."""
+    sorted positions ``knots`` in samples (first 0, last len(v) - 1; the
+    others may fall between samples)."""
     t = np.arange(len(v))
     m = len(knots)
     j = np.clip(np.searchsorted(knots, t, side="right") - 1, 0, m - 2)
@@ -66,16 +77,28 @@ def best_hinge(v: np.ndarray, i: int, s: int) -> int:
     return int(taus[np.argmin(rss)])
 
 
+def curvature_kernel(scale: int) -> np.ndarray:
+    """The Gaussian second-derivative kernel of standard deviation ``scale``
+    samples (truncated at 4 of them), less its mean: truncated, the kernel
+    sums to -8.7e-5 at 2 samples, so a hold at 150 V answered -0.013 V, as
+    much as five times a 0.03 V noise's response, and a flat response is its
+    own local maximum at every sample: every sample of a high hold was a
+    kink. Zero-sum and symmetric, it answers neither a level nor a slope."""
+    impulse = np.zeros(8 * scale + 1)
+    impulse[4 * scale] = 1.0
+    kernel = gaussian_filter1d(impulse, scale, order=2)
+    return kernel - kernel.mean()
+
+
 def kink_candidates(v: np.ndarray, sigma: float) -> list[int]:
     """Sample indices of the kinks the second-derivative responses see."""
     found = set()
     for s in DEFAULT.kink_scales:
         if 8 * s > len(v):
             continue
-        response = np.abs(gaussian_filter1d(v, s, order=2, mode="nearest"))
-        impulse = np.zeros(8 * s + 1)
-        impulse[4 * s] = 1.0
-        noise = sigma * float(np.linalg.norm(gaussian_filter1d(impulse, s, order=2)))
+        kernel = curvature_kernel(s)
+        response = np.abs(convolve1d(v, kernel, mode="nearest"))
+        noise = sigma * float(np.linalg.norm(kernel))
         peaks = (response == maximum_filter1d(response, 2 * s + 1)) & (response > DEFAULT.kink_sigmas * noise)
         found.update(best_hinge(v, int(i), s) for i in np.flatnonzero(peaks))
     merged = []
@@ -104,6 +127,70 @@ def prune(v: np.ndarray, knots: np.ndarray, penalty: float) -> np.ndarray:
     return knots
 
 
+def refine(v: np.ndarray, knots: np.ndarray, sigma: float, reach: float = 1.5, sweeps: int = 3) -> np.ndarray:
+    """The knots, each moved (in turn, the others held) to the position
+    within ``reach`` samples, between its neighbours, where the fit is best:
+    a search on the fit of the stretch from the third knot before it to the
+    third after it (the fit's dependence on one knot's position is local;
+    the stretch's two end knots are rounded to samples). The best position
+    of one knot depends on where its neighbours are: up to ``sweeps``
+    passes, until no knot moves by 0.05 sample. Only the knots whose slope
+    change d (per sample) exceeds the noise ``sigma`` are moved: a knot
+    misplaced by half a sample errs by up to d / 2 on its nearest samples,
+    less than half the noise below that (the many gentle knots of a
+    signal that is not piecewise linear, a sine, are left where they
+    are), and a knot moves only when that lowers the squared error by more
+    than log(n) sigma^2, the BIC price of one parameter: a corner on a
+    sample stays there rather than follow the noise (on a staircase logged
+    at 1 kHz, moved by the noise alone, the fit erred by 0.038 V for 0.028 V
+    on the samples)."""
+    knots = np.asarray(knots, float).copy()
+    for _ in range(sweeps):
+        before = knots.copy()
+        knots = _refine_sweep(v, knots, sigma, reach)
+        if np.max(np.abs(knots - before), initial=0.0) < 0.05:
+            break
+    return knots
+
+
+def _refine_sweep(v: np.ndarray, knots: np.ndarray, sigma: float, reach: float) -> np.ndarray:
+    from scipy.optimize import minimize_scalar
+
+    knots = knots.copy()
+    last = len(knots) - 1
+    fit = hat_fit(v, knots)
+    nodes = np.interp(knots, np.arange(len(v)), fit)
+    bends = np.abs(np.diff(np.diff(nodes) / np.diff(knots)))      # slope change at knots 1..last-1
+    for i in range(1, last):
+        if bends[i - 1] <= sigma:
+            continue
+        # a sample at least between two knots, so that every node is determined
+        lo, hi = max(knots[i - 1] + 1.0, knots[i] - reach), min(knots[i + 1] - 1.0, knots[i] + reach)
+        if hi <= lo:
+            continue
+        first, end = max(i - 3, 0), min(i + 3, last)
+        a, b = int(np.floor(knots[first])), int(np.ceil(knots[end]))
+        local = knots[first:end + 1] - a
+        local[0], local[-1] = 0.0, float(b - a)
+        j = i - first
+        piece = v[a:b + 1]
+
+        def rss(x):
+            k = local.copy()
+            k[j] = x - a
+            return float(np.sum((piece - hat_fit(piece, k)) ** 2))
+
+        # the fit's error is not convex in a knot's position (it bends at
+        # each sample): a grid of tenths of a sample, then the bracket
+        grid = np.linspace(lo, hi, max(int(np.ceil((hi - lo) / 0.1)) + 1, 2))
+        start = grid[int(np.argmin([rss(x) for x in grid]))]
+        best = minimize_scalar(rss, bounds=(max(start - 0.1, lo), min(start + 0.1, hi)), method="bounded",
+                               options={"xatol": 0.005})
+        if best.fun < rss(knots[i]) - np.log(len(v)) * sigma ** 2:
+            knots[i] = best.x
+    return knots
+
+
 def steps(v: np.ndarray, sigma: float) -> np.ndarray:
     """Indices i of the steps between samples i and i + 1: a change that
     stands ``jump_sigmas`` x the noise out of the local slope (the median change
@@ -123,9 +210,14 @@ def piecewise_linear(v: np.ndarray, sigma: float) -> np.ndarray | None:
     if len(candidates) > n // 10:
         return None                              # no sparse set of corners: not this kind of signal
     knots = np.array(sorted(candidates | {0, n - 1}))
+    if np.mean((v - hat_fit(v, knots)) ** 2) > (DEFAULT.piecewise_screen * DEFAULT.piecewise_accept * sigma) ** 2:
+        return None                              # far from any line through these corners: not worth refining
+    knots = refine(v, knots, sigma)
     if np.mean((v - hat_fit(v, knots)) ** 2) > (DEFAULT.piecewise_accept * sigma) ** 2:
         return None
-    knots = prune(v, knots, DEFAULT.knot_penalty * np.log(n) * sigma ** 2)
+    penalty = DEFAULT.knot_penalty * np.log(n) * sigma ** 2
+    knots = refine(v, prune(v, knots, penalty), sigma)
+    knots = refine(v, prune(v, knots, penalty), sigma)
     fit = hat_fit(v, knots)
     if np.sqrt(np.mean((v - fit) ** 2)) > DEFAULT.piecewise_accept * sigma:
         return None

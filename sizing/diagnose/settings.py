@@ -45,6 +45,7 @@ class Settings:
     min_periods: float = 1.0       # a run lasts at least this x the longest effect time constant
     rest_half_width: int = 10      # samples either side that must be at rest too (the at-rest noise)
     # the logged voltage's treatment (inputs.py, piecewise.py)
+    noise_clip: float = 4.0       # a voltage difference beyond this x its robust sigma is a step or a corner, not noise
     smooth_samples: float = 4.0    # sigma of the zero-phase Gaussian low-pass, samples
     reversal_sigmas: float = 6.0   # a reversal moves by more than this x the voltage noise
     jump_sigmas: float = 8.0       # a jump: a change this x the noise away from the local slope
@@ -52,6 +53,7 @@ class Settings:
     kink_sigmas: float = 5.0       # a kink: the detector's response above this x its own noise
     knot_penalty: float = 4.0      # a knot is kept when it lowers the squared error by this x log(n) sigma^2
     piecewise_accept: float = 1.15  # a piecewise-linear fit is kept when its residual rms is within this x the noise
+    piecewise_screen: float = 3.0  # ... and, on knots held to samples, within this x that (else not tried further)
     merge_samples: int = 2         # kink candidates this close are one kink
 
     def varied(self, name: str, factor: float) -> "Settings":

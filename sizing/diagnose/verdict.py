@@ -15,13 +15,13 @@ import dataclasses
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
-STATUSES = ("explained", "partial", "unexplained", "no_significant_gap")
+STATUSES = ("explained", "partial", "unexplained", "no_significant_gap", "undetectable")
 
 
 @dataclass(frozen=True, eq=False)
 class Verdict(Mapping):
     """status: one of STATUSES; effect: the family named ("a+b" for a pair;
-    None for the two null statuses); form: its form; shrink: the holdout
+    None for the three statuses that name nothing); form: its form; shrink: the holdout
     shrink of the measure it was judged on (0 when nothing is named);
     separation: the block-bootstrap test ({"test", "p_vs_baseline",
     "p_vs_runner_up", "alpha"}) or None when no candidate was judged;

@@ -53,7 +53,7 @@ def _line(removed):
     (0.0012, _line(0.5), 0.0009, "no_significant_gap"),   # within 1.5 x the noise floor, a line only halved
     (0.0025, _line(0.9), 0.0015, "explained"),   # within 1.5 x the floor, above the noise: the line rule
     (0.0025, _line(0.1), 0.0015, "unexplained"),  # a line nothing removes: no effect is blamed
-    (0.0025, None, 0.0015, "unexplained"),       # no line: within the model-form floor, no effect is blamed
+    (0.0025, None, 0.0015, "undetectable"),      # no line: within the model-form floor, no effect is blamed
     (0.0025, None, 0.0009, "explained"),         # ... unless the best leaves only the noise (noise_matched)
 ])
 def test_the_line_rule_acts_between_the_noise_and_the_model_form_floor(baseline, line, best, status):
@@ -84,7 +84,7 @@ def test_a_noise_matched_candidate_must_be_separated_from_the_runner_up():
     fits[0].nrmse_holdout, fits[1].nrmse_holdout = 0.0009, 0.00095
     fits[1].residual_blocks = fits[0].residual_blocks.copy()
     v = judge.verdict(0.0025, 0.001, fits, np.full(40, 10.0), run_length=2.0)
-    assert v["status"] == "unexplained" and v["effect"] is None
+    assert v["status"] == "undetectable" and v["effect"] is None
 
 
 @pytest.mark.parametrize("best,status", [

@@ -2,10 +2,16 @@
 is compared through its lightest design that misses only one check."""
 import pytest
 
-from sizing.engine.comparison import technology_comparison
+from sizing.engine.candidate import Candidate
+from sizing.engine.comparison import technology_comparison as _comparison
 from sizing.io.requirements import load_requirements
 
 from ..conftest import STUDIES
+
+
+def technology_comparison(req, cands, *args, **kwargs):
+    """The comparison of the candidates these records stand for."""
+    return _comparison(req, [Candidate.from_dict(c) for c in cands], *args, **kwargs)
 
 
 def _cand(id_, tech, feasible, margins, mass, rank, stage="simulated"):

@@ -105,9 +105,9 @@ def run_solve(requirements_path, catalog_dir=None, baseline=None, progress=None,
     results = dict(out.results, catalog_dir=str(cat.folder.resolve()))
     from ..studies import compliance
     if fast:
-        compliance.attach_fast(results, req)
+        results = compliance.attach_fast(results, req)
     else:
-        compliance.attach(req, cat, results, out.stages)
+        results = compliance.attach(req, cat, results, out.stages)
     if studied is not None:
         results = _with_compliance(results, studied)
     if old is not None:

@@ -107,13 +107,26 @@ def knife_edges(cand: dict) -> dict:
             if v is not None and math.isfinite(v) and 0 <= v < KNIFE_EDGE}
 
 
-def attach(req, catalog, results: dict, stages=None) -> None:
-    """Each technology's best design gets its ``compliance``, the summary its
-    ``recommended`` design under the policy, and the one-sentence answer
-    says what the policy changed (results are changed in place)."""
+def _with_comparison(results: dict, comp: dict, **fields) -> dict:
+    """New results with the comparison ``comp`` (and ``fields``)."""
+    return dict(results, summary=dict(results["summary"], comparison=comp), **fields)
+
+
+def _comparison_copy(results: dict) -> tuple[dict, dict]:
+    """A copy of the results' comparison to state the policy in, and its
+    technologies' entries (copies too)."""
+    comp = dict(results["summary"]["comparison"])
+    comp["technologies"] = {name: dict(t) for name, t in comp["technologies"].items()}
+    return comp, comp["technologies"]
+
+
+def attach(req, catalog, results: dict, stages=None) -> dict:
+    """New results in which each technology's best design has its
+    ``compliance``, the summary its ``recommended`` design under the policy,
+    and the one-sentence answer says what the policy changed."""
     start = time.perf_counter()
-    comp = results["summary"]["comparison"]
-    techs, cands = comp["technologies"], results["candidates"]
+    comp, techs = _comparison_copy(results)
+    cands = results["candidates"]
     by_id = {c["id"]: c for c in cands}
     study = Study(req, catalog, stages)
     nominal = _nominal(techs, by_id, req)
@@ -122,20 +135,22 @@ def attach(req, catalog, results: dict, stages=None) -> None:
         t["compliance"] = study.compliance(by_id[t["best"]]) if t["best"] in by_id else None
         t["knife_edges"] = knife_edges(by_id.get(t["best"], {}))
     comp["recommended"] = _recommended(study, nominal, chosen, examined)
-    _restate_flips(req, catalog, results, chosen, nominal, study.target)
+    _restate_flips(req, catalog, cands, techs, chosen, nominal, study.target)
     comp["recommendation"] = _sentence(techs, req, comp["recommended"], chosen, nominal, study)
-    results["compliance_s"] = time.perf_counter() - start
+    return _with_comparison(results, comp, compliance_s=time.perf_counter() - start)
 
 
-def attach_fast(results: dict, req) -> None:
-    """``--fast``: the nominal recommendation, every ``compliance`` null."""
-    comp = results["summary"]["comparison"]
+def attach_fast(results: dict, req) -> dict:
+    """``--fast``: new results with the nominal recommendation, every
+    ``compliance`` null."""
+    comp, techs = _comparison_copy(results)
     by_id = {c["id"]: c for c in results["candidates"]}
-    for t in comp["technologies"].values():
+    for t in techs.values():
         t["compliance"] = None
         t["knife_edges"] = knife_edges(by_id.get(t["best"], {}))
-    nominal = _nominal(comp["technologies"], by_id, req)
+    nominal = _nominal(techs, by_id, req)
     comp["recommended"] = None if nominal is None else dict(_entry(nominal, None), knife_edges=knife_edges(nominal))
+    return _with_comparison(results, comp)
 
 
 def _nominal(techs: dict, by_id: dict, req) -> dict | None:
@@ -168,12 +183,12 @@ def _policy(study: Study, cands: list[dict], nominal: dict | None, req) -> tuple
     return None, examined
 
 
-def _restate_flips(req, catalog, results: dict, chosen, nominal, target: float) -> None:
+def _restate_flips(req, catalog, candidates, techs: dict, chosen, nominal, target: float) -> None:
     """The recommendation's flips made those of the design recommended
-    under the policy (``flip.restate``): searched anew when the policy picked
-    another design than the nominal lightest they were searched for."""
+    under the policy (``flip.restate``, in ``techs``, the copy ``attach``
+    states the policy in): searched anew when the policy picked another
+    design than the nominal lightest they were searched for."""
     from ..engine import flip
-    techs = results["summary"]["comparison"]["technologies"]
     pick = chosen or nominal
     if pick is None:
         flip.restate(techs, None, flip.held_text(target, None, False))
@@ -182,7 +197,7 @@ def _restate_flips(req, catalog, results: dict, chosen, nominal, target: float) 
     if pick is not nominal:
         def redo():
             from ..engine.solve import technology_stages
-            return flip.policy_flips(req, catalog, results["candidates"], techs, pick, technology_stages())
+            return flip.policy_flips(req, catalog, candidates, techs, pick, technology_stages())
     flip.restate(techs, pick, flip.held_text(target, chosen is not None, pick is nominal), redo)
 
 

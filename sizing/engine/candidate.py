@@ -5,9 +5,9 @@ that record, field for field and in the same order, only where results are
 written (``to_dict``).
 
 The fields every technology's record has (docs/formats.md, results.json)
-are typed attributes; what a technology adds of its own (the piezohydraulic
-force path, the DC structure, the pump's valve resonance, ...) stays in
-``own``, in its record's order. The ranking (``with_fields``: feasible,
+are typed attributes; what a technology adds of its own (a force path, a
+structure, a valve's resonance, ...) stays in ``own``, in its record's
+order. The ranking (``with_fields``: feasible,
 driver, rank, pareto), the names and the probability of compliance give
 new candidates; none is changed after it is made.
 

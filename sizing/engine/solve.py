@@ -28,7 +28,7 @@ from .solve_summary import _assumptions, _clean, _requirements_si, _summary, _tr
 
 @dataclass(frozen=True)
 class SolveOutput:
-    results: dict                                  # results.json
+    results: dict                                  # results.json, its candidates ``Candidate``s (``api`` writes it)
     traces: list = field(default_factory=list)     # time traces of the top designs, for the report
     stages: Stages = Stages()                      # the records behind the results (robust takes them)
 
@@ -62,8 +62,14 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
         results = _keep_verified(results)
     results["summary"]["counts"] = summary_counts(results)
     results["runtime_s"] = time.perf_counter() - start
-    return SolveOutput(results=_clean(dict(results, candidates=records(results["candidates"]))), traces=traces,
-                       stages=stages)
+    return SolveOutput(results=_json_safe(results), traces=traces, stages=stages)
+
+
+def _json_safe(results: dict) -> dict:
+    """The results with every figure as results.json holds it (numpy to
+    Python, non-finite floats null), the candidates still ``Candidate``s."""
+    clean = _clean(dict(results, candidates=records(results["candidates"])))
+    return dict(clean, candidates=[Candidate.from_dict(c) for c in clean["candidates"]])
 
 
 def _results(req, requirements_sha256, catalog, cases, candidates, outcomes, disagreements) -> dict:

@@ -72,10 +72,14 @@ class Candidate(Mapping):
     def with_fields(self, **fields) -> "Candidate":
         """A new candidate with ``fields`` given (a field it lacked is added
         after the others, as ``dict(record, **fields)`` would)."""
-        typed = {k: _typed(k, v) for k, v in fields.items() if k in TYPED}
         own = {k: v for k, v in fields.items() if k not in TYPED}
-        order = self.order + tuple(k for k in fields if k not in self.order)
-        return dataclasses.replace(self, **typed, own={**self.own, **own} if own else self.own, order=order)
+        new = object.__new__(type(self))        # a copy, its fields set once here: a frozen dataclass's way
+        state = new.__dict__
+        state.update(self.__dict__)
+        state.update((k, _typed(k, v)) for k, v in fields.items() if k in TYPED)
+        state["own"] = {**self.own, **own} if own else self.own
+        state["order"] = self.order + tuple(k for k in fields if k not in self.order)
+        return new
 
     # --- read as its record -------------------------------------------------
     def __getitem__(self, key: str):

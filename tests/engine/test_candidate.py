@@ -69,3 +69,33 @@ def test_a_candidate_is_frozen_and_changes_make_new_ones():
     assert named.to_dict() == dict(PRUNED, feasible=False, driver="stroke", rank=2, pareto=False,
                                    pareto_level=None, name="2xP056", extra_figure=1.5)
     assert named.own["extra_figure"] == 1.5 and "extra_figure" not in c.own
+
+
+def test_a_solve_hands_out_its_technologies_records_ranked_and_named():
+    """The candidates of a solve are built once from each technology's
+    records: each gives back its technology's record field for field (JSON
+    safe), then its standing, the assumed values it rests on and its name."""
+    import tomllib
+
+    from sizing.engine.loads import load_cases
+    from sizing.engine.solve import solve
+    from sizing.engine.solve_summary import _clean
+    from sizing.io.requirements import parse_requirements
+    from sizing.technologies.registry import technologies
+
+    from ..conftest import FAST_REQUIREMENTS, ONE_DESIGN, subset_catalog
+    req = parse_requirements(tomllib.loads(FAST_REQUIREMENTS), "req.toml")
+    catalog = subset_catalog(**ONE_DESIGN)
+    out = solve(req, "x", catalog, detail="full", fast=True)
+    loads = [c["load_N"] for c in load_cases(req.load)]
+    own = {r["id"]: _clean(r) for t in technologies() for r in t.solve(req, catalog, loads, None, "full")[0].candidates}
+    cands = out.results["candidates"]
+    assert cands and all(isinstance(c, Candidate) for c in cands)
+    assert {c.id for c in cands} == set(own)
+    added = ["feasible", "driver", "rank", "pareto", "pareto_level", "rests_on_assumed", "name"]
+    for c in cands:
+        record, theirs = c.to_dict(), own[c.id]
+        assert list(record) == list(theirs) + [k for k in added if k not in theirs]
+        assert {k: record[k] for k in theirs} == theirs
+        assert [c.rank, c.name] == [record["rank"], record["name"]] and c.name
+    assert [c.rank for c in cands] == list(range(1, len(cands) + 1))

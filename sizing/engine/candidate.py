@@ -43,10 +43,10 @@ class Candidate(Mapping):
     metrics: Mapping[str, float] = field(default_factory=dict)
     design: Mapping[str, Any] | None = None
     reason: str | None = None
-    feasible: bool = False
+    feasible: bool | None = None        # the standing: None until ranked
     driver: str | None = None
     rank: int | None = None
-    pareto: bool = False
+    pareto: bool | None = None
     pareto_level: int | None = None
     rests_on_assumed: tuple = ()
     name: str = ""
@@ -111,6 +111,12 @@ def _typed(key: str, value):
 def _plain(key: str, value):
     """An attribute as its record holds it."""
     return list(value) if key == "rests_on_assumed" and value is not None else value
+
+
+def as_candidate(c: Mapping) -> Candidate:
+    """``c`` as a candidate: itself, or the candidate of a results.json
+    record (one read back from a file, a technology's record)."""
+    return c if isinstance(c, Candidate) else Candidate.from_dict(c)
 
 
 def records(candidates) -> list[dict]:

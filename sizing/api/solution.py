@@ -154,15 +154,12 @@ def _with_compliance(results: dict, studied: dict[str, dict]) -> dict:
     """New results in which each studied candidate, and each technology's
     best, carries its probability of compliance under tolerances and its
     95 % interval."""
-    def carried(record, entry: dict | None):
-        if entry is None:
-            return record
-        given = {"p_compliance": entry["p_compliance"], "p_ci95": entry.get("p_ci95")}
-        return record.with_fields(**given) if isinstance(record, Candidate) else dict(record, **given)
-    from ..engine.candidate import Candidate
+    def given(ident: str) -> dict:
+        entry = studied.get(ident)
+        return {} if entry is None else {"p_compliance": entry["p_compliance"], "p_ci95": entry.get("p_ci95")}
     summary, comparison = results["summary"], results["summary"]["comparison"]
-    techs = {name: carried(t, studied.get(t["best"])) for name, t in comparison["technologies"].items()}
-    return dict(results, candidates=[carried(c, studied.get(c["id"])) for c in results["candidates"]],
+    techs = {name: dict(t, **given(t["best"])) for name, t in comparison["technologies"].items()}
+    return dict(results, candidates=[c.with_fields(**g) if (g := given(c.id)) else c for c in results["candidates"]],
                 summary=dict(summary, comparison=dict(comparison, technologies=techs)))
 
 

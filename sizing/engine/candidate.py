@@ -7,13 +7,14 @@ written (``to_dict``).
 The fields every technology's record has (docs/formats.md, results.json)
 are typed attributes; what a technology adds of its own (a force path, a
 structure, a valve's resonance, ...) stays in ``own``, in its record's
-order. The ranking (``with_fields``: feasible,
-driver, rank, pareto), the names and the probability of compliance give
-new candidates; none is changed after it is made.
+order. The ranking (``with_fields``: feasible, driver, rank, pareto), the
+names and the probability of compliance give new candidates; none is
+changed after it is made. A results.json read back from a file (a
+baseline, robust's input) becomes candidates once (``as_candidate``).
 
-A candidate also reads as its record (a read-only ``Mapping``), for the code
-that reads candidates of a results.json read back from a file the same way
-as those of a solve (a technology's names and descriptions, the report).
+A candidate also reads as its record (a read-only ``Mapping``), for the
+code that takes records: each technology's names, descriptions and
+drawings, the flips' re-solves, and candidates.csv, written from records.
 """
 from __future__ import annotations
 

@@ -4,6 +4,7 @@ compared with a baseline and carrying robust-study figures when asked.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 from pathlib import Path
 from typing import ClassVar
 
@@ -18,9 +19,10 @@ SOLVE_OUTPUTS = ("results.json", "candidates.csv", "report.html", "catalog/", PL
 
 @dataclass(frozen=True)
 class SolveResult(Payload):
-    """A solve: ``results`` (results.json, docs/formats.md), the simulated
-    ``traces`` the report plots, and the catalog folder it rests on. Reads as
-    the ``results`` mapping."""
+    """A solve: ``results`` (results.json, docs/formats.md, its candidates
+    ``engine.candidate.Candidate``s), the simulated ``traces`` the report
+    plots, and the catalog folder it rests on. Reads as results.json
+    (``records``)."""
 
     results: dict
     traces: list
@@ -28,8 +30,14 @@ class SolveResult(Payload):
     inputs: tuple = ()
     layout: ClassVar[str] = "folder"
 
+    @cached_property
+    def records(self) -> dict:
+        """results.json as written: the results with each candidate its record."""
+        from ..engine.candidate import records
+        return dict(self.results, candidates=records(self.results["candidates"]))
+
     def _payload(self) -> dict:
-        return self.results
+        return self.records
 
     def knife_edges(self) -> str:
         """The terminal line of the checks met by less than ``KNIFE_EDGE``
@@ -58,7 +66,7 @@ class SolveResult(Payload):
         from ..io.catalog_diff import snapshot_files
         from ..report.csv_table import candidates_csv
         from ..report.html import render
-        files = {"results.json": results_json(self.results), "candidates.csv": candidates_csv(self.results),
+        files = {"results.json": results_json(self.records), "candidates.csv": candidates_csv(self.records),
                  "report.html": render(self.results, self.traces), PLOTLY_FILE: plotly_js}
         files.update(snapshot_files(self.catalog_folder))
         return files
@@ -105,9 +113,9 @@ def run_solve(requirements_path, catalog_dir=None, baseline=None, progress=None,
     results = dict(out.results, catalog_dir=str(cat.folder.resolve()))
     from ..studies import compliance
     if fast:
-        compliance.attach_fast(results, req)
+        results = compliance.attach_fast(results, req)
     else:
-        compliance.attach(req, cat, results, out.stages)
+        results = compliance.attach(req, cat, results, out.stages)
     if studied is not None:
         results = _with_compliance(results, studied)
     if old is not None:
@@ -146,13 +154,12 @@ def _with_compliance(results: dict, studied: dict[str, dict]) -> dict:
     """New results in which each studied candidate, and each technology's
     best, carries its probability of compliance under tolerances and its
     95 % interval."""
-    def carried(record: dict, entry: dict | None) -> dict:
-        if entry is None:
-            return record
-        return dict(record, p_compliance=entry["p_compliance"], p_ci95=entry.get("p_ci95"))
+    def given(ident: str) -> dict:
+        entry = studied.get(ident)
+        return {} if entry is None else {"p_compliance": entry["p_compliance"], "p_ci95": entry.get("p_ci95")}
     summary, comparison = results["summary"], results["summary"]["comparison"]
-    techs = {name: carried(t, studied.get(t["best"])) for name, t in comparison["technologies"].items()}
-    return dict(results, candidates=[carried(c, studied.get(c["id"])) for c in results["candidates"]],
+    techs = {name: dict(t, **given(t["best"])) for name, t in comparison["technologies"].items()}
+    return dict(results, candidates=[c.with_fields(**g) if (g := given(c.id)) else c for c in results["candidates"]],
                 summary=dict(summary, comparison=dict(comparison, technologies=techs)))
 
 

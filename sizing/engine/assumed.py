@@ -8,6 +8,11 @@ map follows the formulas of ``verify.static_figures``, the margins of
 """
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from .candidate import Candidate
+
 _STROKE = {"stack": {"stroke", "stroke_per_volt", "stiffness", "max_voltage", "stroke_temperature_coefficient"}}
 _OIL = {"fluid": {"bulk_modulus", "bulk_modulus_temperature_coefficient"}}
 _SEAL = {"seal": {"friction_per_length", "friction_pressure_coefficient", "breakaway_ratio"}}
@@ -88,13 +93,13 @@ def parts_of(catalog, components: dict) -> dict:
     return parts
 
 
-def of_candidate(catalog, c: dict) -> list[dict]:
+def of_candidate(catalog, c: Candidate) -> list[dict]:
     """A ranked candidate's ``rests_on_assumed``, never null: the list its
     engine gave when it is the contract's, else read from its parts."""
-    given = c.get("rests_on_assumed")
-    if isinstance(given, list) and all(isinstance(x, dict) for x in given) and given:
-        return given
-    return rests_on_components(catalog, c.get("components", {}), c.get("driver"))
+    given = c.rests_on_assumed
+    if given and all(isinstance(x, dict) for x in given):
+        return list(given)
+    return rests_on_components(catalog, c.components, c.driver)
 
 
 def in_words(catalog, record: dict) -> str:

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 
+from .candidate import Candidate, as_candidate
 from .rank import OBJECTIVE_KEYS
 from ..display import field_name, number, quantity
 from ..technologies.registry import label
@@ -32,16 +33,16 @@ def _as_dict(catalog_diff) -> dict | None:
     return catalog_diff.to_dict()
 
 
-def _index(results: dict) -> dict[str, dict]:
-    return {c["id"]: c for c in (results or {}).get("candidates", [])}
+def _index(results: dict) -> dict[str, Candidate]:
+    """The candidates of a solve's results or of a results.json read back, by id."""
+    return {c.id: c for c in map(as_candidate, (results or {}).get("candidates", []))}
 
 
-def _component_ids(candidate: dict) -> list[str]:
-    comps = candidate.get("components") or {}
-    return [v for v in comps.values() if isinstance(v, str)]
+def _component_ids(candidate: Candidate) -> list[str]:
+    return [v for v in candidate.components.values() if isinstance(v, str)]
 
 
-def _catalog_causes(candidate: dict, diff: dict | None) -> list[dict]:
+def _catalog_causes(candidate: Candidate, diff: dict | None) -> list[dict]:
     if not diff:
         return []
     ids = set(_component_ids(candidate))
@@ -60,11 +61,11 @@ def _catalog_causes(candidate: dict, diff: dict | None) -> list[dict]:
     return causes
 
 
-def _param_causes(old: dict | None, new: dict | None) -> list[dict]:
+def _param_causes(old: Candidate | None, new: Candidate | None) -> list[dict]:
     """Differences of ``stack_params`` between the two runs (SI, unit in the key)."""
-    if not old or not new:
+    if old is None or new is None:
         return []
-    a, b = old.get("stack_params") or {}, new.get("stack_params") or {}
+    a, b = old.own.get("stack_params") or {}, new.own.get("stack_params") or {}
     causes = []
     for key in sorted(set(a) | set(b)):
         x, y = a.get(key), b.get(key)
@@ -73,7 +74,7 @@ def _param_causes(old: dict | None, new: dict | None) -> list[dict]:
                 continue
         elif x == y:
             continue
-        stack = (new.get("components") or {}).get("stack")
+        stack = new.components.get("stack")
         causes.append({"entry": stack, "kind": "stack", "field": key, "old": x, "new": y, "unit": None,
                        "relative_change": (y / x - 1) if isinstance(x, (int, float)) and isinstance(y, (int, float)) and x else None,
                        "change": "stack_params differ between the runs"})
@@ -110,7 +111,8 @@ def rank_changes(baseline: dict, results: dict, catalog_diff=None) -> list[dict]
     Parameters
     ----------
     baseline, results : dict
-        Two results.json dicts (docs/formats.md); candidates matched by ``id``.
+        Two results (a solve's, or results.json read back; docs/formats.md);
+        candidates matched by ``id``.
     catalog_diff : CatalogDiff, its ``to_dict()``, or None
         The catalog change between the two runs; used to name the fields
         responsible (entries among each candidate's ``components``).
@@ -135,8 +137,8 @@ def rank_changes(baseline: dict, results: dict, catalog_diff=None) -> list[dict]
             events.append("new_candidate")
         if new is None:
             events.append("dropped_candidate")
-        of, nf = bool(old and old.get("feasible")), bool(new and new.get("feasible"))
-        op, np_ = bool(old and old.get("pareto")), bool(new and new.get("pareto"))
+        of, nf = bool(old and old.feasible), bool(new and new.feasible)
+        op, np_ = bool(old and old.pareto), bool(new and new.pareto)
         if nf and not of:
             events.append("entered_feasible")
         if of and not nf:
@@ -145,7 +147,7 @@ def rank_changes(baseline: dict, results: dict, catalog_diff=None) -> list[dict]
             events.append("entered_pareto")
         if op and not np_:
             events.append("left_pareto")
-        old_rank, new_rank = (old or {}).get("rank"), (new or {}).get("rank")
+        old_rank, new_rank = (old.rank if old else None), (new.rank if new else None)
         move = old_rank - new_rank if old_rank is not None and new_rank is not None else None
         if move:
             events.append("rank_up" if move > 0 else "rank_down")
@@ -158,14 +160,14 @@ def rank_changes(baseline: dict, results: dict, catalog_diff=None) -> list[dict]
         events.sort(key=EVENTS.index)
         changes.append({
             "id": cid,
-            "name": (new or old).get("name", cid),
-            "technology": (new or old).get("technology"),
+            "name": (new or old).name or cid,
+            "technology": (new or old).technology,
             "events": events,
-            "feasible": [old.get("feasible") if old else None, new.get("feasible") if new else None],
-            "pareto": [old.get("pareto") if old else None, new.get("pareto") if new else None],
+            "feasible": [old.feasible if old else None, new.feasible if new else None],
+            "pareto": [old.pareto if old else None, new.pareto if new else None],
             "rank": [old_rank, new_rank],
             "rank_move": move,
-            "driver": [old.get("driver") if old else None, new.get("driver") if new else None],
+            "driver": [old.driver if old else None, new.driver if new else None],
             "causes": causes,
             "summary": _summary(cid, events, old_rank, new_rank, causes, indirect=_indirect(baseline, results, diff)),
         })

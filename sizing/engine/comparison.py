@@ -8,6 +8,7 @@ import math
 
 from .rank import OBJECTIVE_KEYS
 from .assumed import assumed_clause, in_words
+from .candidate import Candidate
 from .describe import describe
 from .flip import smallest
 from ..technologies.registry import get as technology, technologies
@@ -23,18 +24,18 @@ def actuator_noun(name: str) -> str:
 STAGE_ORDER = {"pruned": 0, "gp_failed": 0, "gp_infeasible": 1, "sized": 2, "simulated": 3}
 
 
-def _closest(members):
-    def key(c):
-        m = c["margins"].get(c["driver"]) if c.get("driver") else None
-        return STAGE_ORDER.get(c.get("stage"), 0), (m if m is not None and math.isfinite(m) else -math.inf)
-    return max(members, key=key)
+def progress(c: Candidate) -> tuple:
+    """How far a candidate got (simulated > sized > pruned), then how close
+    to feasible it is: the one that names what really blocks a technology."""
+    m = c.margins.get(c.driver) if c.driver else None
+    return STAGE_ORDER.get(c.stage, 0), (m if m is not None and math.isfinite(m) else -math.inf)
 
 
-def _best(members):
-    feasible = [c for c in members if c["feasible"]]
+def _best(members: list[Candidate]) -> tuple[Candidate, bool]:
+    feasible = [c for c in members if c.feasible]
     if feasible:
-        return min(feasible, key=lambda c: c["rank"]), True
-    return _closest(members), False
+        return min(feasible, key=lambda c: c.rank), True
+    return max(members, key=progress), False
 
 
 # the one check a design can miss and still stand in for its technology:
@@ -44,21 +45,21 @@ def _best(members):
 BOUGHT_CHECKS = ("amplifier_units",)
 
 
-def _misses(c) -> list[str]:
-    return [k for k, v in c["margins"].items() if v is None or not (v >= 0)]
+def _misses(c: Candidate) -> list[str]:
+    return [k for k, v in c.margins.items() if v is None or not (v >= 0)]
 
 
-def _with_what_it_needs(c, req, catalog, keys) -> dict | None:
+def _with_what_it_needs(c: Candidate, req, catalog, keys) -> dict | None:
     """A design missing only the amplifier count, with the units it needs:
     {"units", "allowed", "metrics"} (the added units' mass and cost), or
     None when its needs cannot be priced."""
-    needed = (c.get("static") or {}).get("amplifier_units_needed")
-    amp = (catalog.amplifiers.get((c.get("components") or {}).get("amplifier")) if catalog is not None else None)
+    needed = c.static.get("amplifier_units_needed")
+    amp = catalog.amplifiers.get(c.components.get("amplifier")) if catalog is not None else None
     if needed is None or amp is None:
         return None
     allowed = req.options.max_amplifier_units
     extra = max(float(needed) - min(float(needed), allowed), 0.0)
-    metrics = dict(c["metrics"])
+    metrics = dict(c.metrics)
     for key, per_unit in (("mass_kg", amp.mass), ("cost_usd", amp.cost_usd)):
         if metrics.get(key) is not None:
             metrics[key] = metrics[key] + extra * per_unit
@@ -71,8 +72,8 @@ def _one_miss(members, keys, req=None, catalog=None):
     the objectives (then the next); else the design that misses exactly one
     check, best in the objectives, marked not comparable (it delivers less
     than required, so no ratio is drawn from it)."""
-    ones = [c for c in members if c.get("stage") == "simulated" and len(_misses(c)) == 1
-            and all(c["metrics"].get(k) is not None for k in keys)]
+    ones = [c for c in members if c.stage == "simulated" and len(_misses(c)) == 1
+            and all(c.metrics.get(k) is not None for k in keys)]
     bought = []
     for c in ones:
         needs = _with_what_it_needs(c, req, catalog, keys) if _misses(c)[0] in BOUGHT_CHECKS and req else None
@@ -82,11 +83,11 @@ def _one_miss(members, keys, req=None, catalog=None):
         c, needs = min(bought, key=lambda cn: tuple(cn[1]["metrics"][k] for k in keys))
         return c, needs
     if ones:
-        return min(ones, key=lambda c: tuple(c["metrics"][k] for k in keys)), None
+        return min(ones, key=lambda c: tuple(c.metrics[k] for k in keys)), None
     return None, None
 
 
-def technology_comparison(req, candidates: list[dict], catalog=None, flips: dict | None = None) -> dict:
+def technology_comparison(req, candidates: list[Candidate], catalog=None, flips: dict | None = None) -> dict:
     """{technology: {best, feasible, binding, binding_margin, metrics, flips, flip}, text}.
     ``flips``: per technology its re-solved flips (``flip.flips``); None
     when they were not computed (``solve --fast``)."""
@@ -94,39 +95,39 @@ def technology_comparison(req, candidates: list[dict], catalog=None, flips: dict
     out, lines = {}, []
     labelled = [(t.name, t.label) for t in technologies()]
     for tech, label in labelled:
-        members = [c for c in candidates if c["technology"] == tech and c.get("metrics")]
+        members = [c for c in candidates if c.technology == tech and c.metrics]
         if not members:
             continue
         best, ok = _best(members)
-        m = best["margins"].get(best["driver"]) if best.get("driver") else None
-        out[tech] = {"best": best["id"], "name": best.get("name", best["id"]), "feasible": ok, "binding": best.get("driver"), "binding_margin": m,
-                     "metrics": {k: best["metrics"].get(k) for k in keys},
-                     "n_feasible": sum(1 for c in members if c["feasible"])}
+        m = best.margins.get(best.driver) if best.driver else None
+        out[tech] = {"best": best.id, "name": best.name or best.id, "feasible": ok, "binding": best.driver, "binding_margin": m,
+                     "metrics": {k: best.metrics.get(k) for k in keys},
+                     "n_feasible": sum(1 for c in members if c.feasible)}
         out[tech]["flips"] = None if flips is None else flips.get(tech, [])
         out[tech]["flip"] = smallest(out[tech]["flips"])
         held = _holding(best)
         if held is not None:
             out[tech]["holding"] = held
-        rests = best.get("rests_on_assumed") or []
+        rests = list(best.rests_on_assumed)
         out[tech]["rests_on_assumed"] = rests
         out[tech]["deciding_assumed"] = [f"{r['part']}.{r['field']}" for r in rests if r.get("decides")]
         out[tech]["deciding_assumed_words"] = [in_words(catalog, r) for r in rests if r.get("decides")]
         out[tech]["description"] = describe(best, catalog)
         near, needs = (None, None) if ok else _one_miss(members, keys, req, catalog)
         if near is not None:
-            out[tech]["one_miss"] = {"id": near["id"], "name": near.get("name", near["id"]), "misses": _misses(near)[0],
+            out[tech]["one_miss"] = {"id": near.id, "name": near.name or near.id, "misses": _misses(near)[0],
                                      "comparable": needs is not None,
-                                     "metrics": needs["metrics"] if needs else {k: near["metrics"].get(k) for k in keys}}
+                                     "metrics": needs["metrics"] if needs else {k: near.metrics.get(k) for k in keys}}
             if needs is not None:
                 out[tech]["one_miss"]["needs"] = {"amplifier_units": needs["units"], "allowed": needs["allowed"],
-                                                  "metrics_as_sized": {k: near["metrics"].get(k) for k in keys}}
-        figures = ", ".join(format_metric(k, best["metrics"].get(k)) for k in keys)
+                                                  "metrics_as_sized": {k: near.metrics.get(k) for k in keys}}
+        figures = ", ".join(format_metric(k, best.metrics.get(k)) for k in keys)
         if ok:
-            lines.append(f"{label}: best {best.get('name', best['id'])} ({figures}); binding check {best['driver']} "
+            lines.append(f"{label}: best {best.name or best.id} ({figures}); binding check {best.driver} "
                          f"(margin {m:+.1%})")
         else:
-            lines.append(f"{label}: no feasible design; the closest, {best.get('name', best['id'])} ({figures}), "
-                         f"misses {best['driver']} {_miss(m)}")
+            lines.append(f"{label}: no feasible design; the closest, {best.name or best.id} ({figures}), "
+                         f"misses {best.driver} {_miss(m)}")
             if near is not None:
                 lines.append(_one_miss_text(label, out[tech]["one_miss"], keys))
     for tech, label in labelled:
@@ -146,12 +147,12 @@ def technology_comparison(req, candidates: list[dict], catalog=None, flips: dict
             "recommendation": _recommendation(out, keys)}
 
 
-def _holding(best: dict) -> dict | None:
+def _holding(best: Candidate) -> dict | None:
     """How the best design holds the surface under its largest load case:
     its output stiffness at rest, where the load leaves it at zero drive and
     the travel it reaches from neutral (engine/holding.py)."""
-    k = (best.get("static") or {}).get("output_stiffness_N_m")
-    cases = (best.get("simulated") or {}).get("cases") or []
+    k = best.static.get("output_stiffness_N_m")
+    cases = best.simulated.get("cases") or []
     if k is None or not cases:
         return None
     worst = max(cases, key=lambda c: c["load_N"])

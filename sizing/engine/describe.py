@@ -4,8 +4,13 @@ high-power piezo stack actuator; ...; bores 504/33 mm (R = 233), 554 mm
 long, 546 mm across"). Read from the candidate and the catalog only."""
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from ..display import number
 from ..technologies import registry
+
+if TYPE_CHECKING:
+    from .candidate import Candidate
 
 
 def part_words(catalog, part_id) -> str:
@@ -28,9 +33,9 @@ def mm(value) -> str:
     return number(value * 1e3, 3) if isinstance(value, (int, float)) else "?"
 
 
-def describe(c: dict, catalog) -> str:
-    """Candidate ``c`` (results.json) in words ("" when it names no parts)."""
-    if not c.get("components"):
+def describe(c: Candidate, catalog) -> str:
+    """Candidate ``c`` in words ("" when it names no parts)."""
+    if not c.components:
         return ""
-    tech = registry.get(c.get("technology"))
+    tech = registry.get(c.technology)
     return tech.describe(c, catalog) if tech is not None else ""

@@ -13,8 +13,12 @@ and ``unique`` keeps them apart within one list.
 from __future__ import annotations
 
 from collections import Counter
+from typing import TYPE_CHECKING
 
 from ..technologies import registry
+
+if TYPE_CHECKING:
+    from .candidate import Candidate
 
 MAX_NAME = 32
 _MAKERS = ("pi-", "thorlabs-", "maxon-", "faulhaber-", "allied-", "gen-", "thk-", "hiwin-")
@@ -56,14 +60,14 @@ def id_tokens(part_id: str | None, n: int) -> str:
     return "-".join(short_id(part_id, 64).split("-")[:n])
 
 
-def name(c: dict) -> str:
+def name(c: Candidate) -> str:
     """The candidate's short name, at most MAX_NAME characters."""
-    tech = registry.get(c.get("technology"))
-    text = tech.short_name(c) if tech is not None else str(c.get("id", ""))
+    tech = registry.get(c.technology)
+    text = tech.short_name(c) if tech is not None else str(c.id)
     return text[:MAX_NAME]
 
 
-def unique(candidates: list[dict]) -> list[str]:
+def unique(candidates: list[Candidate]) -> list[str]:
     """Each candidate's name, in order, unique within the list: designs
     whose names would coincide add the part they differ in (the drive, the
     amplifier, ...), and a few letters of their id's hash when even that
@@ -77,14 +81,14 @@ def unique(candidates: list[dict]) -> list[str]:
             for i, tag in zip(rows, _tags([candidates[i] for i in rows])):
                 out[i] = _with_tag(text, tag)
     known = Counter(out)                    # a cut that made two names one again
-    return [_with_tag(n, _hash(c["id"])) if known[n] > 1 else n for n, c in zip(out, candidates)]
+    return [_with_tag(n, _hash(c.id)) if known[n] > 1 else n for n, c in zip(out, candidates)]
 
 
-def _tags(group: list[dict]) -> list[str]:
+def _tags(group: list[Candidate]) -> list[str]:
     """What tells apart the designs of ``group``, whose names coincide."""
     tags = [_difference(c, group) for c in group]
     if len(set(tags)) < len(group):
-        tags = [f"{t} {_hash(c['id'])}".strip() for t, c in zip(tags, group)]
+        tags = [f"{t} {_hash(c.id)}".strip() for t, c in zip(tags, group)]
     return tags
 
 
@@ -96,12 +100,12 @@ def _with_tag(text: str, tag: str) -> str:
     return f"{text} {tag}"
 
 
-def _difference(c: dict, group: list[dict]) -> str:
+def _difference(c: Candidate, group: list[Candidate]) -> str:
     """The first component in which ``c`` differs from others of ``group``,
     abbreviated (servo-96v-12a -> 96v)."""
-    comp = c.get("components", {})
+    comp = c.components
     for key in comp:
-        if len({str(g.get("components", {}).get(key)) for g in group}) > 1:
+        if len({str(g.components.get(key)) for g in group}) > 1:
             tokens = short_id(str(comp[key]), 64).split("-")
             return tokens[min(1, len(tokens) - 1)][:8]        # servo-96v-12a -> 96v
     return ""

@@ -17,6 +17,7 @@ from ..io.catalog import Catalog
 from ..io.requirements import RequirementsFile
 from ..technologies.registry import technologies
 from . import assumed, names, stage_cache
+from .candidate import Candidate, records
 from .comparison import technology_comparison
 from .flip import flips
 from .loads import load_cases
@@ -27,7 +28,7 @@ from .solve_summary import _assumptions, _clean, _requirements_si, _summary, _tr
 
 @dataclass(frozen=True)
 class SolveOutput:
-    results: dict                                  # results.json
+    results: dict                                  # results.json, its candidates ``Candidate``s (``api`` writes it)
     traces: list = field(default_factory=list)     # time traces of the top designs, for the report
     stages: Stages = Stages()                      # the records behind the results (robust takes them)
 
@@ -45,14 +46,14 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
     loads = [c["load_N"] for c in cases]
     solved = {t.name: t.solve(req, catalog, loads, progress, detail) for t in technologies()}
     outcomes = tuple(outcome for outcome, _ in solved.values())
-    unranked = [c for o in outcomes for c in o.candidates]
-    ranking = standings([c["margins"] for c in unranked], [c["metrics"] for c in unranked],
+    unranked = [Candidate.from_dict(c) for o in outcomes for c in o.candidates]
+    ranking = standings([c.margins for c in unranked], [c.metrics for c in unranked],
                         [OBJECTIVE_KEYS[k] for k in req.objectives.minimize])
-    ranked = sorted((dict(c, **s.fields()) for c, s in zip(unranked, ranking)), key=lambda c: c["rank"])
-    candidates = [dict(c, rests_on_assumed=assumed.of_candidate(catalog, c), name=n)
+    ranked = sorted((c.with_fields(**s.fields()) for c, s in zip(unranked, ranking)), key=lambda c: c.rank)
+    candidates = [c.with_fields(rests_on_assumed=assumed.of_candidate(catalog, c), name=n)
                   for c, n in zip(ranked, names.unique(ranked))]
     stages = stages_of({name: records for name, (_, records) in solved.items()})
-    names_by_id = {c["id"]: c["name"] for c in candidates}
+    names_by_id = {c.id: c.name for c in candidates}
     results = _results(req, requirements_sha256, catalog, cases, candidates, outcomes,
                        [d for t in technologies() for d in t.disagreements(solved[t.name][1], names_by_id)])
     results["flips_cost"] = None if fast else _with_flips(req, catalog, loads, candidates, results["summary"])
@@ -61,7 +62,14 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
         results = _keep_verified(results)
     results["summary"]["counts"] = summary_counts(results)
     results["runtime_s"] = time.perf_counter() - start
-    return SolveOutput(results=_clean(results), traces=traces, stages=stages)
+    return SolveOutput(results=_json_safe(results), traces=traces, stages=stages)
+
+
+def _json_safe(results: dict) -> dict:
+    """The results with every figure as results.json holds it (numpy to
+    Python, non-finite floats null), the candidates still ``Candidate``s."""
+    clean = _clean(dict(results, candidates=records(results["candidates"])))
+    return dict(clean, candidates=[Candidate.from_dict(c) for c in clean["candidates"]])
 
 
 def _results(req, requirements_sha256, catalog, cases, candidates, outcomes, disagreements) -> dict:
@@ -123,16 +131,16 @@ FAR_MISS = -0.5
 FAR_MISS_REASON = "simulated: misses {} by more than 50 %"
 
 
-def _dropped_reason(c: dict, named: set) -> str | None:
+def _dropped_reason(c: Candidate, named: set) -> str | None:
     """Why a candidate's record is left out of the default results.json
     (None: it is kept)."""
-    if c["feasible"] or c["id"] in named:
+    if c.feasible or c.id in named:
         return None
-    if c.get("stage") in UNVERIFIED:
+    if c.stage in UNVERIFIED:
         return UNVERIFIED_REASON
-    worst = c["margins"].get(c["driver"]) if c.get("driver") else None
+    worst = c.margins.get(c.driver) if c.driver else None
     if worst is not None and worst < FAR_MISS:
-        return FAR_MISS_REASON.format(c["driver"])
+        return FAR_MISS_REASON.format(c.driver)
     return None
 
 
@@ -152,14 +160,14 @@ def _keep_verified(results: dict) -> dict:
         if why is None:
             kept.append(c)
         else:
-            dropped[(c["technology"], why)] += 1
+            dropped[(c.technology, why)] += 1
     ruled = dict(summary["ruled_out"])
     by_tech = {t: dict(counts) for t, counts in summary["ruled_out_by_technology"].items()}
     for (tech, why), n in dropped.items():
         ruled[why] = ruled.get(why, 0) + n
         counts = by_tech.setdefault(tech, {})
         counts[why] = counts.get(why, 0) + n
-    return dict(results, candidates=[dict(c, rank=rank) for rank, c in enumerate(kept, start=1)],
+    return dict(results, candidates=[c.with_fields(rank=rank) for rank, c in enumerate(kept, start=1)],
                 summary=dict(summary, ruled_out=ruled, ruled_out_by_technology=by_tech))
 
 
@@ -175,15 +183,15 @@ def summary_counts(results: dict) -> dict:
     out = {}
     for technology in technologies():
         tech, own = technology.name, technology.counts_of(raw)
-        ranked = [c for c in cands if c["technology"] == tech]
-        catalog_units = sum(1 for c in ranked if "actuator" in (c.get("components") or {}))
+        ranked = [c for c in cands if c.technology == tech]
+        catalog_units = sum(1 for c in ranked if "actuator" in c.components)
         before = int(own.get("pruned", 0)) if technology.prunes_before_sizing else 0
         out[tech] = {"combinations": int(own.get("combinations", 0)) + catalog_units,
                      "ruled_out_before_sizing": before,
                      "left_out": int(sum(by_tech.get(tech, {}).values())) - before,
                      "simulated": int(own.get("simulated", 0)),
-                     "ranked": len(ranked), "feasible": sum(1 for c in ranked if c["feasible"])}
+                     "ranked": len(ranked), "feasible": sum(1 for c in ranked if c.feasible)}
         out[tech].update({k: int(own.get(k, 0)) for k in technology.extra_counts})
     out["ranked"] = len(cands)
-    out["feasible"] = sum(1 for c in cands if c["feasible"])
+    out["feasible"] = sum(1 for c in cands if c.feasible)
     return out

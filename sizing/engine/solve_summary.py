@@ -11,7 +11,8 @@ import numpy as np
 from ..io.requirements import RequirementsFile
 from ..physics import stack as stack_phys
 from ..technologies.registry import technologies
-from .comparison import technology_comparison
+from .candidate import Candidate
+from .comparison import progress, technology_comparison
 
 TRACE_POINTS = 600
 
@@ -96,18 +97,18 @@ def _envelope_statement(req) -> str:
     return "envelope: " + (", ".join(given) if given else "none given") + mass
 
 
-def _group(c) -> tuple[str, str]:
-    return c["technology"], c.get("variant", "catalog")
+def _group(c: Candidate) -> tuple[str, str]:
+    return c.technology, c.variant or "catalog"
 
 
-def _summary(req: RequirementsFile, candidates: list[dict], catalog, pruned=None) -> dict:
+def _summary(req: RequirementsFile, candidates: list[Candidate], catalog, pruned=None) -> dict:
     """Per technology group: counts, best, what blocks it. ``pruned``: per
     technology, its combinations ruled out before sizing, counted by reason
     (they name the blocker of a group none of whose combinations was sized)."""
     out = []
     for key, group in groups():
         members = [c for c in candidates if _group(c) == key]
-        feasible = [c for c in members if c["feasible"]]
+        feasible = [c for c in members if c.feasible]
         entry = {"technology": key[0], "variant": key[1], "label": group.label, "n_candidates": len(members),
                  "n_feasible": len(feasible)}
         ruled = (pruned or {}).get(key[0])
@@ -121,40 +122,30 @@ def _summary(req: RequirementsFile, candidates: list[dict], catalog, pruned=None
             entry["text"] = group.empty
             out.append(entry)
             continue
-        best = min(members, key=lambda c: c["rank"])
-        furthest = max(members, key=_progress_key)
-        entry["best"] = best["id"]
-        entry["drivers"] = dict(Counter(c["driver"] for c in members if not c["feasible"]).most_common())
+        best = min(members, key=lambda c: c.rank)
+        furthest = max(members, key=progress)
+        entry["best"] = best.id
+        entry["drivers"] = dict(Counter(c.driver for c in members if not c.feasible).most_common())
         if feasible:
-            entry["text"] = f"{len(feasible)} feasible; best ranked {_label(best)} (driver: {best['driver']})"
+            entry["text"] = f"{len(feasible)} feasible; best ranked {_label(best)} (driver: {best.driver})"
             entry["text"] += group.caveat(req, feasible, catalog)
         else:
-            m = furthest["margins"][furthest["driver"]]
-            entry["blocking"] = furthest["driver"]
-            entry["closest"] = furthest["id"]
-            entry["text"] = (f"no feasible design: blocked by {furthest['driver']} - the candidate that gets furthest, "
-                             f"{_label(furthest)} ({furthest['stage']}), misses it {_pct(m)}")
+            m = furthest.margins[furthest.driver]
+            entry["blocking"] = furthest.driver
+            entry["closest"] = furthest.id
+            entry["text"] = (f"no feasible design: blocked by {furthest.driver} - the candidate that gets furthest, "
+                             f"{_label(furthest)} ({furthest.stage}), misses it {_pct(m)}")
         out.append(entry)
     return {"groups": out, "thermal": _thermal_statement(req, candidates),
             "comparison": technology_comparison(req, candidates, catalog),
-            "feasible": sum(1 for c in candidates if c["feasible"]),
-            "pareto": [c["id"] for c in candidates if c["pareto"]],
+            "feasible": sum(1 for c in candidates if c.feasible),
+            "pareto": [c.id for c in candidates if c.pareto],
             **{k: v for t in technologies() for k, v in t.summary_fields(catalog, candidates).items()}}
 
 
-STAGES = {"pruned": 0, "gp_failed": 0, "gp_infeasible": 1, "sized": 2, "simulated": 3}
-
-
-def _progress_key(c):
-    """How far a candidate got (simulated > sized > pruned), then how close
-    to feasible it is: the one that names what really blocks a technology."""
-    m = c["margins"].get(c["driver"]) if c["driver"] else None
-    return STAGES.get(c.get("stage"), 0), (m if m is not None and math.isfinite(m) else -math.inf)
-
-
-def _label(c: dict) -> str:
+def _label(c: Candidate) -> str:
     """What people read: the candidate's short name (the id is for machines)."""
-    return c.get("name") or c["id"]
+    return c.name or c.id
 
 
 def _pct(margin) -> str:
@@ -180,27 +171,27 @@ def _traces(req, candidates, stages, loads, top=3) -> list[dict]:
     """Time traces of the top designs: the best feasible ones, the best of
     each technology group, re-simulated with their traces kept. ``stages``:
     the solve's records (``records.Stages``)."""
-    chosen = [c for c in candidates if c["feasible"]][:top]
+    chosen = [c for c in candidates if c.feasible][:top]
     for key, _ in groups():
-        members = [c for c in candidates if _group(c) == key and c.get("stage") in ("simulated", "sized")]
+        members = [c for c in candidates if _group(c) == key and c.stage in ("simulated", "sized")]
         if members and members[0] not in chosen:
             chosen.append(members[0])
     out, known = [], set()
     techs = {t.name: t for t in technologies()}
     for c in chosen:
-        base = c["id"]
-        if base in known or c["technology"] not in techs:
+        base = c.id
+        if base in known or c.technology not in techs:
             continue
         known.add(base)
-        sims = techs[c["technology"]].traces(req, c, stages, loads)
+        sims = techs[c.technology].traces(req, c, stages, loads)
         if sims is None:
             continue
         cases = []
         for s in sims:
             t, y = downsample(s["t"], s["position_m"])
             cases.append({"load_N": s["load_N"], "t": t, "position_m": y})
-        out.append({"id": c["id"], "name": c.get("name", c["id"]), "technology": c["technology"],
-                    "feasible": c["feasible"], "cases": cases})
+        out.append({"id": c.id, "name": c.name or c.id, "technology": c.technology,
+                    "feasible": c.feasible, "cases": cases})
     return out
 
 

@@ -1,6 +1,8 @@
-"""Plotly figures of a solve, built from the results only (results.json and
-the time traces), never from the engine's objects."""
+"""Plotly figures of a solve, built from its results only (its ranked
+``Candidate``s and the time traces), never from the stages' records."""
 from __future__ import annotations
+
+from typing import TYPE_CHECKING
 
 import plotly.graph_objects as go
 from plotly.subplots import make_subplots
@@ -8,6 +10,9 @@ from plotly.subplots import make_subplots
 from .layout import no_overprint
 from ..technologies.registry import presentation, technologies
 from .words import tech_label
+
+if TYPE_CHECKING:
+    from ..engine.candidate import Candidate
 
 UNITS = {"mass": ("mass_kg", 1.0, "mass (kg)"), "cost": ("cost_usd", 1.0, "cost (USD)"),
          "volume": ("volume_m3", 1e3, "volume (L)"), "power": ("power_W", 1.0, "peak power (W)")}
@@ -25,19 +30,19 @@ def _axes(objectives: list[str]) -> tuple[str, str]:
 HOVER_MARGINS = 3
 
 
-def hover_text(c: dict) -> str:
-    hover = presentation(c["technology"]).hover
+def hover_text(c: Candidate) -> str:
+    hover = presentation(c.technology).hover
     # a technology with no drawing of its own: its short name
-    head = hover(c) if hover is not None else f"{tech_label(c['technology'])} {c.get('name', c['id'])}"
+    head = hover(c) if hover is not None else f"{tech_label(c.technology)} {c.name or c.id}"
     # the three smallest margins: what decides the design (the full list is in results.json)
-    shown = sorted(c["margins"].items(), key=lambda kv: kv[1] if kv[1] is not None else -float("inf"))[:HOVER_MARGINS]
+    shown = sorted(c.margins.items(), key=lambda kv: kv[1] if kv[1] is not None else -float("inf"))[:HOVER_MARGINS]
     margins = ", ".join(f"{k} {v:+.0%}" if v is not None else f"{k} n/a" for k, v in shown)
-    state = "feasible" if c["feasible"] else "infeasible"
-    m = c.get("metrics") or {}
+    state = "feasible" if c.feasible else "infeasible"
+    m = c.metrics
     figures = ", ".join(x for x in (f"{m['mass_kg']:.4g} kg" if m.get("mass_kg") is not None else "",
                                     f"{m['cost_usd']:,.0f} USD" if m.get("cost_usd") is not None else "") if x)
-    return (f"<b>{c.get('name', c['id'])}</b> ({figures})<br>{head}<br>rank {c['rank']}, {state}, "
-            f"binding {c['driver']}<br>{margins}")
+    return (f"<b>{c.name or c.id}</b> ({figures})<br>{head}<br>rank {c.rank}, {state}, "
+            f"binding {c.driver}<br>{margins}")
 
 
 def _front_2d(points):
@@ -62,25 +67,25 @@ def pareto_figure(results: dict) -> go.Figure:
     pts = {k: ([], [], []) for k in groups}
     fronts: dict[str, list] = {}
     for c in results["candidates"]:
-        m = c.get("metrics") or {}
+        m = c.metrics
         if m.get(xk) is None or m.get(yk) is None:
             continue
-        marker = next((k for k in presentation(c["technology"]).markers if k.takes(c)), None)
+        marker = next((k for k in presentation(c.technology).markers if k.takes(c)), None)
         if marker is not None:
-            if marker.stages is not None and c.get("stage") not in marker.stages:
+            if marker.stages is not None and c.stage not in marker.stages:
                 continue
             key = marker.legend
         else:                               # a technology with no markers of its own: a brown hexagon
-            key = tech_label(c["technology"])
+            key = tech_label(c.technology)
             for verdict, symbol in (("feasible", "hexagon"), ("infeasible", "hexagon-open")):
                 groups.setdefault(f"{key}, {verdict}", dict(symbol=symbol, color="#8c564b", size=8))
                 pts.setdefault(f"{key}, {verdict}", ([], [], []))
-        key += ", feasible" if c["feasible"] else ", infeasible"
+        key += ", feasible" if c.feasible else ", infeasible"
         pts[key][0].append(m[xk] * xs)
         pts[key][1].append(m[yk] * ys)
         pts[key][2].append(hover_text(c))
-        if c["feasible"]:
-            fronts.setdefault(c["technology"], []).append((m[xk] * xs, m[yk] * ys))
+        if c.feasible:
+            fronts.setdefault(c.technology, []).append((m[xk] * xs, m[yk] * ys))
     fig = go.Figure()
     for key, style in groups.items():
         x, y, text = pts[key]
@@ -131,17 +136,17 @@ def traces_figure(results: dict, traces: list[dict]) -> go.Figure:
     return no_overprint(fig)
 
 
-def comparison_figure(results: dict, picks: list[dict], title: str) -> go.Figure:
+def comparison_figure(results: dict, picks: list[Candidate], title: str) -> go.Figure:
     """Margins of the best designs of each technology (``title``: which
     against which), one row per requirement (horizontal bars: the
     requirement names read level, however many there are)."""
     fig = go.Figure()
-    keys = [k for k in MARGIN_ORDER if any(k in c["margins"] for c in picks)]
+    keys = [k for k in MARGIN_ORDER if any(k in c.margins for c in picks)]
     for c in picks:
-        x = [c["margins"].get(k) for k in keys]
-        fig.add_trace(go.Bar(y=keys, x=[v * 100 if v is not None else None for v in x], name=c.get("name", c["id"]),
+        x = [c.margins.get(k) for k in keys]
+        fig.add_trace(go.Bar(y=keys, x=[v * 100 if v is not None else None for v in x], name=c.name or c.id,
                              orientation="h",
-                             hovertext=[f"{c.get('name', c['id'])}<br>{k}: {v:+.1%}" if v is not None else f"{k}: n/a"
+                             hovertext=[f"{c.name or c.id}<br>{k}: {v:+.1%}" if v is not None else f"{k}: n/a"
                                         for k, v in zip(keys, x)], hoverinfo="text"))
     fig.add_vline(x=0, line=dict(color="black"))
     fig.update_layout(barmode="group", title=f"Margin per requirement, {title} (left of zero: missed)", xaxis_title="margin (%)", template="plotly_white",

@@ -3,6 +3,8 @@ no network access when opened)."""
 from __future__ import annotations
 
 import html
+from collections.abc import Mapping
+from typing import TYPE_CHECKING
 
 from ..display import requirement as display_requirement
 from ..engine.comparison import format_metric
@@ -13,6 +15,9 @@ from .bundle import plotly_tag
 from ..technologies.presentation import shown as _num
 from ..technologies.registry import presentation, technologies
 from .figures import MARGIN_ORDER, comparison_figure, pareto_figure, traces_figure
+
+if TYPE_CHECKING:
+    from ..engine.candidate import Candidate
 
 CSS = """
 body{font-family:system-ui,-apple-system,Segoe UI,Roboto,sans-serif;margin:2em auto;max-width:1200px;color:#222;padding:0 1em}
@@ -63,44 +68,45 @@ def _e(x) -> str:
     return html.escape(str(x))
 
 
-def _margin_table(cands: list[dict]) -> str:
-    keys = [k for k in MARGIN_ORDER if any(k in c["margins"] for c in cands)]
-    keys += sorted({k for c in cands for k in c["margins"]} - set(keys))
+def _margin_table(cands: list[Candidate]) -> str:
+    keys = [k for k in MARGIN_ORDER if any(k in c.margins for c in cands)]
+    keys += sorted({k for c in cands for k in c.margins} - set(keys))
     head = "".join(f"<th>{_e(k)}</th>" for k in keys)
     rows = []
     for c in cands:
         cells = []
         for k in keys:
-            v = c["margins"].get(k, "")
+            v = c.margins.get(k, "")
             cls = []
             if isinstance(v, float) and v < 0:
                 cls.append("neg")
-            if k == c["driver"]:
+            if k == c.driver:
                 cls.append("drv")
             text = "" if v == "" else ("n/a" if v is None else f"{v:+.1%}")
             cells.append(f"<td class='{' '.join(cls)}'>{text}</td>")
-        rows.append(f"<tr><td>{c['rank']}</td>{design_cell(c)}"
-                    f"<td>{'yes' if c['feasible'] else 'no'}</td><td class='l'>{_e(c['driver'])}</td>{''.join(cells)}</tr>")
+        rows.append(f"<tr><td>{c.rank}</td>{design_cell(c)}"
+                    f"<td>{'yes' if c.feasible else 'no'}</td><td class='l'>{_e(c.driver)}</td>{''.join(cells)}</tr>")
     return (f"<div class='scroll'><table><tr><th>rank</th><th class='l'>design</th><th>feasible</th>"
             f"<th class='l'>driver</th>{head}</tr>" + "".join(rows) + "</table></div>")
 
 
-def design_cell(c: dict) -> str:
-    """A design's short name; its full id (the parts list) on hover."""
+def design_cell(c: Mapping) -> str:
+    """A design's short name; its full id (the parts list) on hover (a
+    candidate, or a record that names one)."""
     return f"<td class='id' title='{_e(c['id'])}'>{_e(c.get('name') or c['id'])}</td>"
 
 
-def _design_table(cands: list[dict]) -> str:
+def _design_table(cands: list[Candidate]) -> str:
     rows = []
     for c in cands:
-        m, s, sim = c.get("metrics", {}), c.get("static", {}), c.get("simulated", {})
-        words = presentation(c["technology"]).parts
+        m, s, sim = c.metrics, c.static, c.simulated
+        words = presentation(c.technology).parts
         if words is not None:
             parts = words(c)
         else:                       # no table of parts of its own: its parts by kind
-            parts = f"{tech_label(c['technology'])}: " + ", ".join(f"{v}" for v in (c.get("components") or {}).values())
+            parts = f"{tech_label(c.technology)}: " + ", ".join(f"{v}" for v in c.components.values())
         rows.append(
-            f"<tr><td>{c['rank']}</td>{design_cell(c)}<td class='parts'>{_e(parts)}</td>"
+            f"<tr><td>{c.rank}</td>{design_cell(c)}<td class='parts'>{_e(parts)}</td>"
             f"<td>{_num(m.get('mass_kg'), fmt='{:.1f}')}</td><td>{_num(m.get('cost_usd'), fmt='{:,.0f}')}</td>"
             f"<td>{_num(m.get('volume_m3'), 1e3, '{:.2f}')}</td><td>{_num(m.get('power_W'), fmt='{:.0f}')}</td>"
             f"<td>{_num(s.get('free_stroke_m'), 1e3, '{:.1f}')}</td>"
@@ -112,20 +118,20 @@ def _design_table(cands: list[dict]) -> str:
             "<th>sim. stroke mm</th><th>sim. speed mm/s</th><th>overshoot %</th></tr>" + "".join(rows) + "</table></div>")
 
 
-def _checks_table(cands: list[dict]) -> str:
+def _checks_table(cands: list[Candidate]) -> str:
     """The physics checks beyond the seed, with their values."""
     rows = []
     for c in cands:
-        if not presentation(c["technology"]).checks_table or not c.get("static"):
+        if not presentation(c.technology).checks_table or not c.static:
             continue
-        s, f = c["static"], c.get("fluid_at_temperature", {})
-        temps = "; ".join(f"{k} {v['rated_degC']:g}/{v['required_degC']:g}" for k, v in c.get("temperatures", {}).items())
+        s, f = c.static, c.own.get("fluid_at_temperature", {})
+        temps = "; ".join(f"{k} {v['rated_degC']:g}/{v['required_degC']:g}" for k, v in c.own.get("temperatures", {}).items())
         rows.append(
             f"<tr>{design_cell(c)}<td>{_num(s.get('blocked_pressure_Pa'), 1e-6, '{:.1f}')}</td>"
             f"<td>{_num(s.get('compliance_force_fraction'), 100, '{:.0f}')}</td>"
             f"<td>{_num(s.get('required_current_A'), fmt='{:.2f}')}</td>"
             f"<td>{_num(s.get('natural_frequency_Hz'), fmt='{:.0f}')}</td>"
-            f"<td>{_num(c.get('simulated', {}).get('overshoot'), 100, '{:.1f}')}</td>"
+            f"<td>{_num(c.simulated.get('overshoot'), 100, '{:.1f}')}</td>"
             f"<td>{_num(f.get('kinematic_viscosity_m2_s'), 1e6, '{:.2f}')}</td>"
             f"<td>{_num(f.get('bulk_modulus_Pa'), 1e-9, '{:.2f}')}</td>"
             f"<td>{_num(s.get('thermal_drift_m'), 1e3, '{:.1f}')}</td><td class='l'>{_e(temps)}</td></tr>")
@@ -146,7 +152,7 @@ def _changes(results: dict, limit: int = 60) -> str:
         return ""
     if not changes:
         return "<h2>What changed</h2><p>Nothing changed against the baseline.</p>"
-    names = {c["id"]: c.get("name", c["id"]) for c in results.get("candidates", [])}
+    names = {c.id: c.name or c.id for c in results.get("candidates", [])}
     items = []
     for ch in changes[:limit]:
         text = ch.get("summary") or ", ".join(f"{k}: {v}" for k, v in ch.items() if k != "id")
@@ -169,12 +175,12 @@ def _requirement_value(requirement: str, value) -> str:
     return display_requirement(requirement, value)
 
 
-def _pick_comparison(cands: list[dict]) -> list[dict]:
+def _pick_comparison(cands: list[Candidate]) -> list[Candidate]:
     """The designs the comparison shows: each technology's own picks (its
     best design when it names none), in the technologies' order."""
     picks = []
     for t in technologies():
-        own = [c for c in cands if c["technology"] == t.name]
+        own = [c for c in cands if c.technology == t.name]
         picks += t.report.comparison_picks(own) if t.report.comparison_picks is not None else own[:1]
     return picks
 
@@ -292,9 +298,9 @@ def _ruled_out_text(by_tech: dict, counts: dict | None = None) -> str:
             + "</ul><p>")
 
 
-def _names(cands: list[dict], ids: list[str]) -> list[str]:
+def _names(cands: list[Candidate], ids: list[str]) -> list[str]:
     """Short names of the candidates ``ids``, in order (the id where none)."""
-    by_id = {c["id"]: c.get("name", c["id"]) for c in cands}
+    by_id = {c.id: c.name or c.id for c in cands}
     return [by_id.get(i, i) for i in ids]
 
 
@@ -304,6 +310,7 @@ def _figure_div(fig) -> str:
 
 
 def render(results: dict, traces: list[dict]) -> str:
+    """report.html of a solve's results (its candidates ``Candidate``s)."""
     cands = results["candidates"]
     heading, title = _comparison_titles()
     figs = [pareto_figure(results), traces_figure(results, traces),
@@ -312,26 +319,26 @@ def render(results: dict, traces: list[dict]) -> str:
                       config={"displaylogo": False, "responsive": True}) for i, f in enumerate(figs)]
     req = results["requirements"]
     summary = results["summary"]
-    feasible = [c for c in cands if c["feasible"]]
+    feasible = [c for c in cands if c.feasible]
     top = feasible[:10]
-    shown_ids = {c["id"] for c in top}
+    shown_ids = {c.id for c in top}
     best_each = []
     for g in summary["groups"]:
         for key in ("best", "closest"):
             cid = g.get(key)
             if cid and cid not in shown_ids:
-                best_each.extend(c for c in cands if c["id"] == cid)
+                best_each.extend(c for c in cands if c.id == cid)
                 shown_ids.add(cid)
     verdicts = "".join(f"<li><b>{_e(g['label'])}</b>: {_e(g['text'])}</li>" for g in summary["groups"])
     headline = ("<div class='box ok'>" + f"{len(feasible)} feasible designs; Pareto front: "
                 + _e(", ".join(_names(cands, summary["pareto"])) or "empty") + "</div>") if feasible else (
         "<div class='box'><b>No design meets every requirement.</b> What blocks each technology is listed below.</div>")
-    comp = [c for c in cands if c.get("variant") == "compensated" and c.get("stage") != "pruned"][:10]
-    plain = [c for c in cands if c.get("variant") == "uncompensated" and c.get("stage") not in ("pruned",)][:10]
+    comp = [c for c in cands if c.variant == "compensated" and c.stage != "pruned"][:10]
+    plain = [c for c in cands if c.variant == "uncompensated" and c.stage not in ("pruned",)][:10]
     checks = "".join(f"<li><b>{_e(k)}</b>: {_e(v)}</li>" for k, v in CHECKS.items())
     assumptions = "".join(f"<li>{_e(a)}</li>" for a in results["assumptions"])
     dis = results["disagreements"]
-    short = {c["id"]: c.get("name") for c in results.get("candidates", [])}
+    short = {c.id: c.name for c in results.get("candidates", [])}
     dis_html = ("<p>The static screen and the simulation agree within 10 % on stroke and speed for every "
                 "simulated design, and never disagree on a verdict.</p>" if not dis else
                 "<table><tr><th class='l'>design</th><th class='l'>requirement</th><th>static</th><th>simulated</th>"

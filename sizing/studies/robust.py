@@ -25,6 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..engine.candidate import Candidate, as_candidate
 from ..engine.loads import load_cases
 from ..engine.rank import nondominated_levels
 from ..engine.sized import study_designs
@@ -72,29 +73,33 @@ def _finite(v) -> float:
     return -math.inf if v is None or (isinstance(v, float) and math.isnan(v)) else float(v)
 
 
-def pick_designs(results: dict, k: int, technology: str | None = None) -> list[dict]:
+def pick_designs(results: dict, k: int, technology: str | None = None) -> list[Candidate]:
     """The K best candidates robust can perturb, in rank order (their
     technology says which: ``Technology.perturbable``, some only when
-    asked for by name); only ``technology``'s when given."""
-    out = [c for c in results["candidates"] if "design" in c and (tech := get(c["technology"])) is not None
-           and tech.perturbable(c, technology) and technology in (None, c["technology"])]
+    asked for by name); only ``technology``'s when given. ``results``: a
+    solve's, or a results.json read back."""
+    out = [c for c in map(as_candidate, results["candidates"]) if c.design is not None
+           and (tech := get(c.technology)) is not None and tech.perturbable(c, technology)
+           and technology in (None, c.technology)]
     return out[:k]
 
 
-def robust(req, catalog, candidates: list[dict], samples: int, seed: int, executor: Executor,
+def robust(req, catalog, candidates: list, samples: int, seed: int, executor: Executor,
            progress=None, batch: int = BATCH, extra_spreads: dict | None = None, stages=None) -> dict:
-    """robust.json for ``candidates`` (results.json entries). ``extra_spreads``:
+    """robust.json for ``candidates`` (``pick_designs``'s, or results.json
+    records). ``extra_spreads``:
     tolerances added to (and overriding) the requirements' ones, e.g. the
     Bouc-Wen spreads of a fit (``io.fit_spreads``). ``stages``: the solve's
     records (``SolveOutput.stages``), whose designs are taken as sized instead of being read back from results.json."""
+    candidates = [as_candidate(c) for c in candidates]
     tols = tolerances_of({**req.tolerance_spreads, **(extra_spreads or {})})
     loads = [c["load_N"] for c in load_cases(req.load)]
     designs = study_designs(req, catalog, candidates, stages)
     tasks = []
     for d, (cand, design) in enumerate(zip(candidates, designs)):
         for b, start in enumerate(range(0, samples, batch)):
-            tasks.append(BatchTask(req, catalog, design, cand["id"], tols, seed, d, b,
-                                   min(batch, samples - start), loads, cand["technology"]))
+            tasks.append(BatchTask(req, catalog, design, cand.id, tols, seed, d, b,
+                                   min(batch, samples - start), loads, cand.technology))
     done = executor.map(run_batch, tasks, progress=progress)
     out_designs = []
     for d, cand in enumerate(candidates):
@@ -111,7 +116,7 @@ def robust(req, catalog, candidates: list[dict], samples: int, seed: int, execut
             "designs": out_designs}
 
 
-def _summarise(cand: dict, parts: list[dict], seed: int) -> dict:
+def _summarise(cand: Candidate, parts: list[dict], seed: int) -> dict:
     """The design's figures over its samples; its sensitivity indices are
     over the tolerances that apply to it (``tolerances.applicable``)."""
     names = parts[0]["keys"]
@@ -125,18 +130,18 @@ def _summarise(cand: dict, parts: list[dict], seed: int) -> dict:
     sens = sensitivity(names, z, worst, seed=seed)
     p_req = {k: float(np.mean(margins[k] >= 0)) for k in keys}
     failing = sorted((k for k in keys if p_req[k] < 1.0), key=p_req.get)
-    return {"id": cand["id"], "name": cand.get("name", cand["id"]), "technology": cand["technology"],
-            "rank": cand.get("rank"),
-            "nominal_feasible": cand.get("feasible"), "nominal_driver": cand.get("driver"),
+    return {"id": cand.id, "name": cand.name or cand.id, "technology": cand.technology,
+            "rank": cand.rank,
+            "nominal_feasible": cand.feasible, "nominal_driver": cand.driver,
             "p_compliance": ok / n, "p_ci95": list(wilson(ok, n)),
             "p_requirement": p_req,
             "p_requirement_ci95": {k: list(wilson(int(np.sum(margins[k] >= 0)), n)) for k in keys},
             "failing_requirements": failing,
             "sensitivity": sens,
             "driving_tolerance": max(sens, key=sens.get) if any(v > 0 for v in sens.values()) else None,
-            "nominal_margins": {k: cand["margins"][k] for k in keys if k in cand.get("margins", {})},
+            "nominal_margins": {k: cand.margins[k] for k in keys if k in cand.margins},
             "margin_quantiles": {k: _quantiles(margins[k]) for k in keys},
-            "metrics": {k: cand["metrics"][k] for k in ("mass_kg", "cost_usd") if k in cand.get("metrics", {})}}
+            "metrics": {k: cand.metrics[k] for k in ("mass_kg", "cost_usd") if k in cand.metrics}}
 
 
 def _quantiles(x: np.ndarray) -> dict:

@@ -18,12 +18,16 @@ import json
 import re
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from ..errors import InputError
 from ..io.requirements import parse_requirements
 from .executor import Executor
+
+if TYPE_CHECKING:
+    from ..engine.candidate import Candidate
 
 VARY = re.compile(r"^\s*(?P<field>[A-Za-z_][\w.]*)\s*=\s*(?P<lo>.+?)\s*\.\.\s*(?P<hi>.+?)\s*:\s*(?P<n>\d+)\s*$")
 MAX_POINTS = 400
@@ -102,14 +106,16 @@ def run_point(task: PointTask) -> dict:
 
 
 def point_summary(results: dict, varied: dict) -> dict:
+    """What the sweep keeps of one point's solve (its results, the
+    candidates ``Candidate``s)."""
     cands = results["candidates"]
     from ..technologies.registry import technologies
-    techs = sorted({c["technology"] for c in cands} | {t.name for t in technologies() if t.in_every_sweep_point})
-    feasible = {t: sum(1 for c in cands if c["technology"] == t and c.get("feasible")) for t in techs}
-    best_by = {t: _brief(next((c for c in cands if c["technology"] == t and c.get("feasible")), None)) for t in techs}
-    best = _brief(cands[0] if cands and cands[0].get("feasible") else None)
-    front = [{"id": c["id"], "name": c.get("name", c["id"]), "technology": c["technology"], **_two(c["metrics"])}
-             for c in cands if c.get("pareto")]
+    techs = sorted({c.technology for c in cands} | {t.name for t in technologies() if t.in_every_sweep_point})
+    feasible = {t: sum(1 for c in cands if c.technology == t and c.feasible) for t in techs}
+    best_by = {t: _brief(next((c for c in cands if c.technology == t and c.feasible), None)) for t in techs}
+    best = _brief(cands[0] if cands and cands[0].feasible else None)
+    front = [{"id": c.id, "name": c.name or c.id, "technology": c.technology, **_two(c.metrics)}
+             for c in cands if c.pareto]
     return {"varied": varied, "requirements": results["requirements"], "feasible": feasible, "best": best,
             "best_by_technology": best_by, "front": front,
             "requirements_sha256": results["requirements_sha256"], "runtime_s": results.get("runtime_s")}
@@ -119,11 +125,11 @@ def _two(metrics: dict) -> dict:
     return {k: metrics[k] for k in ("mass_kg", "cost_usd") if k in metrics}
 
 
-def _brief(c: dict | None) -> dict | None:
+def _brief(c: Candidate | None) -> dict | None:
     if c is None:
         return None
-    return {"id": c["id"], "name": c.get("name", c["id"]), "technology": c["technology"],
-            "metrics": dict(c["metrics"]), "driver": c.get("driver"), "rank": c.get("rank")}
+    return {"id": c.id, "name": c.name or c.id, "technology": c.technology,
+            "metrics": dict(c.metrics), "driver": c.driver, "rank": c.rank}
 
 
 def limits(grid: list[dict], varies: list[Vary]) -> dict:

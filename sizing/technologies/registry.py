@@ -94,8 +94,9 @@ class Technology:
 
     ``solve(req, catalog, loads, progress, detail)`` enumerates, sizes and
     verifies its designs and returns ``(records.Outcome, its records)``;
-    ``short_name(c)`` and ``describe(c, catalog)`` read a candidate dict
-    (results.json); ``traces(req, candidate, stages, loads)`` re-simulates
+    ``short_name(c)`` and ``describe(c, catalog)`` read a candidate
+    (``engine.candidate.Candidate``, which also reads as its results.json
+    record); ``traces(req, candidate, stages, loads)`` re-simulates
     one design with its time traces kept (None: it has none);
     ``disagreements(records, names)`` lists where its static screen and its
     simulation disagree (results.json ``disagreements``)."""

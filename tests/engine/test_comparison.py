@@ -2,10 +2,16 @@
 is compared through its lightest design that misses only one check."""
 import pytest
 
-from sizing.engine.comparison import technology_comparison
+from sizing.engine.candidate import Candidate
+from sizing.engine.comparison import technology_comparison as _comparison
 from sizing.io.requirements import load_requirements
 
 from ..conftest import STUDIES
+
+
+def technology_comparison(req, cands, *args, **kwargs):
+    """The comparison of the candidates these records stand for."""
+    return _comparison(req, [Candidate.from_dict(c) for c in cands], *args, **kwargs)
 
 
 def _cand(id_, tech, feasible, margins, mass, rank, stage="simulated"):
@@ -96,10 +102,11 @@ def test_names_are_unique_short_and_stable():
     design whatever the others are."""
     from sizing.engine import names
     base = {"technology": "dc_motor", "variant": "parts"}
-    a = dict(base, id="dc-a", components={"motor": "allied-mf0127008-48v", "screw": "hiwin-r12-05k4",
-                                          "gear": "belt-2", "drive": "servo-48v-10a"})
-    b = dict(base, id="dc-b", components=dict(a["components"], drive="servo-96v-12a"))
-    c = dict(base, id="dc-c", components=dict(a["components"], screw="thk-bif1605-5"))
+    a = Candidate.from_dict(dict(base, id="dc-a", components={"motor": "allied-mf0127008-48v",
+                                                              "screw": "hiwin-r12-05k4", "gear": "belt-2",
+                                                              "drive": "servo-48v-10a"}))
+    b = a.with_fields(id="dc-b", components=dict(a.components, drive="servo-96v-12a"))
+    c = a.with_fields(id="dc-c", components=dict(a.components, screw="thk-bif1605-5"))
     assert names.unique([a]) == ["DC MF0127008 R12-05K4 belt-2"]
     got = names.unique([a, b, c])
     assert len(set(got)) == 3 and all(len(n) <= 32 for n in got)

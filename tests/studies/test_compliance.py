@@ -94,5 +94,8 @@ def test_report_and_terminal_flag_knife_edges(seed_solve):
 
 
 def test_knife_edges_are_the_margins_under_one_percent():
-    cand = {"margins": {"a": 0.0, "b": 0.0099, "c": 0.01, "d": -0.2, "e": None, "f": float("inf")}}
+    from sizing.engine.candidate import Candidate
+    cand = Candidate("ph-x", "piezohydraulic",
+                     margins={"a": 0.0, "b": 0.0099, "c": 0.01, "d": -0.2, "e": None, "f": float("inf")})
     assert compliance.knife_edges(cand) == {"a": 0.0, "b": 0.0099}
+    assert compliance.knife_edges(None) == {}

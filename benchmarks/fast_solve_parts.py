@@ -12,6 +12,10 @@ in the same run, with a check that both give the same answer to the bit:
 - the DC simulator's reference lookup (``sim/dc_motor.py``): numba's
   ``np.interp`` on a scalar (old, three arrays a call) or ``_interp``, in a
   loop of as many lookups as the seed's DC simulations make;
+- the pump simulator (``sim/pump.py``): its step's helpers left to LLVM
+  (old, the module's source without ``inline="always"``, compiled outside
+  the timing) or inlined by numba, on the seed's and the low-duty
+  solve's pump candidates;
 - the whole command (``sizing solve studies/seed-requirements.toml --fast``,
   a fresh process each time, warm caches), with the collector's full pass
   every 10 gen-1 passes (Python's default, old) or every
@@ -146,6 +150,50 @@ def reference_lookup(repeat: int) -> None:
           f"({t_old / t_new:.1f}x), same sum to the bit: {a == b}")
 
 
+def pump_kernel(repeat: int) -> None:
+    """The pump kernel as the module is and with its helpers not inlined,
+    on the rows the seed's and low-duty solves simulate."""
+    import importlib.util
+
+    import sizing.sim.pump as pump
+    from sizing.engine.loads import load_cases
+    from sizing.io.catalog import load_catalog
+    from sizing.io.requirements import load_requirements
+    from sizing.technologies.piezo_pump import designs
+    source = Path(pump.__file__).read_text().replace(', inline="always"', "")
+    folder = Path(tempfile.mkdtemp(prefix="pump-not-inlined-"))
+    (folder / "pump_not_inlined.py").write_text(source.replace("from ..physics", "from sizing.physics")
+                                                .replace("from .params", "from sizing.sim.params"))
+    spec = importlib.util.spec_from_file_location("pump_not_inlined", folder / "pump_not_inlined.py")
+    old = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = old                  # its dataclass looks its module up
+    spec.loader.exec_module(old)
+    rows, run = [], pump._run
+
+    def capture(P, out):
+        rows.append(P.copy())
+        run(P, out)
+    pump._run = capture
+    try:
+        for path in (SEED, SEED.with_name("seed-requirements-low-duty.toml")):
+            req = load_requirements(path)[0]
+            designs.pump_designs(req, load_catalog(None), [c["load_N"] for c in load_cases(req.load)])
+    finally:
+        pump._run = run
+
+    def every(kernel):
+        outs = [np.zeros((len(P), len(pump.OUTPUTS))) for P in rows]
+        for P, out in zip(rows, outs):
+            kernel(P, out)
+        return outs
+    every(old._run)                               # compiled outside the timing
+    t_old, a = best(lambda: every(old._run), repeat)
+    t_new, b = best(lambda: every(run), repeat)
+    same = all(x.tobytes() == y.tobytes() for x, y in zip(a, b))
+    print(f"pump simulations ({sum(len(P) for P in rows)} runs): {t_old:.3f} s helpers not inlined, "
+          f"{t_new:.3f} s inlined ({t_old / t_new:.2f}x), bit-identical: {same}")
+
+
 SOLVE = """
 import sys
 from sizing.api import output
@@ -185,6 +233,7 @@ def main() -> None:
     reason_counts(args.repeat)
     structure(args.repeat)
     reference_lookup(args.repeat)
+    pump_kernel(args.repeat)
     whole_solve(args.repeat)
 
 

@@ -12,7 +12,7 @@ in the same run, with a check that both give the same answer to the bit:
 - the DC simulator's reference lookup (``sim/dc_motor.py``): numba's
   ``np.interp`` on a scalar (old, three arrays a call) or ``_interp``, in a
   loop of as many lookups as the seed's DC simulations make;
-- the pump simulator (``sim/pump.py``): its step's helpers left to LLVM
+- the pump simulator (``sim/pump.py``): its step's functions left to LLVM
   (old, the module's source without ``inline="always"``, compiled outside
   the timing) or inlined by numba, on the seed's and the low-duty
   solve's pump candidates;
@@ -113,9 +113,10 @@ def structure(repeat: int) -> None:
                 st.once_per_distinct(st.rod, F, shaft, travel=rows["travel"]))
     t_old, (nut_old, rod_old) = best(every_row, repeat)
     t_new, (nut_new, rod_new) = best(distinct_rows, repeat)
-    same = nut_old.tobytes() == nut_new.tobytes() and all(
-        np.broadcast_arrays(rod_old[k], rod_new[k])[0].tobytes() == np.broadcast_arrays(rod_new[k], rod_old[k])[0].tobytes()
-        for k in rod_old)
+    def bits(a, b):
+        a, b = np.broadcast_arrays(a, b)
+        return a.tobytes() == b.tobytes()
+    same = bits(nut_old, nut_new) and all(bits(rod_old[k], rod_new[k]) for k in rod_old)
     print(f"DC structure, nut and rod of {len(F)} screened combinations: {t_old:.3f} s every row, "
           f"{t_new:.3f} s once per distinct row ({t_old / t_new:.1f}x), bit-identical: {same}")
 
@@ -151,7 +152,7 @@ def reference_lookup(repeat: int) -> None:
 
 
 def pump_kernel(repeat: int) -> None:
-    """The pump kernel as the module is and with its helpers not inlined,
+    """The pump kernel as the module is and with its step's functions not inlined,
     on the rows the seed's and low-duty solves simulate."""
     import importlib.util
 
@@ -190,7 +191,7 @@ def pump_kernel(repeat: int) -> None:
     t_old, a = best(lambda: every(old._run), repeat)
     t_new, b = best(lambda: every(run), repeat)
     same = all(x.tobytes() == y.tobytes() for x, y in zip(a, b))
-    print(f"pump simulations ({sum(len(P) for P in rows)} runs): {t_old:.3f} s helpers not inlined, "
+    print(f"pump simulations ({sum(len(P) for P in rows)} runs): {t_old:.3f} s not inlined, "
           f"{t_new:.3f} s inlined ({t_old / t_new:.2f}x), bit-identical: {same}")
 
 

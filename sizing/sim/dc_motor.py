@@ -46,7 +46,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numba
-from numba.np.arraymath import binary_search_with_guess
 import numpy as np
 
 from ..errors import SimulationError
@@ -232,21 +231,18 @@ def _play(o, y, half):
 
 @numba.njit(cache=True)
 def _interp(x, xp, fp):
-    """``np.interp(x, xp, fp)`` for one x (``xp`` strictly or not increasing,
-    ``len(xp) == len(fp) > 0``): numba's own search and formula, bit for bit,
-    without the three arrays its ``np.interp`` makes for a scalar at every
-    controller tick."""
+    """``np.interp(x, xp, fp)`` for one x (``xp`` non-decreasing, as long as
+    ``fp``, not empty), bit for bit, without the three arrays numba's
+    ``np.interp`` makes for a scalar at every controller tick: the same
+    segment (the last sample at or before x, which numpy's search finds
+    whatever its guess) and the same formula."""
     n = xp.shape[0]
-    if n == 1:
-        return fp[0]
     if np.isnan(x):
         return x
-    j = binary_search_with_guess(x, xp, n, 0)
-    if j == -1:
+    j = np.searchsorted(xp, x, side="right") - 1
+    if j < 0:
         return fp[0]
-    if j == n:
-        return fp[n - 1]
-    if j == n - 1 or xp[j] == x:
+    if j >= n - 1 or xp[j] == x:
         return fp[j]
     slope = (fp[j + 1] - fp[j]) / (xp[j + 1] - xp[j])
     r = slope * (x - xp[j]) + fp[j]

@@ -68,7 +68,7 @@ P_ATM = 101325.0
 POLYTROPIC = 1.4
 ROOT_TOLERANCE = 0.5     # Pa on the outlet's pressure difference
 ROOT_ITERATIONS = 80
-# The step's helpers are inlined into the kernel by numba (``inline="always"``),
+# The step's functions are inlined into the kernel by numba (``inline="always"``),
 # not left to LLVM: the chamber's root solve calls them a dozen times a step,
 # and inlined the seed's pump simulations take 10 % less CPU. Inlining moves
 # no operation (no fast-math, no contraction): the results are the same to

@@ -20,6 +20,7 @@ plotly bundle is made only while it is written.
 from __future__ import annotations
 
 import gc
+import threading
 from collections.abc import Mapping
 from contextlib import contextmanager
 from pathlib import Path
@@ -80,16 +81,27 @@ def write(result, dest: str | Path | None = None, option: str = "--out") -> list
 FULL_COLLECTION_EVERY = 1000
 
 
+_COLLECTIONS = {"running": 0, "was": None}
+_COLLECTIONS_LOCK = threading.Lock()
+
+
 @contextmanager
 def few_full_collections():
     """The garbage collector's full passes made rare while a command
-    computes and writes; its thresholds as they were afterwards."""
-    was = gc.get_threshold()
-    gc.set_threshold(was[0], was[1], max(was[2], FULL_COLLECTION_EVERY))
+    computes and writes; its thresholds as they were once the last of the
+    commands running at once (threads) returns."""
+    with _COLLECTIONS_LOCK:
+        if not _COLLECTIONS["running"]:
+            was = _COLLECTIONS["was"] = gc.get_threshold()
+            gc.set_threshold(was[0], was[1], max(was[2], FULL_COLLECTION_EVERY))
+        _COLLECTIONS["running"] += 1
     try:
         yield
     finally:
-        gc.set_threshold(*was)
+        with _COLLECTIONS_LOCK:
+            _COLLECTIONS["running"] -= 1
+            if not _COLLECTIONS["running"]:
+                gc.set_threshold(*_COLLECTIONS["was"])
 
 
 def produce(names, dest, inputs, compute):

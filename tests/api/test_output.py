@@ -120,3 +120,17 @@ def test_a_command_runs_with_rare_full_collections_and_restores_the_collector(tm
         output.produce(["a.txt"], tmp_path / "out", (), compute)
     assert seen == [(before[0], before[1], max(before[2], output.FULL_COLLECTION_EVERY))]
     assert gc.get_threshold() == before
+
+
+def test_commands_running_at_once_leave_the_collector_as_it_was():
+    """Two commands whose runs overlap (threads): the collector keeps the
+    raised threshold until the last returns, then has its own back."""
+    import gc
+    before = gc.get_threshold()
+    first, second = output.few_full_collections(), output.few_full_collections()
+    first.__enter__()
+    second.__enter__()
+    first.__exit__(None, None, None)
+    assert gc.get_threshold()[2] == max(before[2], output.FULL_COLLECTION_EVERY)
+    second.__exit__(None, None, None)
+    assert gc.get_threshold() == before

@@ -230,6 +230,30 @@ def _play(o, y, half):
 
 
 @numba.njit(cache=True)
+def _interp(x, xp, fp):
+    """``np.interp(x, xp, fp)`` for one x (``xp`` non-decreasing, as long as
+    ``fp``, not empty), bit for bit, without the three arrays numba's
+    ``np.interp`` makes for a scalar at every controller tick: the same
+    segment (the last sample at or before x, which numpy's search finds
+    whatever its guess) and the same formula."""
+    n = xp.shape[0]
+    if np.isnan(x):
+        return x
+    j = np.searchsorted(xp, x, side="right") - 1
+    if j < 0:
+        return fp[0]
+    if j >= n - 1 or xp[j] == x:
+        return fp[j]
+    slope = (fp[j + 1] - fp[j]) / (xp[j + 1] - xp[j])
+    r = slope * (x - xp[j]) + fp[j]
+    if np.isnan(r):                 # nan one way: the other way, then the flat segment's value
+        r = slope * (x - xp[j + 1]) + fp[j + 1]
+        if np.isnan(r) and fp[j] == fp[j + 1]:
+            r = fp[j]
+    return r
+
+
+@numba.njit(cache=True)
 def _simulate_one(p, t_ref, r_row, t_out, rec, heat):
     c1, c2, lead, rate, kp, ki, kd = p[0], p[1], p[2], p[3], p[4], p[5], p[6]
     d_meas, i_max, F0, kL, eta, kt, Fc = p[7], p[8], p[9], p[10], p[11], p[12], p[13]
@@ -248,7 +272,7 @@ def _simulate_one(p, t_ref, r_row, t_out, rec, heat):
     m = y           # the measured position (behind the play; y without one)
     # rest under the load: the integrator already holds the load current
     integ = (F0 * to_current / ki) if ki != 0.0 else 0.0
-    e_prev = np.interp(t_out[0], t_ref, r_row) - y
+    e_prev = _interp(t_out[0], t_ref, r_row) - y
     y_prev = y
     t = t_out[0]
     i = ki * integ          # the holding current, so the rest is a rest
@@ -286,7 +310,7 @@ def _simulate_one(p, t_ref, r_row, t_out, rec, heat):
         sq += sq_Ts
         t += Ts
         m = _play(m, y, half) if half > 0.0 else y
-        r = np.interp(t, t_ref, r_row)
+        r = _interp(t, t_ref, r_row)
         err = r - m
         deriv = -(m - y_prev) / Ts if d_meas > 0.5 else (err - e_prev) / Ts
         prop = -m if p_meas > 0.5 else err

@@ -103,3 +103,34 @@ def test_the_command_line_calls_only_the_api():
 def test_every_command_family_is_one_module():
     families = {p.stem for p in Path(api.__file__).parent.glob("*.py")}
     assert {"solution", "evaluation", "fitting", "diagnosis", "studies", "catalogs", "output"} <= families
+
+
+def test_a_command_runs_with_rare_full_collections_and_restores_the_collector(tmp_path):
+    """While ``produce`` computes and writes, the collector's full pass comes
+    after FULL_COLLECTION_EVERY young passes (not Python's 10); its
+    thresholds are restored afterwards, also when the command fails."""
+    import gc
+    before = gc.get_threshold()
+    seen = []
+
+    def compute():
+        seen.append(gc.get_threshold())
+        raise RuntimeError("fails")
+    with pytest.raises(RuntimeError):
+        output.produce(["a.txt"], tmp_path / "out", (), compute)
+    assert seen == [(before[0], before[1], max(before[2], output.FULL_COLLECTION_EVERY))]
+    assert gc.get_threshold() == before
+
+
+def test_commands_running_at_once_leave_the_collector_as_it_was():
+    """Two commands whose runs overlap (threads): the collector keeps the
+    raised threshold until the last returns, then has its own back."""
+    import gc
+    before = gc.get_threshold()
+    first, second = output.few_full_collections(), output.few_full_collections()
+    first.__enter__()
+    second.__enter__()
+    first.__exit__(None, None, None)
+    assert gc.get_threshold()[2] == max(before[2], output.FULL_COLLECTION_EVERY)
+    second.__exit__(None, None, None)
+    assert gc.get_threshold() == before

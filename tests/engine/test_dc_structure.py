@@ -260,3 +260,25 @@ def test_end_cap_plate_and_clevis_hand_computed_and_sized_members_pass_their_che
         m = out["margins"][name]
         assert np.all(m >= 0), (name, m.min())
         assert np.any(m < 1e-6), name          # some are sized by the force, not the floor
+
+
+def test_members_sized_once_per_distinct_row_are_the_same_to_the_bit():
+    """``once_per_distinct`` sizes each distinct (force, shaft) row once: the
+    rod and housing of 600 rows with 40 distinct ones (a zero of either sign
+    and a NaN among them) equal the member sized row by row."""
+    from sizing.technologies.dc_motor import structure as st
+    rng = np.random.default_rng(5)
+    F = rng.uniform(2e3, 2e4, 40)
+    F[:3] = (0.0, -0.0, np.nan)
+    shaft = rng.uniform(6e-3, 2e-2, 40)
+    pick = rng.integers(0, 40, 600)
+    force, d = F[pick], shaft[pick]
+    for sized, direct in ((st.once_per_distinct(st.rod, force, d, travel=0.05), st.rod(force, d, 0.05)),
+                          (st.once_per_distinct(st.housing, force, d + 0.01, 0.12, 3e7),
+                           st.housing(force, d + 0.01, 0.12, 3e7))):
+        assert sized.keys() == direct.keys()
+        for k in direct:
+            a, b = np.broadcast_arrays(sized[k], direct[k])
+            assert a.dtype == b.dtype and a.tobytes() == b.tobytes(), k
+    assert np.array_equal(st.once_per_distinct(st.nut_diameter, np.full(600, 0.05), d),
+                          st.nut_diameter(0.05, d))

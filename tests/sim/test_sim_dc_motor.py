@@ -65,3 +65,20 @@ def test_coulomb_friction_sticks_inside_band():
     out = simulate(model, t, np.where(t > 0, 0.01, 0.0))
     # kp e = 1 A is far below the 1000 N friction band (3.5 A): no motion
     assert np.all(out["position_m"][0] == 0.0)
+
+
+def test_scalar_interpolation_is_numpys_bit_for_bit():
+    """The controller's reference lookup (``_interp``) gives numpy's
+    ``np.interp`` exactly: inside, on and outside the samples, at repeated
+    sample times, on a step and at NaN."""
+    from sizing.sim.dc_motor import _interp
+    rng = np.random.default_rng(3)
+    xp = np.cumsum(rng.uniform(0.0, 1e-3, 200))
+    xp[50:53] = xp[50]                                   # repeated sample times
+    fp = rng.normal(size=200)
+    fp[120:] = 0.05                                      # a flat step
+    xs = np.concatenate([rng.uniform(xp[0] - 1e-3, xp[-1] + 1e-3, 2000), xp, [np.nan, xp[50], -np.inf, np.inf]])
+    got = np.array([_interp(x, xp, fp) for x in xs])
+    want = np.interp(xs, xp, fp)
+    assert np.array_equal(got, want, equal_nan=True)
+    assert _interp(0.3, xp[:1], fp[:1]) == fp[0]

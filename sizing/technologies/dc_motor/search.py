@@ -146,14 +146,18 @@ def search(catalog, req, loads) -> SearchResult:
 
     # 3. gear x screw
     t_need = screw_phys.torque_for_force(F_req, lead[isc], eta_s[isc])
-    g_reason = np.select(
+    g_reasons = ("temperature", "blocked_force", "gear_torque", "speed")
+    # each row's first failing check as an index into g_reasons (0: none);
+    # integer codes, counted by bincount: half a million rows of strings
+    # cost a tenth of a second to compare
+    g_code = np.select(
         [c("gear_max_temperature")[ig] < T, c("gear_max_output_torque")[ig] < t_need * (1 - 1e-12),
          c("gear_continuous_output_torque")[ig] < screw_phys.torque_for_force(F_load, lead[isc], eta_s[isc]),
          screw_phys.output_speed(c("gear_max_input_speed")[ig], lead[isc], g_ratio[ig]) < v_req],
-        ["temperature", "blocked_force", "gear_torque", "speed"], "")
-    for reason in set(g_reason) - {""}:
-        _add(counts, reason, np.sum(g_reason == reason))
-    ok = g_reason == ""
+        np.arange(1, len(g_reasons) + 1), 0)
+    for reason, n in zip(g_reasons, np.bincount(g_code, minlength=len(g_reasons) + 1)[1:]):
+        _add(counts, reason, n)
+    ok = g_code == 0
     im, isc, ig, idr = im[ok], isc[ok], ig[ok], idr[ok]
 
     # 4. the static screen, in chunks
@@ -168,9 +172,10 @@ def search(catalog, req, loads) -> SearchResult:
         good = worst >= 0
         feasible.append(begin + np.flatnonzero(good))
         bad = np.flatnonzero(~good)
-        reason = np.array(names, dtype=object)[Mx[:, bad].argmin(axis=0)]
-        for name in names:
-            _add(counts, name, np.sum(reason == name))
+        missed = Mx[:, bad].argmin(axis=0)
+        reason = np.array(names, dtype=object)[missed]
+        for name, n in zip(names, np.bincount(missed, minlength=len(names))):
+            _add(counts, name, n)
         pool = np.concatenate([near, begin + bad])
         pool_worst = np.concatenate([near_worst, np.maximum(worst[bad], -1e300)])
         pool_reason = np.concatenate([near_reason, reason])

@@ -59,6 +59,7 @@ def screen_ranked(bench, effect, seed: int = 0, head=(), z_heads=(np.zeros(0),))
     sizes = [effect.unit(s) for s in effect.sizes_for(bench.rig, bench.model) if s]
     sizes += list(effect.starts(bench, head, z_heads[0]))   # from the data (e.g. residual spectrum lines)
     n = max(DEFAULT.n_screen * d, DEFAULT.min_screen) * (4 if effect.post else 1)
+    n *= int(effect.extra.get("screen_factor", 1))       # a rugged cost: a denser screen (seal stick-slip)
     Z = np.vstack(sizes + [_lhs(n, d, seed)]) if sizes else _lhs(n, d, seed)
     Z = np.clip(Z, 0.0, 1.0)
     ranked = []

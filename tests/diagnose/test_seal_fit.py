@@ -85,3 +85,20 @@ def test_a_karnopp_seal_campaign_is_a_needle_in_its_parameters():
     score = np.sqrt(fitting.cost(bench, [effect], Z, bench.train))
     assert score[0] < 1.5e-3
     assert np.all(score[1:] > 10 * synth.POSITION_NOISE)
+
+
+def test_a_rugged_effect_is_screened_more_densely(monkeypatch):
+    """The screen holds the sizes and max(n_screen d, min_screen) Latin-
+    hypercube points, ``screen_factor`` times as many for a rugged effect:
+    2 + 30 points for a two-parameter effect, 2 + 240 for the Karnopp seal."""
+    seen = []
+    monkeypatch.setattr(attribution.fitting, "cost", lambda bench, effects, Z, runs: seen.append(len(Z)) or Z[:, 0])
+
+    class _Bench:
+        train, rig, model = [0], None, None
+
+    plain = Effect(name="toy", technology="piezohydraulic", params=seal_stick_slip.KARNOPP.params,
+                   sizes=seal_stick_slip.KARNOPP.sizes)
+    attribution.screen_ranked(_Bench(), plain)
+    attribution.screen_ranked(_Bench(), seal_stick_slip.KARNOPP)
+    assert seen == [32, 242]

@@ -8,7 +8,9 @@ floor.py:
    least ``min_screen``), one simulator batch per effect, scored on the
    training runs.
 2. Fit the promising effects (least squares on the training runs, from the
-   best screened point): the best-screened form of each of the ``top_fit`` best
+   best screened point; an effect whose cost is rugged, the Karnopp seal,
+   screened densely and fitted from several distinct screened points, the
+   best on the training runs kept): the best-screened form of each of the ``top_fit`` best
    families, and any form that screens at < ``fit_below`` x the baseline; judge every
    effect on the holdout runs only.
 3. Pairs: unless the best single explains the gap and leaves at most

@@ -46,28 +46,36 @@ def screen(bench, effect, seed: int = 0, head=(), z_heads=(np.zeros(0),)) -> tup
     """(best unit point, its training score, the head start it was found
     with) over sizes + a Latin hypercube; ``head`` effects (the
     re-calibrated parameters) held at each of ``z_heads`` in turn."""
-    c, z, zh = screen_ranked(bench, effect, seed, head, z_heads)[0]
+    c, z, zh, _ = screen_ranked(bench, effect, seed, head, z_heads, dense=False)[0]
     return z, float(np.sqrt(c)), zh
 
 
-def screen_ranked(bench, effect, seed: int = 0, head=(), z_heads=(np.zeros(0),)) -> list:
-    """Every screened point of ``screen`` as (mean squared training score,
-    unit point, head start), best first."""
+def screen_ranked(bench, effect, seed: int = 0, head=(), z_heads=(np.zeros(0),), dense: bool = True) -> list:
+    """Every screened point as (mean squared training score, unit point,
+    head start, regular), best first. ``regular``: one of the sizes and
+    the Latin hypercube every effect is screened with, from which its
+    screening score comes (the families are ranked on equal draws); a
+    rugged effect (``extra["screen_factor"]``) adds ``screen_factor`` - 1
+    times as many further points, used only as starts of its fit (not
+    with ``dense`` False)."""
     train = bench.train
     d = len(effect.params)
     if d == 0:
         scores = [fitting.cost(bench, list(head) + [effect], zh[None, :], train)[0] for zh in z_heads]
-        return sorted([(float(c), np.zeros(0), zh) for c, zh in zip(scores, z_heads)], key=lambda r: r[0])
+        return sorted([(float(c), np.zeros(0), zh, True) for c, zh in zip(scores, z_heads)], key=lambda r: r[0])
     sizes = [effect.unit(s) for s in effect.sizes_for(bench.rig, bench.model) if s]
     sizes += list(effect.starts(bench, head, z_heads[0]))   # from the data (e.g. residual spectrum lines)
     n = max(DEFAULT.n_screen * d, DEFAULT.min_screen) * (4 if effect.post else 1)
-    n *= int(effect.extra.get("screen_factor", 1))       # a rugged cost: a denser screen (seal stick-slip)
     Z = np.vstack(sizes + [_lhs(n, d, seed)]) if sizes else _lhs(n, d, seed)
+    n_regular = len(Z)
+    extra = (int(effect.extra.get("screen_factor", 1)) - 1) * n if dense else 0   # a rugged cost: more starts
+    if extra > 0:
+        Z = np.vstack([Z, _lhs(extra, d, seed + 1)])
     Z = np.clip(Z, 0.0, 1.0)
     ranked = []
     for zh in z_heads:
         scores = fitting.cost(bench, list(head) + [effect], np.hstack([np.tile(zh, (len(Z), 1)), Z]), train)
-        ranked += [(float(c), z, zh) for c, z in zip(scores, Z)]
+        ranked += [(float(c), z, zh, k < n_regular) for k, (c, z) in enumerate(zip(scores, Z))]
     # stable: among equal scores the earlier head start and point, as before
     return sorted(ranked, key=lambda r: r[0])
 
@@ -81,7 +89,7 @@ def fit_starts(ranked, n: int, spacing: float) -> list:
     sample between two nearby parameter sets, and a local least squares
     from one start stops on the first such step."""
     out = []
-    for _, z, zh in ranked:
+    for _, z, zh, *_ in ranked:
         if len(out) == n:
             break
         if all(not np.array_equal(zh, ho) or np.max(np.abs(z - zo), initial=0.0) >= spacing for zo, ho in out):
@@ -119,7 +127,8 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
     effects = [e for e in effects if e.observable(bench, head, z_head)]
     z_heads = (z_head, joint[2]) if joint else (z_head,)
     ranked = {id(e): screen_ranked(bench, e, seed, head, z_heads) for e in effects}
-    screened = [(e, ranked[id(e)][0][1], float(np.sqrt(ranked[id(e)][0][0])), ranked[id(e)][0][2]) for e in effects]
+    regular = {k: next(x for x in r if x[3]) for k, r in ranked.items()}     # the best of the regular points
+    screened = [(e, regular[id(e)][1], float(np.sqrt(regular[id(e)][0])), regular[id(e)][2]) for e in effects]
     screened.sort(key=lambda s: s[2])
     fits = []
 

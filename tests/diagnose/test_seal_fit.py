@@ -40,8 +40,8 @@ def _effect(starts):
 def _ranked():
     # as the screen ranks them: two points in the shallow basin first, then
     # one in the catchment of the true basin (scores: mean squared residual)
-    return [(0.095, np.array([0.21]), np.zeros(0)), (0.096, np.array([0.23]), np.zeros(0)),
-            (0.36, np.array([0.65]), np.zeros(0)), (0.5, np.array([0.02]), np.zeros(0))]
+    return [(0.095, np.array([0.21]), np.zeros(0), True), (0.096, np.array([0.23]), np.zeros(0), True),
+            (0.36, np.array([0.65]), np.zeros(0), True), (0.5, np.array([0.02]), np.zeros(0), True)]
 
 
 def _fit_with(bench):
@@ -89,8 +89,10 @@ def test_a_karnopp_seal_campaign_is_a_needle_in_its_parameters():
 
 def test_a_rugged_effect_is_screened_more_densely(monkeypatch):
     """The screen holds the sizes and max(n_screen d, min_screen) Latin-
-    hypercube points, ``screen_factor`` times as many for a rugged effect:
-    2 + 30 points for a two-parameter effect, 2 + 240 for the Karnopp seal."""
+    hypercube points, and ``screen_factor`` - 1 times as many further
+    points for a rugged effect: 2 + 30 points for a two-parameter effect,
+    2 + 30 + 210 for the Karnopp seal; its screening score (the families'
+    ranking) comes from the 32 regular points only, as another effect's."""
     seen = []
     monkeypatch.setattr(attribution.fitting, "cost", lambda bench, effects, Z, runs: seen.append(len(Z)) or Z[:, 0])
 
@@ -100,5 +102,24 @@ def test_a_rugged_effect_is_screened_more_densely(monkeypatch):
     plain = Effect(name="toy", technology="piezohydraulic", params=seal_stick_slip.KARNOPP.params,
                    sizes=seal_stick_slip.KARNOPP.sizes)
     attribution.screen_ranked(_Bench(), plain)
-    attribution.screen_ranked(_Bench(), seal_stick_slip.KARNOPP)
+    ranked = attribution.screen_ranked(_Bench(), seal_stick_slip.KARNOPP)
     assert seen == [32, 242]
+    assert sum(r[3] for r in ranked) == 32
+    z, score, _ = attribution.screen(_Bench(), seal_stick_slip.KARNOPP)
+    assert seen[-1] == 32 and score == pytest.approx(np.sqrt(min(r[0] for r in ranked if r[3])))
+
+
+def test_a_seal_runs_no_lower_than_the_stated_running_friction():
+    """On a rig the seal forms search the output seal's running friction
+    from its stated value (0.2 N on the prototype) to 20 N; the breakaway
+    ratio keeps its range, so a seal that only sticks at the stated running
+    friction stays in reach."""
+    from sizing.sim.rigs import piezo_model
+    rig = load_rig(ROOT / "studies/campaigns/piezo-prototype/rig.toml")
+    model = piezo_model(rig)
+    for form in seal_stick_slip.FORMS:
+        on_rig = form.for_rig(rig, model)
+        running, ratio = on_rig.params[0], on_rig.params[1]
+        assert (running.lo, running.hi, running.log) == (0.2, 20.0, True)
+        assert (ratio.lo, ratio.hi) == (1.0, 4.0)
+        assert on_rig.extra == form.extra

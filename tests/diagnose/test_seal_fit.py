@@ -120,6 +120,6 @@ def test_a_seal_runs_no_lower_than_the_stated_running_friction():
     for form in seal_stick_slip.FORMS:
         on_rig = form.for_rig(rig, model)
         running, ratio = on_rig.params[0], on_rig.params[1]
-        assert (running.lo, running.hi, running.log) == (0.2, 20.0, True)
+        assert (running.lo, running.hi, running.log) == (0.2, 20.0, False)
         assert (ratio.lo, ratio.hi) == (1.0, 4.0)
         assert on_rig.extra == form.extra

@@ -42,11 +42,13 @@ from .base import Effect, Param
 # (on a campaign of the project's own simulator the injected seal leaves
 # the noise and 1 % away in the running friction more than ten times it),
 # so a local least squares stops on the first step it meets. The Karnopp
-# form is screened at ``screen_factor`` times the usual points and fitted
-# from ``fit_starts`` distinct screened points, the best on the training
-# runs kept (attribution.screen_ranked, fit_best_of_starts): on the
-# independent generator's c01 the screen of 30 points led the fit to
-# 0.030 of the training runs, that of 240 to 0.0089. The LuGre
+# form is fitted from ``fit_starts`` distinct screened points among its
+# regular screen and ``screen_factor`` - 1 times as many further points
+# (starts only: the families are ranked on the regular screen), the best
+# on the training runs kept (attribution.screen_ranked,
+# fit_best_of_starts): on the independent generator's c01 the fit ends at
+# 0.0075 of the training runs (0.030 from starts among 30 points on a log
+# scale of the friction, 0.0089 among 240). The LuGre
 # form's presliding softens the stick; its extra starts moved its
 # training fit by less than 0.3 % on the campaigns measured, at twice the
 # Karnopp form's time per fit, so it keeps one start.

@@ -8,7 +8,9 @@ floor.py:
    least ``min_screen``), one simulator batch per effect, scored on the
    training runs.
 2. Fit the promising effects (least squares on the training runs, from the
-   best screened point): the best-screened form of each of the ``top_fit`` best
+   best screened point; an effect whose cost is rugged, the Karnopp seal,
+   screened densely and fitted from several distinct screened points, the
+   best on the training runs kept): the best-screened form of each of the ``top_fit`` best
    families, and any form that screens at < ``fit_below`` x the baseline; judge every
    effect on the holdout runs only.
 3. Pairs: unless the best single explains the gap and leaves at most
@@ -44,24 +46,55 @@ def screen(bench, effect, seed: int = 0, head=(), z_heads=(np.zeros(0),)) -> tup
     """(best unit point, its training score, the head start it was found
     with) over sizes + a Latin hypercube; ``head`` effects (the
     re-calibrated parameters) held at each of ``z_heads`` in turn."""
+    c, z, zh, _ = screen_ranked(bench, effect, seed, head, z_heads, dense=False)[0]
+    return z, float(np.sqrt(c)), zh
+
+
+def screen_ranked(bench, effect, seed: int = 0, head=(), z_heads=(np.zeros(0),), dense: bool = True) -> list:
+    """Every screened point as (mean squared training score, unit point,
+    head start, regular), best first. ``regular``: one of the sizes and
+    the Latin hypercube every effect is screened with, from which its
+    screening score comes (the families are ranked on equal draws); a
+    rugged effect (``extra["screen_factor"]``) adds ``screen_factor`` - 1
+    times as many further points, used only as starts of its fit (not
+    with ``dense`` False)."""
     train = bench.train
     d = len(effect.params)
     if d == 0:
         scores = [fitting.cost(bench, list(head) + [effect], zh[None, :], train)[0] for zh in z_heads]
-        k = int(np.argmin(scores))
-        return np.zeros(0), float(np.sqrt(scores[k])), z_heads[k]
+        return sorted([(float(c), np.zeros(0), zh, True) for c, zh in zip(scores, z_heads)], key=lambda r: r[0])
     sizes = [effect.unit(s) for s in effect.sizes_for(bench.rig, bench.model) if s]
     sizes += list(effect.starts(bench, head, z_heads[0]))   # from the data (e.g. residual spectrum lines)
     n = max(DEFAULT.n_screen * d, DEFAULT.min_screen) * (4 if effect.post else 1)
     Z = np.vstack(sizes + [_lhs(n, d, seed)]) if sizes else _lhs(n, d, seed)
+    n_regular = len(Z)
+    extra = (int(effect.extra.get("screen_factor", 1)) - 1) * n if dense else 0   # a rugged cost: more starts
+    if extra > 0:
+        Z = np.vstack([Z, _lhs(extra, d, seed + 1)])
     Z = np.clip(Z, 0.0, 1.0)
-    best = None
+    ranked = []
     for zh in z_heads:
         scores = fitting.cost(bench, list(head) + [effect], np.hstack([np.tile(zh, (len(Z), 1)), Z]), train)
-        k = int(np.argmin(scores))
-        if best is None or scores[k] < best[1]:
-            best = (Z[k], float(scores[k]), zh)
-    return best[0], float(np.sqrt(best[1])), best[2]
+        ranked += [(float(c), z, zh, k < n_regular) for k, (c, z) in enumerate(zip(scores, Z))]
+    # stable: among equal scores the earlier head start and point, as before
+    return sorted(ranked, key=lambda r: r[0])
+
+
+def fit_starts(ranked, n: int, spacing: float) -> list:
+    """The starts (unit point, head start) of the local fits of an effect
+    whose training cost is rugged: the best screened point of ``ranked``
+    (``screen_ranked``) and the next best ones at least ``spacing`` (unit
+    coordinates, max norm) from every start already taken, ``n`` in all,
+    best first. A stick-slip's cost jumps where a slip instant moves by a
+    sample between two nearby parameter sets, and a local least squares
+    from one start stops on the first such step."""
+    out = []
+    for _, z, zh, *_ in ranked:
+        if len(out) == n:
+            break
+        if all(not np.array_equal(zh, ho) or np.max(np.abs(z - zo), initial=0.0) >= spacing for zo, ho in out):
+            out.append((z, zh))
+    return out
 
 
 def holdout_score(bench, fit: fitting.EffectFit) -> None:
@@ -93,7 +126,9 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
     head, z_head = ((joint[0],), joint[1]) if joint else ((), np.zeros(0))
     effects = [e for e in effects if e.observable(bench, head, z_head)]
     z_heads = (z_head, joint[2]) if joint else (z_head,)
-    screened = [(e, *screen(bench, e, seed, head, z_heads)) for e in effects]
+    ranked = {id(e): screen_ranked(bench, e, seed, head, z_heads) for e in effects}
+    regular = {k: next(x for x in r if x[3]) for k, r in ranked.items()}     # the best of the regular points
+    screened = [(e, regular[id(e)][1], float(np.sqrt(regular[id(e)][0])), regular[id(e)][2]) for e in effects]
     screened.sort(key=lambda s: s[2])
     fits = []
 
@@ -110,7 +145,7 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
         rank, first_form = family_rank[effect.name]
         promising = (rank < DEFAULT.top_fit and effect is first_form) or score < DEFAULT.fit_below * base_train
         if promising:
-            f = fit_with([effect], z0, start)
+            f = fit_best_of_starts(effect, ranked[id(effect)], fit_with, settings)
         else:
             f = fitting.EffectFit((effect,), z0, score, message="screened only")
         holdout_score(bench, f)
@@ -155,6 +190,17 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
         fits.sort(key=lambda f: f.nrmse_holdout)
         refit_singles(bench, fits, head, len(z_head))
     return fits
+
+
+def fit_best_of_starts(effect, ranked, fit_with, settings: Settings = DEFAULT) -> fitting.EffectFit:
+    """The local fit of one effect from its best screened point or, for an
+    effect that declares a rugged cost (``extra["fit_starts"]``: the seal
+    stick-slip), from that many distinct screened points (``fit_starts``),
+    keeping the fit that leaves the least on the training runs (the
+    verdict still reads the holdout runs only)."""
+    starts = fit_starts(ranked, int(effect.extra.get("fit_starts", 1)), settings.start_spacing)
+    fits = [fit_with([effect], z, zh) for z, zh in starts]
+    return min(fits, key=lambda f: f.nrmse_train)        # the first (best screened) on a tie
 
 
 def _named_z(fit) -> np.ndarray:

@@ -31,10 +31,59 @@ sticking hard. Sizes: as "stribeck", with 10 um and 30 um of presliding.
 """
 from __future__ import annotations
 
+from dataclasses import replace
+
+import numpy as np
+
 from .base import Effect, Param
 
+# A Karnopp stick-slip's training cost is rugged: between two nearby
+# parameter sets a slip stops a whole slip further, and the cost jumps
+# (on a campaign of the project's own simulator the injected seal leaves
+# the noise and 1 % away in the running friction more than ten times it),
+# so a local least squares stops on the first step it meets. The Karnopp
+# form is fitted from ``fit_starts`` distinct screened points among its
+# regular screen and ``screen_factor`` - 1 times as many further points
+# (starts only: the families are ranked on the regular screen), the best
+# on the training runs kept (attribution.screen_ranked,
+# fit_best_of_starts): on the independent generator's c01 the fit ends at
+# 0.0075 of the training runs (0.030 from starts among 30 points on a log
+# scale of the friction, 0.0089 among 240). The LuGre
+# form's presliding softens the stick; its extra starts moved its
+# training fit by less than 0.3 % on the campaigns measured, at twice the
+# Karnopp form's time per fit, so it keeps one start.
+RUGGED = {"fit_starts": 3, "screen_factor": 8}
 
-class SealStribeck(Effect):
+# The output seal's running friction, N, searched on a linear scale up to
+# 20 N; on a rig, from its stated running friction (``AddedFriction``).
+# A log scale (to reach a seal that only sticks, at the stated 0.2 N, with
+# more screened points) was tried: it named no such seal of another
+# simulator (no library seal at that size removed any of their gap), and
+# ranked the seal among the families paired with a creep, which moved
+# that creep's verdict to unexplained.
+RUNNING_N = (0.02, 20.0)
+
+
+class AddedFriction(Effect):
+    """A seal form whose running friction is bounded below by the rig's
+    stated running friction of the output seal: a stick-slip adds a
+    breakaway above a running friction, and a seal that runs below the
+    stated one is a restated nominal, not stick-slip. Searched from 0.02 N
+    on the log scale, a LuGre seal at 0.14 N (breakaway 2.5 x) took up an
+    independent simulator's viscous damping as well as the damping did (p =
+    0.06 between them)."""
+
+    def for_rig(self, rig, model):
+        nominal = float(np.min(getattr(model, "narrow_friction")))
+        first, *rest = self.params
+        if not first.lo < nominal < first.hi:
+            return self
+        return replace(self, params=(replace(first, lo=nominal), *rest))
+
+
+class SealStribeck(AddedFriction):
+
+
     def model_changes(self, model, values):
         return {"narrow_friction": values["narrow_friction_N"], "narrow_breakaway": values["breakaway_ratio"],
                 "narrow_stribeck_velocity": values["stribeck_velocity_m_s"]}
@@ -45,7 +94,7 @@ class SealLuGre(SealStribeck):
         return {**super().model_changes(model, values), "narrow_presliding": values["presliding_m"]}
 
 
-class SealStickSlip(Effect):
+class SealStickSlip(AddedFriction):
     def model_changes(self, model, values):
         ratio = values["breakaway_ratio"]
         return {"narrow_friction": values["narrow_friction_N"],
@@ -53,9 +102,9 @@ class SealStickSlip(Effect):
 
 
 KARNOPP = SealStickSlip(
-    form="karnopp",
+    form="karnopp", extra=RUGGED,
     name="seal_stick_slip", technology="piezohydraulic",
-    params=(Param("narrow_friction_N", 0.0, 20.0, doc="running friction of the output seal"),
+    params=(Param("narrow_friction_N", *RUNNING_N, doc="running friction of the output seal"),
             Param("breakaway_ratio", 1.0, 4.0, doc="breakaway / running friction of both seals")),
     sizes=({"narrow_friction_N": 1.5, "breakaway_ratio": 1.8},
            {"narrow_friction_N": 3.0, "breakaway_ratio": 2.0}),
@@ -64,7 +113,7 @@ KARNOPP = SealStickSlip(
 
 STRIBECK = SealStribeck(
     name="seal_stick_slip", technology="piezohydraulic", form="stribeck",
-    params=(Param("narrow_friction_N", 0.0, 20.0, doc="running friction of the output seal"),
+    params=(Param("narrow_friction_N", *RUNNING_N, doc="running friction of the output seal"),
             Param("breakaway_ratio", 1.0, 4.0, doc="breakaway / running friction of the output seal"),
             Param("stribeck_velocity_m_s", 2e-4, 5e-2, log=True, doc="Stribeck velocity of the output seal")),
     sizes=({"narrow_friction_N": 1.5, "breakaway_ratio": 1.8, "stribeck_velocity_m_s": 5e-3},

@@ -16,6 +16,7 @@ from sizing.diagnose.inputs import hold_rate
 from sizing.diagnose.settings import DEFAULT
 from sizing.io.rig import load_rig
 from sizing.physics.bouc_wen import hysteresis_step
+from .excitations import ramp_and_hold_500hz
 
 ROOT = Path(__file__).resolve().parents[2]
 SIGMA_Y = 3e-4      # position noise, of the span (a 10 mm stroke read to 3 um)
@@ -79,15 +80,9 @@ def test_the_noise_floor_of_a_ramp_and_hold_logged_at_500_Hz_is_the_position_noi
     with the voltage logged again, is within 30 % of the true position
     noise (0.00031 for 0.0003; with the corners held to samples and a kink
     at every sample of a high hold, 0.0023)."""
-    t = np.arange(0.0, 5.0, 2e-3)
-    knots_t, knots_v, at = [0.0, 0.2], [0.0, 0.0], 0.2
-    for level in (40, 85, 125, 150, 100, 55, 15, 0):
-        at += abs(level - knots_v[-1]) / 220.0
-        knots_t += [at, at + 0.45]
-        knots_v += [level, level]
-        at += 0.45
+    t, v = ramp_and_hold_500hz()
     rig = load_rig(ROOT / "studies/campaigns/piezo-prototype/rig.toml")
-    runs = synth.synthesize("piezohydraulic", rig, {"hold": (t, np.interp(t, knots_t, knots_v))},
+    runs = synth.synthesize("piezohydraulic", rig, {"hold": (t, v)},
                             noise=synth.Noise(position=SIGMA_Y, voltage_V=SIGMA_V, seed=3))
     for run in runs:
         run.columns["voltage_V"] = np.round(run.columns["voltage_V"] / 0.02) * 0.02

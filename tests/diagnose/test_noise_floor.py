@@ -12,17 +12,9 @@ from sizing.diagnose.diagnosis import diagnose_runs
 from sizing.diagnose.floor import rest_noise
 from sizing.diagnose.inputs import noise_sigma
 from sizing.io.rig import load_rig
+from .excitations import trapezoids
 
 ROOT = Path(__file__).resolve().parents[2]
-
-
-def _trapezoids(stroke: float, fs: float = 1000.0, duration: float = 2.0) -> dict:
-    """Three runs of ramps and holds, moving about half of the time."""
-    t = np.arange(0.0, duration, 1.0 / fs)
-    knots = {"up": [0, 0.2, 0.7, 1.0, 1.5, 2.0], "down": [0, 0.3, 0.8, 1.1, 1.6, 2.0],
-             "mid": [0, 0.1, 0.6, 1.0, 1.4, 2.0]}
-    levels = {"up": [0, 0, 1, 1, 0.2, 0.2], "down": [0, 0, 0.8, 0.8, 0.1, 0.1], "mid": [0, 0, 0.6, 0.6, 0.9, 0.9]}
-    return {k: (t, stroke * np.interp(t, knots[k], levels[k])) for k in knots}
 
 
 def _staircase(h: float):
@@ -36,7 +28,7 @@ def test_rest_noise_of_a_staircase_during_ramps_is_the_sensor_noise():
     run take the jumps for noise (more than 1.5 sigma), those where the
     nominal is at rest do not (within 10 % of sigma)."""
     rng = np.random.default_rng(3)
-    t, u = _trapezoids(0.01)["up"]
+    t, u = trapezoids(0.01)["up"]
     sigma = 1e-5
     measured = 5 * sigma * np.round(u / (5 * sigma)) + rng.normal(0.0, sigma, len(t))
     estimate, where = rest_noise(measured - u, u, float(np.ptp(u)))
@@ -60,7 +52,7 @@ def test_stick_slip_gap_of_1_3_times_the_noise_is_a_gap():
     floor is estimated within 20 % of the true noise, and the verdict is
     not "no_significant_gap"."""
     rig = load_rig(ROOT / "studies/campaigns/dc-motor/rig.toml")
-    inputs = _trapezoids(0.01)
+    inputs = trapezoids(0.01)
     sigma_rel = 1e-3
     h = 1.3 * np.sqrt(12.0) * sigma_rel * 0.01
     clean = synth.synthesize("dc_motor", rig, inputs, hidden=_staircase(h), noise=synth.Noise(position=0.0))

@@ -5,6 +5,7 @@ import pytest
 
 from sizing.diagnose.inputs import noise_sigma, treat_voltage
 from sizing.diagnose.piecewise import hat_fit, kink_candidates, piecewise_linear
+from .excitations import ramp_and_hold_500hz
 
 T = np.arange(0.0, 2.0, 1e-3)
 
@@ -66,14 +67,7 @@ def _ramp_and_hold_500hz(seed: int, sigma: float, step: float = 0.02):
     """Levels 40-150 V held 0.45 s, joined by 220 V/s ramps (0.44 V a
     sample at 500 Hz), so that the corners fall between samples; logged
     with white noise ``sigma`` and quantised on ``step``."""
-    t = np.arange(0.0, 5.0, 2e-3)
-    knots_t, knots_v, at = [0.0, 0.2], [0.0, 0.0], 0.2
-    for level in (40, 85, 125, 150, 100, 55, 15, 0):
-        at += abs(level - knots_v[-1]) / 220.0
-        knots_t += [at, at + 0.45]
-        knots_v += [level, level]
-        at += 0.45
-    clean = np.interp(t, knots_t, knots_v)
+    t, clean = ramp_and_hold_500hz()
     noisy = np.round((clean + np.random.default_rng(seed).normal(0.0, sigma, t.size)) / step) * step
     return clean, noisy
 

@@ -14,17 +14,10 @@ from sizing.diagnose import synth
 from sizing.diagnose.diagnosis import diagnose_runs
 from sizing.diagnose.settings import DEFAULT
 from sizing.io.rig import load_rig
+from .excitations import trapezoids
 
 ROOT = Path(__file__).resolve().parents[2]
 SIGMA = 1e-3        # position noise, of the span
-
-
-def _trapezoids(stroke: float, fs: float = 1000.0, duration: float = 2.0) -> dict:
-    t = np.arange(0.0, duration, 1.0 / fs)
-    knots = {"up": [0, 0.2, 0.7, 1.0, 1.5, 2.0], "down": [0, 0.3, 0.8, 1.1, 1.6, 2.0],
-             "mid": [0, 0.1, 0.6, 1.0, 1.4, 2.0]}
-    levels = {"up": [0, 0, 1, 1, 0.2, 0.2], "down": [0, 0, 0.8, 0.8, 0.1, 0.1], "mid": [0, 0, 0.6, 0.6, 0.9, 0.9]}
-    return {k: (t, stroke * np.interp(t, knots[k], levels[k])) for k in knots}
 
 
 def _scale_error(share: float, stroke: float):
@@ -43,7 +36,7 @@ def _scale_error(share: float, stroke: float):
 def test_a_gap_within_the_model_form_floor_is_undetectable(times_noise, status):
     rig = load_rig(ROOT / "studies/campaigns/dc-motor/rig.toml")
     stroke = 0.01
-    inputs = _trapezoids(stroke)
+    inputs = trapezoids(stroke)
     hidden = _scale_error(times_noise * SIGMA, stroke) if times_noise else None
     runs = synth.synthesize("dc_motor", rig, inputs, hidden=hidden, noise=synth.Noise(position=SIGMA, seed=5))
     d = diagnose_runs("dc_motor", rig, runs, ["down"])

@@ -10,22 +10,19 @@ structure, a valve's resonance, ...) stays in ``own``, in its record's
 order. The ranking (``with_fields``: feasible, driver, rank, pareto), the
 names and the probability of compliance give new candidates; none is
 changed after it is made. A results.json read back from a file (a
-baseline, robust's input) becomes candidates once (``as_candidate``).
-
-A candidate also reads as its record (a read-only ``Mapping``), for the
-code that takes records: each technology's names, descriptions and
-drawings, the flips' re-solves, and candidates.csv, written from records.
+baseline, robust's input) and the records of a technology's re-solve (the
+flips) become candidates once (``as_candidate``, ``from_dict``).
 """
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Iterator, Mapping
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
 
 @dataclass(frozen=True, eq=True)
-class Candidate(Mapping):
+class Candidate:
     """A ranked design (results.json ``candidates[]``, docs/formats.md).
 
     ``order`` is its record's keys in order: a field its technology's record
@@ -81,21 +78,6 @@ class Candidate(Mapping):
         state["own"] = {**self.own, **own} if own else self.own
         state["order"] = self.order + tuple(k for k in fields if k not in self.order)
         return new
-
-    # --- read as its record -------------------------------------------------
-    def __getitem__(self, key: str):
-        if key not in self.order:
-            raise KeyError(key)
-        return _plain(key, getattr(self, key)) if key in TYPED else self.own[key]
-
-    def __iter__(self) -> Iterator[str]:
-        return iter(self.order)
-
-    def __len__(self) -> int:
-        return len(self.order)
-
-    def __contains__(self, key) -> bool:
-        return key in self.order
 
     __hash__ = None         # its figures are mappings
 

@@ -215,12 +215,12 @@ def recommendation_sentence(out: dict, keys: list[str], pick: dict | None = None
     the policy adds."""
     if pick is None:
         return _recommendation(out, keys, clause=clause)
-    deciding = [f"{r['part']}.{r['field']}" for r in pick.get("rests_on_assumed") or [] if r.get("decides")]
-    entry = {"name": pick.get("name", pick["id"]), "metrics": pick["metrics"], "deciding_assumed": deciding}
-    best = out.get(pick["technology"]) or {}
-    if best.get("best") == pick["id"]:          # the technology's best: its assumed values in words
+    deciding = [f"{r['part']}.{r['field']}" for r in pick.rests_on_assumed or [] if r.get("decides")]
+    entry = {"name": pick.name or pick.id, "metrics": pick.metrics, "deciding_assumed": deciding}
+    best = out.get(pick.technology) or {}
+    if best.get("best") == pick.id:          # the technology's best: its assumed values in words
         entry["deciding_assumed_words"] = best.get("deciding_assumed_words")
-    return _recommendation(out, keys, (pick["technology"], entry), clause)
+    return _recommendation(out, keys, (pick.technology, entry), clause)
 
 
 def _recommendation(out: dict, keys: list[str], pick: tuple | None = None, clause: str = "") -> str:

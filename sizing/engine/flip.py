@@ -39,10 +39,13 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Callable
+from typing import TYPE_CHECKING, Callable
 
 from . import resolve
 from .rank import verdict
+
+if TYPE_CHECKING:
+    from .candidate import Candidate
 
 from ..settings import FLIP_TOLERANCE as TOLERANCE  # noqa: E402  of the value; of degC for a temperature (sizing/settings.py)
 RANGE = 4.0                # searched from value / RANGE to value x RANGE
@@ -145,11 +148,11 @@ class Search:
     changed), per value, what each design re-solved there gave
     ({id: (feasible, first objective)})."""
 
-    def __init__(self, req, catalog, loads, candidates: list[dict], stages):
+    def __init__(self, req, catalog, loads, candidates: list[Candidate], stages):
         self.req, self.catalog, self.loads, self.stages = req, catalog, loads, stages
         self.key = resolve.OBJECTIVE_KEYS[req.objectives.minimize[0]]
-        self.solved = {t: [c for c in candidates if c["technology"] == t]
-                       for t in dict.fromkeys(c["technology"] for c in candidates)}
+        self.solved = {t: [c for c in candidates if c.technology == t]
+                       for t in dict.fromkeys(c.technology for c in candidates)}
         self.today = {t: resolve.verdict_of(req, cs) for t, cs in self.solved.items()}
         self.known: dict[tuple, dict[float, dict]] = {}
         self.pool: dict[tuple, list] = {}
@@ -158,23 +161,23 @@ class Search:
         self.solves = 0
 
     # --- designs at one value -----------------------------------------------
-    def known_at(self, tech: str, probe: Probe, x: float, c: dict) -> bool | None:
+    def known_at(self, tech: str, probe: Probe, x: float, c: Candidate) -> bool | None:
         """Whether design ``c`` complies with the value ``x``, from what is
         known without a re-solve: at ``x`` itself, at a stricter value where
         it complied or at a looser one where it did not; None when unknown."""
         if probe.holding is not None and not resolve.holds(c, probe.holding):
-            return bool(c["feasible"])                       # the change does not touch it
+            return bool(c.feasible)                       # the change does not touch it
         known = self.known.setdefault((tech, probe.field), {})
-        if x in known and c["id"] in known[x]:
-            return known[x][c["id"]][0]
+        if x in known and c.id in known[x]:
+            return known[x][c.id][0]
         s = self._strictness(probe, x)
         for y, found in known.items():
-            ok = found.get(c["id"], (None,))[0]
+            ok = found.get(c.id, (None,))[0]
             if ok is True and self._strictness(probe, y) >= s or ok is False and self._strictness(probe, y) <= s:
                 return ok
         return None
 
-    def solve_at(self, tech: str, probe: Probe, x: float, cs: list[dict]) -> dict:
+    def solve_at(self, tech: str, probe: Probe, x: float, cs: list[Candidate]) -> dict:
         """Re-solve the combinations of designs ``cs`` with the value ``x``:
         {id: (feasible, first objective)} of every design they give (a
         design of ``cs`` that is not among them was ruled out)."""
@@ -182,18 +185,18 @@ class Search:
         self.solves += 1
         found = self.known.setdefault((tech, probe.field), {}).setdefault(x, {})
         for fresh in resolve.units(self.stages, tech, req, catalog, self.loads, cs):
-            ok, driver = verdict(fresh["margins"])
-            found[fresh["id"]] = (ok, _objective(fresh, self.key), _slack(dict(fresh, driver=driver)))
+            ok, driver = verdict(fresh.margins)
+            found[fresh.id] = (ok, _objective(fresh, self.key), _slack_of(fresh.margins, driver))
         for c in cs:
-            found.setdefault(c["id"], (False, math.inf, -math.inf))
+            found.setdefault(c.id, (False, math.inf, -math.inf))
         return found
 
-    def design_at(self, tech: str, probe: Probe, x: float, c: dict) -> tuple[bool, float]:
+    def design_at(self, tech: str, probe: Probe, x: float, c: Candidate) -> tuple[bool, float]:
         """(feasible, first objective) of design ``c`` with the value ``x``."""
         if probe.holding is not None and not resolve.holds(c, probe.holding):
-            return bool(c["feasible"]), _objective(c, self.key)
+            return bool(c.feasible), _objective(c, self.key)
         found = self.known.get((tech, probe.field), {}).get(x, {})
-        return (found[c["id"]] if c["id"] in found else self.solve_at(tech, probe, x, [c])[c["id"]])[:2]
+        return (found[c.id] if c.id in found else self.solve_at(tech, probe, x, [c])[c.id])[:2]
 
     @staticmethod
     def _strictness(probe: Probe, x: float) -> float:
@@ -217,7 +220,7 @@ class Search:
         for batch in (undecided[:1], undecided[1:]):
             if batch:
                 found = self.solve_at(tech, probe, x, batch)
-                if any(found[c["id"]][0] for c in batch):
+                if any(found[c.id][0] for c in batch):
                     return True
         return False
 
@@ -239,7 +242,7 @@ class Search:
                 return to
             start = to
 
-    def _still_complying(self, tech: str, probe: Probe, x: float) -> list[dict]:
+    def _still_complying(self, tech: str, probe: Probe, x: float) -> list[Candidate]:
         """The designs that comply with the value ``x`` in a re-solve of the
         whole technology (those that hold the part, for a catalog value).
         When today's solve judged every part combination in full
@@ -262,13 +265,13 @@ class Search:
             fresh = resolve.units(self.stages, tech, req, catalog, self.loads, cs)
             found = self.known.setdefault((tech, probe.field), {}).setdefault(x, {})
             for c in fresh:
-                ok, driver = verdict(c["margins"])
-                found[c["id"]] = (ok, _objective(c, self.key), _slack(dict(c, driver=driver)))
+                ok, driver = verdict(c.margins)
+                found[c.id] = (ok, _objective(c, self.key), _slack_of(c.margins, driver))
         alive = []
         for c in fresh:
-            ok, driver = verdict(c["margins"])
+            ok, driver = verdict(c.margins)
             if ok and (probe.holding is None or resolve.holds(c, probe.holding)):
-                alive.append(dict(c, feasible=True, driver=driver))
+                alive.append(c.with_fields(feasible=True, driver=driver))
         return alive
 
     def _largest_flip(self, tech: str, probe: Probe, end: float, alive, start: float) -> float | None:
@@ -292,9 +295,9 @@ class Search:
             first = False
             rest = [c for g in others for c in g]
             found = self.solve_at(tech, probe, start, rest) if rest else {}
-            survivors = [g for g in others if any(found[c["id"]][0] for c in g)]
+            survivors = [g for g in others if any(found[c.id][0] for c in g)]
             # the one with the most slack there is likely the last to fail: bisected next
-            survivors.sort(key=lambda g: max(found[c["id"]][2] for c in g), reverse=True)
+            survivors.sort(key=lambda g: max(found[c.id][2] for c in g), reverse=True)
         return start
 
     def _complies(self, tech: str, probe: Probe, x: float, group: list) -> bool:
@@ -304,7 +307,7 @@ class Search:
         if all(k is False for k in known):
             return False
         found = self.solve_at(tech, probe, x, group)
-        return any(found[c["id"]][0] for c in group)
+        return any(found[c.id][0] for c in group)
 
     def _pool(self, tech: str, probe: Probe, x: float) -> list:
         """The designs that can comply at ``x``, most slack first: those
@@ -317,8 +320,8 @@ class Search:
             req, catalog = probe.apply(self.req, self.catalog, end)
             self.solves += 1
             fresh = resolve.whole(self.stages, tech, req, catalog, self.loads)
-            ok = [(verdict(c["margins"])[0], c) for c in fresh]
-            self.known.setdefault((tech, probe.field), {})[end] = {c["id"]: (f, _objective(c, self.key))
+            ok = [(verdict(c.margins)[0], c) for c in fresh]
+            self.known.setdefault((tech, probe.field), {})[end] = {c.id: (f, _objective(c, self.key))
                                                                   for f, c in ok}
             self.pool[(tech, probe.field)] = sorted((c for f, c in ok if f), key=_slack, reverse=True)
         return self.pool[(tech, probe.field)]
@@ -386,7 +389,7 @@ class Search:
         return screens[x]
 
     # --- the recommendation --------------------------------------------------
-    def recommended(self) -> tuple[str, dict] | None:
+    def recommended(self) -> tuple[str, Candidate] | None:
         """(technology, design) recommended today: the technologies' best
         (by rank), the lightest of them in the first objective."""
         feasible = [(v.objective, t) for t, v in self.today.items() if v.feasible]
@@ -394,7 +397,7 @@ class Search:
             return None
         tech = min(feasible)[1]
         best = self.today[tech].best
-        return tech, next(c for c in self.solved[tech] if c["id"] == best)
+        return tech, next(c for c in self.solved[tech] if c.id == best)
 
     def recommendation_changes(self, probe: Probe, x: float) -> bool:
         """Whether the design recommended today is not recommended at a
@@ -407,11 +410,11 @@ class Search:
         ok, mine = self.design_at(lead, probe, x, d0)
         if not ok:
             return True
-        lighter = [c for c in self.solved[lead] if not c.get("feasible") and _objective(c, self.key) < mine
-                   and c.get("margins") and (probe.holding is None or resolve.holds(c, probe.holding))]
+        lighter = [c for c in self.solved[lead] if not c.feasible and _objective(c, self.key) < mine
+                   and c.margins and (probe.holding is None or resolve.holds(c, probe.holding))]
         if lighter:
             found = self.solve_at(lead, probe, x, lighter)
-            if any(found[c["id"]][0] and found[c["id"]][1] < mine for c in lighter):
+            if any(found[c.id][0] and found[c.id][1] < mine for c in lighter):
                 return True
         for tech, v in self.today.items():
             if tech == lead or not v.feasible or v.objective >= mine:
@@ -430,14 +433,19 @@ class Search:
         return False
 
 
-def _objective(c: dict, key: str) -> float:
-    value = (c.get("metrics") or {}).get(key)
+def _objective(c: Candidate, key: str) -> float:
+    value = (c.metrics or {}).get(key)
     return float(value) if value is not None else math.inf
 
 
-def _slack(c: dict) -> float:
+def _slack(c: Candidate) -> float:
     """A design's smallest margin (its driver's): the most slack is tried first."""
-    m = c["margins"].get(c.get("driver")) if c.get("driver") else None
+    return _slack_of(c.margins, c.driver)
+
+
+def _slack_of(margins, driver: str | None) -> float:
+    """The margin ``driver`` of ``margins``, -inf when there is none."""
+    m = margins.get(driver) if driver else None
     return m if m is not None and math.isfinite(m) else -math.inf
 
 
@@ -575,7 +583,7 @@ def loosening_flip(search: Search, probe: Probe, end: float, loosest: list[Probe
     return bisect(lambda x: not kept(x), probe, end)
 
 
-def flips(req, catalog, loads, candidates: list[dict], deciding: dict[str, list[str]], stages) -> tuple[dict, int]:
+def flips(req, catalog, loads, candidates: list[Candidate], deciding: dict[str, list[str]], stages) -> tuple[dict, int]:
     """Per technology its ``flips`` entries (docs/formats.md), and the
     number of re-solves they took. ``deciding``: per technology, the
     assumed catalog values in its best design's binding margin;
@@ -617,7 +625,7 @@ def held_text(target: float, meets: bool | None, nominal: bool) -> str:
             "complying nominally is searched (stricter values), and looser values are not searched")
 
 
-def restate(techs: dict, pick: dict | None, held: str, redo: Callable[[], list[dict]] | None = None) -> None:
+def restate(techs: dict, pick: Candidate | None, held: str, redo: Callable[[], list[dict]] | None = None) -> None:
     """The recommendation's flips (``techs[T]["flips"]``, in place) made
     those of ``pick``, the design the policy recommends: each entry gains
     ``design`` (its id) and ``held``; ``redo()`` gives the entries anew when
@@ -628,14 +636,14 @@ def restate(techs: dict, pick: dict | None, held: str, redo: Callable[[], list[d
     if redo is not None:
         for t in techs.values():
             t["flips"] = [e for e in t["flips"] if e["changes"] != "recommendation"]
-        techs[pick["technology"]]["flips"] += redo()
+        techs[pick.technology]["flips"] += redo()
     for t in techs.values():
-        t["flips"] = [dict(e, design=pick and pick["id"], held=held) if e["changes"] == "recommendation" else e
+        t["flips"] = [dict(e, design=pick and pick.id, held=held) if e["changes"] == "recommendation" else e
                       for e in t["flips"]]
         t["flip"] = smallest(t["flips"])
 
 
-def policy_flips(req, catalog, candidates: list[dict], techs: dict, pick: dict, stages) -> list[dict]:
+def policy_flips(req, catalog, candidates: list[Candidate], techs: dict, pick: Candidate, stages) -> list[dict]:
     """The recommendation's flips for ``pick``, a design the
     ``min_compliance`` policy recommends over the nominal lightest, with the
     policy's estimates held (``held_text``): stricter values only, where
@@ -644,9 +652,9 @@ def policy_flips(req, catalog, candidates: list[dict], techs: dict, pick: dict, 
     ``stages``: the technologies' stages of the solve (``solve.technology_stages``)."""
     from . import stage_cache
     from .loads import load_cases
-    tech = pick["technology"]
+    tech = pick.technology
     search = Search(req, catalog, [c["load_N"] for c in load_cases(req.load)], candidates, stages)
-    deciding = [f"{r['part']}.{r['field']}" for r in pick.get("rests_on_assumed") or [] if r.get("decides")]
+    deciding = [f"{r['part']}.{r['field']}" for r in pick.rests_on_assumed or () if r.get("decides")]
     ends = {e["field"]: e["to"] for e in techs[tech]["flips"] if e["changes"] == "feasibility" and e["to"] is not None}
     out = []
     with stage_cache.reuse():

@@ -9,11 +9,26 @@ its folder (``Technology.judge``).
 """
 from __future__ import annotations
 
+from collections.abc import Mapping
+from dataclasses import dataclass
+
 from ..errors import InputError
 from ..io.catalog import Catalog
 from ..technologies.registry import technologies
 from .loads import load_cases
 from .rank import verdict
+
+
+@dataclass(frozen=True)
+class Judged:
+    """What a technology's judge gives for one design file (``Technology.
+    judge``): its margins and metrics as the solve's candidate holds them,
+    and the margins of its static screen alone where the simulation
+    replaced some (None: the same as ``margins``)."""
+
+    margins: Mapping[str, float]
+    metrics: Mapping[str, float]
+    static_margins: Mapping[str, float] | None = None
 
 
 def judge(req, catalog: Catalog, design, file: str) -> dict:
@@ -36,14 +51,14 @@ def judge_all(req, catalog: Catalog, designs: list, files: list[str]) -> list[di
     for name, tech in techs.items():
         mine = [i for i, d in enumerate(designs) if d.technology == name]
         if mine:
-            for i, cand in zip(mine, tech.judge(req, catalog, [designs[i] for i in mine], [files[i] for i in mine],
-                                                loads)):
-                out[i] = cand
+            for i, judged in zip(mine, tech.judge(req, catalog, [designs[i] for i in mine], [files[i] for i in mine],
+                                                  loads)):
+                out[i] = judged
     return [_verdict(cand) for cand in out]
 
 
-def _verdict(cand: dict) -> dict:
-    feasible, driver = verdict(cand["margins"])
-    return {"margins": dict(cand["margins"]), "feasible": feasible, "driver": driver,
-            "metrics": dict(cand.get("metrics") or {}),
-            "static_margins": dict(cand.get("static_margins") or cand["margins"])}
+def _verdict(judged: Judged) -> dict:
+    feasible, driver = verdict(judged.margins)
+    return {"margins": dict(judged.margins), "feasible": feasible, "driver": driver,
+            "metrics": dict(judged.metrics or {}),
+            "static_margins": dict(judged.static_margins or judged.margins)}

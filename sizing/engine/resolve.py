@@ -36,6 +36,7 @@ import math
 from dataclasses import dataclass, fields, replace
 
 from ..technologies.registry import resolving, technologies
+from .candidate import Candidate
 from .rank import OBJECTIVE_KEYS, standings
 
 
@@ -51,29 +52,29 @@ class Verdict:
     alive: tuple = ()
 
 
-def verdict_of(req, candidates: list[dict]) -> Verdict:
-    """The technology's verdict over ``candidates`` (results.json records),
-    with the ranking ``solve`` uses."""
+def verdict_of(req, candidates: list[Candidate]) -> Verdict:
+    """The technology's verdict over ``candidates``, with the ranking
+    ``solve`` uses."""
     if not candidates:
         return Verdict(False)
     keys = [OBJECTIVE_KEYS[k] for k in req.objectives.minimize]
-    ranked = standings([c["margins"] for c in candidates], [c.get("metrics") or {} for c in candidates], keys)
+    ranked = standings([c.margins for c in candidates], [c.metrics or {} for c in candidates], keys)
     feasible = [(s.rank, c) for c, s in zip(candidates, ranked) if s.feasible]
     if not feasible:
         return Verdict(False)
     best = min(feasible, key=lambda rc: rc[0])[1]
-    value = (best.get("metrics") or {}).get(keys[0]) if keys else None
-    return Verdict(True, best["id"], value if value is not None else math.inf,
+    value = (best.metrics or {}).get(keys[0]) if keys else None
+    return Verdict(True, best.id, value if value is not None else math.inf,
                    tuple(c for _, c in feasible))
 
 
-def unit_key(tech: str, c: dict) -> str:
+def unit_key(tech: str, c: Candidate) -> str:
     """What one re-solve of candidate ``c`` covers (``Resolving.unit_key``:
     its part combination, or the design itself)."""
     return resolving(tech).unit_key(c)
 
 
-def unsettled(tech: str, candidates: list[dict]) -> list[dict] | None:
+def unsettled(tech: str, candidates: list[Candidate]) -> list[Candidate] | None:
     """The designs a solve left open: sized, passing every check a
     simulation does not replace, but not simulated. None for a technology
     whose solve does not record every design it leaves unsimulated (the DC
@@ -81,19 +82,25 @@ def unsettled(tech: str, candidates: list[dict]) -> list[dict] | None:
     return resolving(tech).unsettled(candidates)
 
 
-def whole(stages, tech: str, req, catalog, loads) -> list[dict]:
+def whole(stages, tech: str, req, catalog, loads) -> list[Candidate]:
     """Every candidate of ``tech`` re-solved for ``req`` and ``catalog``
     (``stages``: the technologies' stages of ``solve``, ``solve.technology_stages``)."""
-    return getattr(stages, tech)(req, catalog, loads, None, "summary")[0].candidates
+    return _candidates(getattr(stages, tech)(req, catalog, loads, None, "summary")[0].candidates)
 
 
-def units(stages, tech: str, req, catalog, loads, cs: list[dict]) -> list[dict]:
+def _candidates(records: list[dict]) -> list[Candidate]:
+    """The candidates of a technology's results.json records, as ``solve``
+    makes them before ranking."""
+    return [Candidate.from_dict(r) for r in records]
+
+
+def units(stages, tech: str, req, catalog, loads, cs: list[Candidate]) -> list[Candidate]:
     """The candidates of the part combinations of candidates ``cs``
     re-solved for ``req`` and ``catalog`` (``Resolving.units``)."""
     by_units = resolving(tech).units
     if by_units is None:
         raise ValueError(f"no re-solve by design for {tech!r}")
-    return by_units(getattr(stages, tech), req, catalog, loads, cs)
+    return _candidates(by_units(getattr(stages, tech), req, catalog, loads, cs))
 
 
 def mass_floor(tech: str, req, catalog) -> float | None:
@@ -114,7 +121,7 @@ def lightest(tech: str, req, catalog, loads) -> tuple[str, float] | None:
     none complies: of the designs its stage would simulate, those that pass
     every check the simulation does not replace, simulated
     (``Resolving.complying``: the same verdict and best design)."""
-    v = verdict_of(req, resolving(tech).complying(req, catalog, loads))
+    v = verdict_of(req, _candidates(resolving(tech).complying(req, catalog, loads)))
     return (v.best, v.objective) if v.feasible else None
 
 
@@ -151,6 +158,6 @@ def with_value(catalog, ident: str, field: str, value: float):
     return replace(catalog, **{attr: {**group, ident: group[ident].model_copy(update={field: value})}})
 
 
-def holds(c: dict, ident: str) -> bool:
+def holds(c: Candidate, ident: str) -> bool:
     """Whether candidate ``c`` is built with catalog entry ``ident``."""
-    return ident in (v for v in (c.get("components") or {}).values() if isinstance(v, str))
+    return ident in (v for v in (c.components or {}).values() if isinstance(v, str))

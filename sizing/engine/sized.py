@@ -8,24 +8,25 @@ from __future__ import annotations
 from ..errors import InputError
 from ..io.catalog import Catalog
 from ..io.requirements import RequirementsFile
+from .candidate import Candidate, as_candidate
 
 
-def read_back(req: RequirementsFile, catalog: Catalog, cand: dict):
+def read_back(req: RequirementsFile, catalog: Catalog, cand: Candidate | dict):
     """What robust perturbs, read back from a results.json candidate (a
-    solve whose records are gone)."""
+    solve whose records are gone; a ``Candidate`` or its record)."""
     return study_designs(req, catalog, [cand])[0]
 
 
-def study_designs(req: RequirementsFile, catalog: Catalog, candidates: list[dict], stages=None) -> list:
+def study_designs(req: RequirementsFile, catalog: Catalog, candidates: list[Candidate], stages=None) -> list:
     """What ``sizing robust`` perturbs, per candidate, as its technology
     builds it (``Technology.study_design``): taken as sized from the solve's
     own records (``stages``, ``records.Stages``) when they hold it, else
     read back from its results.json record."""
     from ..technologies.registry import get
     out = []
-    for c in candidates:
-        tech = get(c["technology"])
+    for c in map(as_candidate, candidates):
+        tech = get(c.technology)
         if tech is None or tech.study_design is None:
-            raise InputError(None, c.get("id"), "expected a design whose parts robust can perturb")
+            raise InputError(None, c.id, "expected a design whose parts robust can perturb")
         out.append(tech.study_design(req, catalog, c, stages))
     return out

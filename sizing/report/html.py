@@ -3,7 +3,6 @@ no network access when opened)."""
 from __future__ import annotations
 
 import html
-from collections.abc import Mapping
 from typing import TYPE_CHECKING
 
 from ..display import requirement as display_requirement
@@ -84,16 +83,15 @@ def _margin_table(cands: list[Candidate]) -> str:
                 cls.append("drv")
             text = "" if v == "" else ("n/a" if v is None else f"{v:+.1%}")
             cells.append(f"<td class='{' '.join(cls)}'>{text}</td>")
-        rows.append(f"<tr><td>{c.rank}</td>{design_cell(c)}"
+        rows.append(f"<tr><td>{c.rank}</td>{design_cell(c.id, c.name)}"
                     f"<td>{'yes' if c.feasible else 'no'}</td><td class='l'>{_e(c.driver)}</td>{''.join(cells)}</tr>")
     return (f"<div class='scroll'><table><tr><th>rank</th><th class='l'>design</th><th>feasible</th>"
             f"<th class='l'>driver</th>{head}</tr>" + "".join(rows) + "</table></div>")
 
 
-def design_cell(c: Mapping) -> str:
-    """A design's short name; its full id (the parts list) on hover (a
-    candidate, or a record that names one)."""
-    return f"<td class='id' title='{_e(c['id'])}'>{_e(c.get('name') or c['id'])}</td>"
+def design_cell(ident: str, name: str | None) -> str:
+    """A design's short name; its full id (the parts list) on hover."""
+    return f"<td class='id' title='{_e(ident)}'>{_e(name or ident)}</td>"
 
 
 def _design_table(cands: list[Candidate]) -> str:
@@ -106,7 +104,7 @@ def _design_table(cands: list[Candidate]) -> str:
         else:                       # no table of parts of its own: its parts by kind
             parts = f"{tech_label(c.technology)}: " + ", ".join(f"{v}" for v in c.components.values())
         rows.append(
-            f"<tr><td>{c.rank}</td>{design_cell(c)}<td class='parts'>{_e(parts)}</td>"
+            f"<tr><td>{c.rank}</td>{design_cell(c.id, c.name)}<td class='parts'>{_e(parts)}</td>"
             f"<td>{_num(m.get('mass_kg'), fmt='{:.1f}')}</td><td>{_num(m.get('cost_usd'), fmt='{:,.0f}')}</td>"
             f"<td>{_num(m.get('volume_m3'), 1e3, '{:.2f}')}</td><td>{_num(m.get('power_W'), fmt='{:.0f}')}</td>"
             f"<td>{_num(s.get('free_stroke_m'), 1e3, '{:.1f}')}</td>"
@@ -127,7 +125,7 @@ def _checks_table(cands: list[Candidate]) -> str:
         s, f = c.static, c.own.get("fluid_at_temperature", {})
         temps = "; ".join(f"{k} {v['rated_degC']:g}/{v['required_degC']:g}" for k, v in c.own.get("temperatures", {}).items())
         rows.append(
-            f"<tr>{design_cell(c)}<td>{_num(s.get('blocked_pressure_Pa'), 1e-6, '{:.1f}')}</td>"
+            f"<tr>{design_cell(c.id, c.name)}<td>{_num(s.get('blocked_pressure_Pa'), 1e-6, '{:.1f}')}</td>"
             f"<td>{_num(s.get('compliance_force_fraction'), 100, '{:.0f}')}</td>"
             f"<td>{_num(s.get('required_current_A'), fmt='{:.2f}')}</td>"
             f"<td>{_num(s.get('natural_frequency_Hz'), fmt='{:.0f}')}</td>"
@@ -343,7 +341,7 @@ def render(results: dict, traces: list[dict]) -> str:
                 "simulated design, and never disagree on a verdict.</p>" if not dis else
                 "<table><tr><th class='l'>design</th><th class='l'>requirement</th><th>static</th><th>simulated</th>"
                 "<th>static margin</th><th>simulated margin</th><th>verdict changes</th></tr>" + "".join(
-                    f"<tr>{design_cell(dict(d, name=d.get('name') or short.get(d['id'])))}<td class='l'>{_e(d['requirement'])}</td>"
+                    f"<tr>{design_cell(d['id'], d.get('name') or short.get(d['id']))}<td class='l'>{_e(d['requirement'])}</td>"
                     f"<td>{_e(_requirement_value(d['requirement'], d['static']))}</td>"
                     f"<td>{_e(_requirement_value(d['requirement'], d['simulated']))}</td><td>{d['static_margin']:+.1%}</td>"
                     f"<td>{d['simulated_margin']:+.1%}</td><td>{'yes' if d['verdict_changes'] else 'no'}</td></tr>"

@@ -4,9 +4,14 @@ parts and its own sections. Every field has a default, so a technology
 that says nothing of its looks is still drawn, tabled and counted."""
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import html
 from collections.abc import Callable
 from dataclasses import dataclass, field
+
+if TYPE_CHECKING:
+    from ..engine.candidate import Candidate
 
 
 def _nothing(*_args, **_kwargs) -> str:
@@ -27,11 +32,11 @@ def shown(v, scale=1.0, fmt="{:.4g}") -> str:
     return "n/a" if v is None else fmt.format(v * scale)
 
 
-def ruled_out_by_part(pruned: list[dict], part: str) -> str:
+def ruled_out_by_part(pruned: list[Candidate], part: str) -> str:
     """The table rows of ``pruned`` candidates counted by their ``part``
     (a components key) and the requirement that rules them out."""
     from collections import Counter
-    by = Counter((c["components"][part], c["driver"]) for c in pruned)
+    by = Counter((c.components[part], c.driver) for c in pruned)
     return "".join(f"<tr><td class='l'>{escaped(p)}</td><td class='l'>{escaped(d)}</td><td>{n}</td></tr>"
                    for (p, d), n in sorted(by.items()))
 
@@ -51,8 +56,8 @@ class Marker:
     stages: tuple[str, ...] | None = None
     open_color: str | None = None           # the infeasible ones' colour (None: ``color``)
 
-    def takes(self, candidate: dict) -> bool:
-        return self.variant is None or candidate.get("variant") == self.variant
+    def takes(self, candidate: Candidate) -> bool:
+        return self.variant is None or candidate.variant == self.variant
 
 
 @dataclass(frozen=True)

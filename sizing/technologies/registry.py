@@ -14,8 +14,12 @@ import pkgutil
 import threading
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 from .presentation import PLAIN, Presentation
+
+if TYPE_CHECKING:
+    from ..engine.candidate import Candidate
 
 _REGISTERED: dict[str, "Technology"] = {}
 _FOUND = False
@@ -55,8 +59,8 @@ class Group:
     caveat: Callable = _no_words            # (req, feasible candidates, catalog) -> words after the verdict
 
 
-def _own_id(c: dict) -> str:
-    return c["id"]
+def _own_id(c: Candidate) -> str:
+    return c.id
 
 
 @dataclass(frozen=True)
@@ -78,7 +82,7 @@ class Resolving:
     any design passes its static screen)."""
 
     units: Callable | None = None
-    unit_key: Callable[[dict], str] = _own_id
+    unit_key: Callable[[Candidate], str] = _own_id
     unsettled: Callable = _nothing
     mass_floor: Callable = _nothing
     complying: Callable | None = None
@@ -94,9 +98,9 @@ class Technology:
 
     ``solve(req, catalog, loads, progress, detail)`` enumerates, sizes and
     verifies its designs and returns ``(records.Outcome, its records)``;
-    ``short_name(c)`` and ``describe(c, catalog)`` read a candidate
-    (``engine.candidate.Candidate``, which also reads as its results.json
-    record); ``traces(req, candidate, stages, loads)`` re-simulates
+    ``short_name(c)`` and ``describe(c, catalog)`` read a candidate's
+    attributes (``engine.candidate.Candidate``: the fields every record has,
+    the technology's own in ``own``); ``traces(req, candidate, stages, loads)`` re-simulates
     one design with its time traces kept (None: it has none);
     ``disagreements(records, names)`` lists where its static screen and its
     simulation disagree (results.json ``disagreements``)."""
@@ -107,8 +111,8 @@ class Technology:
     part_kinds: tuple[str, ...]             # the catalog groups its designs draw on
     solve: Callable
     groups: tuple[Group, ...]
-    short_name: Callable[[dict], str]
-    describe: Callable[[dict, object], str]
+    short_name: Callable[[Candidate], str]
+    describe: Callable[[Candidate, object], str]
     rests_on: tuple[str, ...] = ()          # the models (modules of sizing.physics and sizing.sim) its figures rest on
     noun: str = ""                          # "DC motor actuator" (defaults to label + " actuator")
     traces: Callable = _nothing
@@ -132,7 +136,7 @@ class Technology:
     verify_perturbed: Callable | None = None
     report: Presentation = PLAIN            # how the report draws, tables and counts its designs
     resolving: Resolving = WHOLE            # how the flips re-solve it (``Resolving``)
-    # (req, catalog, its design files, their file names, load cases) -> per file {"margins", "metrics", ...}
+    # (req, catalog, its design files, their file names, load cases) -> per file ``engine.judge.Judged``
     judge: Callable | None = None
     reached: str = ""                       # when a step counts as reached, if short of the whole stroke: "98 % of it"
     held: Callable = _by_own_id             # (its records of a solve) -> {design id: design} (``records.Stages``)

@@ -47,11 +47,22 @@ def test_a_record_reads_as_typed_fields_and_its_own():
     c = Candidate.from_dict(PRUNED)
     assert (c.id, c.technology, c.stage, c.margins["stroke"], c.metrics["mass_kg"]) == (
         "ph-x", "piezohydraulic", "pruned", -0.2, 3.0)
-    assert c.design is None and "design" not in c and "design" not in c.to_dict()    # absent, not null
+    assert c.design is None and "design" not in c.order and "design" not in c.to_dict()    # absent, not null
     assert dict(c.own) == {"stack_params": {"d33_m_V": 1e-9}, "metrics_lower_bound": True}
-    assert c["metrics_lower_bound"] is True and c.get("rank") is None and dict(c) == PRUNED
+    assert c.own["metrics_lower_bound"] is True and c.rank is None and c.to_dict() == PRUNED
     assert {f for f in PRUNED if f in TYPED} == {"id", "technology", "variant", "stage", "components", "static",
                                                  "simulated", "margins", "metrics", "reason"}
+
+
+def test_a_candidate_reads_by_attribute_not_as_its_record():
+    """The record is made only where results are written (``to_dict``):
+    code that read a candidate as a dict fails here, not in a file."""
+    c = Candidate.from_dict(PRUNED)
+    with pytest.raises(TypeError):
+        c["id"]
+    with pytest.raises(TypeError):
+        dict(c)
+    assert not hasattr(c, "get") and not hasattr(c, "keys")
 
 
 def test_a_candidate_is_frozen_and_changes_make_new_ones():
@@ -62,7 +73,7 @@ def test_a_candidate_is_frozen_and_changes_make_new_ones():
         c["rank"] = 1
     ranked = c.with_fields(feasible=False, driver="stroke", rank=4, pareto=False, pareto_level=None)
     named = ranked.with_fields(rank=2, name="2xP056", extra_figure=1.5)
-    assert c.rank is None and "rank" not in c and ranked.rank == 4 and named.rank == 2
+    assert c.rank is None and "rank" not in c.order and ranked.rank == 4 and named.rank == 2
     # as dict(record, **fields) would: new fields after the others, a given one in its place
     assert list(named.to_dict()) == [*PRUNED, "feasible", "driver", "rank", "pareto", "pareto_level", "name",
                                      "extra_figure"]

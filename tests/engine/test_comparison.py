@@ -113,4 +113,4 @@ def test_names_are_unique_short_and_stable():
     assert got[0].endswith("48v") and got[1].endswith("96v")
     # the same design gets the same name in a list ordered otherwise
     assert names.unique([b, a, c]) == [got[1], got[0], got[2]]
-    assert "name" not in a                  # the candidates are read, not written
+    assert "name" not in a.order            # the candidates are read, not written

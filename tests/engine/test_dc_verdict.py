@@ -11,6 +11,7 @@ import pytest
 from sizing.technologies.dc_motor import from_parts as dc_sizing
 from sizing.technologies.dc_motor import verdict as dc_verdict
 from sizing.technologies.dc_motor.record import actuator_candidate, parts_candidate
+from sizing.engine.candidate import Candidate
 from sizing.engine.evaluate import load_cases
 from sizing.engine.rank import verdict
 from sizing.io.catalog import load_catalog
@@ -27,7 +28,7 @@ def solved():
     cands = [parts_candidate(req, cat, d) for d in dc_sizing.dc_parts_designs(req, cat, loads).designs]
     for c in cands:
         c["feasible"], c["driver"] = verdict(c["margins"])
-    return req, cat, loads, cands, dc_verdict.dc_sourced(cat, cands)
+    return req, cat, loads, cands, dc_verdict.dc_sourced(cat, [Candidate.from_dict(c) for c in cands])
 
 
 def _hot(m, ambient, torque):

@@ -98,8 +98,8 @@ def test_an_envelope_rules_designs_out_and_none_is_ranked(tmp_path):
     # robust picks only ranked designs: none ruled out, none outside the envelope
     from sizing.studies.robust import pick_designs
     picked = pick_designs(r, 10, "piezohydraulic")
-    assert not {c["id"] for c in picked} & {x["id"] for x in r["ruled_out"]}
-    assert all(c["metrics"]["mass_kg"] <= 150 * (1 + 1e-9) for c in picked)
+    assert not {c.id for c in picked} & {x["id"] for x in r["ruled_out"]}
+    assert all(c.metrics["mass_kg"] <= 150 * (1 + 1e-9) for c in picked)
 
 
 @pytest.mark.parametrize("extra, field", [

@@ -9,6 +9,7 @@ import math
 import pytest
 
 from sizing.engine import flip
+from sizing.engine.candidate import Candidate
 from sizing.engine.flip import TOLERANCE, Probe, bisect
 
 from ..conftest import STUDIES
@@ -114,7 +115,7 @@ def test_the_recommendation_flips_follow_the_design_the_policy_picks():
                "changes": "recommendation", "tolerance": TOLERANCE, "within": [0.04, 0.16]}
         feas = dict(rec, changes="feasibility", to=0.08)
         return {"piezohydraulic": {"flips": [feas, rec]}, "dc_motor": {"flips": [dict(feas, to=None)]}}
-    pick = {"id": "dc-1", "technology": "dc_motor"}
+    pick = Candidate(id="dc-1", technology="dc_motor")
     out = techs()
     flip.restate(out, pick, flip.held_text(0.9, True, False), lambda: [
         {"what": "requirement stroke", "field": "stroke", "from": 0.04, "to": 0.06, "changes": "recommendation",
@@ -124,7 +125,7 @@ def test_the_recommendation_flips_follow_the_design_the_policy_picks():
     assert len(rec) == 1 and rec[0]["to"] == 0.06 and rec[0]["design"] == "dc-1" and "held" in rec[0]
     assert out["dc_motor"]["flip"]["to"] == 0.06
     out = techs()
-    flip.restate(out, {"id": "ph-1", "technology": "piezohydraulic"}, flip.held_text(0.9, False, True))
+    flip.restate(out, Candidate(id="ph-1", technology="piezohydraulic"), flip.held_text(0.9, False, True))
     rec = out["piezohydraulic"]["flips"][1]
     assert rec["to"] == 0.05 and rec["design"] == "ph-1" and "no design meets" in rec["held"]
 
@@ -139,7 +140,9 @@ def seed(seed_solve):
     from sizing.io.requirements import load_requirements
     req, _ = load_requirements(STUDIES / "seed-requirements.toml")
     cat = load_catalog(None)
-    return req, cat, [c["load_N"] for c in load_cases(req.load)], seed_solve.results
+    results = seed_solve.results          # read from results.json: its candidates made candidates once
+    return req, cat, [c["load_N"] for c in load_cases(req.load)], dict(
+        results, candidates=[Candidate.from_dict(c) for c in results["candidates"]])
 
 
 def _feasible(tech, req, cat, loads, field, value) -> bool:
@@ -264,13 +267,13 @@ def test_each_seed_recommendation_flip_holds_on_one_side_and_not_the_other(seed,
     entries = [f for f in comp["technologies"][lead]["flips"] if f["field"] == field and f["changes"] == "recommendation"]
     assert {e["direction"] for e in entries} == {"stricter", "looser"}
     assert all(e["design"] == comp["recommended"]["id"] and e["held"] for e in entries)
-    d0 = next(c for c in results["candidates"] if c["id"] == comp["recommended"]["id"])
+    d0 = next(c for c in results["candidates"] if c.id == comp["recommended"]["id"])
     for e in (e for e in entries if e["direction"] == direction):
         stricter = e["direction"] == "stricter"
 
         def kept(x):
             if stricter:
-                return _recommended(req, cat, loads, field, x)[2] == d0["id"]
+                return _recommended(req, cat, loads, field, x)[2] == d0.id
             return _kept_looser(req, cat, loads, d0, field, x)
         if e["to"] is None:
             assert kept(e["within"][1] if stricter else e["within"][0])
@@ -288,13 +291,12 @@ def _kept_looser(req, cat, loads, d0, field, value) -> bool:
     from sizing.engine.solve import technology_stages
     changed = req.model_copy(update={"requirements": req.requirements.model_copy(update={field: value})})
     stages = technology_stages()
-    fresh = next((f for f in resolve.units(stages, d0["technology"], changed, cat, loads, [d0]) if f["id"] == d0["id"]),
-                 None)
-    if fresh is None or not verdict(fresh["margins"])[0]:
+    fresh = next((f for f in resolve.units(stages, d0.technology, changed, cat, loads, [d0]) if f.id == d0.id), None)
+    if fresh is None or not verdict(fresh.margins)[0]:
         return False
-    mass = fresh["metrics"]["mass_kg"]
+    mass = fresh.metrics["mass_kg"]
     rivals = [resolve.verdict_of(changed, resolve.whole(stages, t, changed, cat, loads)).objective
-              for t in ("piezohydraulic", "dc_motor") if t != d0["technology"]]
+              for t in ("piezohydraulic", "dc_motor") if t != d0.technology]
     pump = resolve.pump_lightest(stages, changed, cat, loads)
     return all(r >= mass for r in rivals + [pump[1] if pump else math.inf])
 
@@ -308,8 +310,8 @@ def test_the_piezohydraulic_mass_floor_bounds_every_design(seed):
     from sizing.engine import resolve
     req, cat, _, results = seed
     floor = resolve.mass_floor("piezohydraulic", req, cat)
-    masses = [c["metrics"]["mass_kg"] for c in results["candidates"]
-              if c["technology"] == "piezohydraulic" and c.get("stage") != "pruned" and c.get("metrics")]
+    masses = [c.metrics["mass_kg"] for c in results["candidates"]
+              if c.technology == "piezohydraulic" and c.stage != "pruned" and c.metrics]
     assert masses and 0 < floor <= min(masses) and resolve.mass_floor("dc_motor", req, cat) is None
 
 
@@ -319,8 +321,8 @@ def _design_complies(req, cat, loads, c, field, value) -> bool:
     from sizing.engine.rank import verdict
     from sizing.engine.solve import technology_stages
     changed = req.model_copy(update={"requirements": req.requirements.model_copy(update={field: value})})
-    fresh = resolve.units(technology_stages(), c["technology"], changed, cat, loads, [c])
-    return any(f["id"] == c["id"] and verdict(f["margins"])[0] for f in fresh)
+    fresh = resolve.units(technology_stages(), c.technology, changed, cat, loads, [c])
+    return any(f.id == c.id and verdict(f.margins)[0] for f in fresh)
 
 
 @pytest.mark.slow
@@ -334,8 +336,8 @@ def test_a_design_the_policy_picks_gets_its_own_recommendation_flips(seed, field
     import copy
     req, cat, loads, results = seed
     comp = results["summary"]["comparison"]
-    pick = next(c for c in results["candidates"] if c["feasible"] and c["technology"] == "dc_motor"
-                and c["id"] != comp["recommended"]["id"] and "actuator" not in c["components"])
+    pick = next(c for c in results["candidates"] if c.feasible and c.technology == "dc_motor"
+                and c.id != comp["recommended"]["id"] and "actuator" not in c.components)
     from sizing.engine.solve import technology_stages
     entries = flip.policy_flips(req, cat, results["candidates"], copy.deepcopy(comp["technologies"]), pick,
                                 technology_stages())

@@ -49,9 +49,8 @@ def _best(results, technology="piezohydraulic"):
     t = results["summary"]["comparison"]["technologies"][technology]
     best_id = t.get("best") or t.get("closest")
     if best_id is None:
-        best_id = min((c for c in results["candidates"] if c["technology"] == technology),
-                      key=lambda c: c["rank"])["id"]
-    return next(c for c in results["candidates"] if c["id"] == best_id)
+        best_id = min((c for c in results["candidates"] if c.technology == technology), key=lambda c: c.rank).id
+    return next(c for c in results["candidates"] if c.id == best_id)
 
 
 @pytest.mark.slow
@@ -67,16 +66,16 @@ def test_no_lighter_feasible_design_next_to_the_best(drift, tmp_path):
     catalog = load_catalog()
     out = solve(req, sha, catalog, fast=True)       # the best designs; their flips are not needed
     best = _best(out.results)
-    design = out.stages.held("piezohydraulic", best["id"])
+    design = out.stages.held("piezohydraulic", best.id)
     loads = [c["load_N"] for c in load_cases(req.load)]
     neighbours = _neighbours(design, catalog)
     judged = verify_sized(req, catalog, neighbours, loads)
-    mass = best["metrics"]["mass_kg"]
+    mass = best.metrics["mass_kg"]
     m = req.options.design_margin * (1 - 1e-6)
     sized = lambda c: all(c["static_margins"][k] >= m for k in ("stroke", "blocked_force"))  # noqa: E731
     better = [(c["id"], c["metrics"]["mass_kg"]) for group in judged for c in group
               if c["feasible"] and sized(c) and c["metrics"].get("mass_kg", float("inf")) < (1 - LIGHTER) * mass]
     assert len(judged) == len(VARIABLES) * 2 + len(catalog.materials) - 1
-    assert better == [], f"{best['id']} ({mass:.1f} kg) has lighter feasible neighbours: {better}"
+    assert better == [], f"{best.id} ({mass:.1f} kg) has lighter feasible neighbours: {better}"
     if drift is not None:
-        assert best["feasible"]
+        assert best.feasible

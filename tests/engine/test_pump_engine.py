@@ -7,6 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from sizing.engine.candidate import Candidate
 from sizing.technologies.piezo_pump import designs as pump_engine
 from sizing.engine.evaluate import load_cases
 from sizing.technologies.piezo_pump.record import pump_candidate
@@ -217,7 +218,7 @@ def test_robust_studies_a_pump_design(seed_pumps):
     assert out["technology"] == "piezo_pump" and out["p_compliance"] == 0.0
     assert out["failing_requirements"] == ["amplifier_units"]
     for k, q in out["margin_quantiles"].items():
-        assert q["p50"] == pytest.approx(picked[0]["margins"][k], rel=5e-3, abs=1e-9), k
+        assert q["p50"] == pytest.approx(picked[0].margins[k], rel=5e-3, abs=1e-9), k
     spread = robust(req, load_catalog(), picked, samples=8, seed=1, executor=Executor(0))["designs"][0]
     assert len(set(round(spread["margin_quantiles"]["blocked_force"][q], 9) for q in ("p05", "p95"))) == 2
 
@@ -234,7 +235,7 @@ def test_the_flips_pump_re_solve_gives_the_stage_s_verdict_and_lightest(capacita
     loads = [c["load_N"] for c in load_cases(req.load)]
     whole = pump_engine.pump_designs(req, catalog, loads).designs
     few = pump_engine.complying_designs(req, catalog, loads)
-    a = resolve.verdict_of(req, [pump_candidate(req, d) for d in whole])
-    b = resolve.verdict_of(req, [pump_candidate(req, d) for d in few])
+    a = resolve.verdict_of(req, [Candidate.from_dict(pump_candidate(req, d)) for d in whole])
+    b = resolve.verdict_of(req, [Candidate.from_dict(pump_candidate(req, d)) for d in few])
     assert (a.feasible, a.best) == (b.feasible, b.best) and a.objective == pytest.approx(b.objective, rel=1e-9)
     assert a.feasible == (capacitance < 3e-5) and len(few) < len(whole)

@@ -81,12 +81,12 @@ def test_a_failed_simulation_is_a_record_with_its_message(built):
 def test_robust_takes_the_records_and_they_match_the_results_json_reading(built):
     req, catalog, _, _ = built
     out = solve(req, "0" * 64, catalog, fast=True)      # the records, not the flips
-    piezo = [c for c in out.results["candidates"] if c["technology"] == "piezohydraulic" and "design" in c]
-    assert piezo and set(c["id"] for c in piezo) <= set(out.stages.designs["piezohydraulic"])
+    piezo = [c for c in out.results["candidates"] if c.technology == "piezohydraulic" and c.design is not None]
+    assert piezo and set(c.id for c in piezo) <= set(out.stages.designs["piezohydraulic"])
     from_records = study_designs(req, catalog, piezo, out.stages)
     read_back = sized_designs(req, catalog, piezo)
     for c, (combo, var, res), (combo2, var2, res2) in zip(piezo, from_records, read_back):
-        assert combo.key == combo2.key and var == var2, c["id"]
+        assert combo.key == combo2.key and var == var2, c.id
         for f in ("ratio", "wide_area", "voltage_fraction", "cap_thickness", "frame_area"):
-            assert getattr(res, f) == pytest.approx(getattr(res2, f), rel=1e-9), (c["id"], f)
+            assert getattr(res, f) == pytest.approx(getattr(res2, f), rel=1e-9), (c.id, f)
     assert all(isinstance(d, PiezoDesign) for d in out.stages.designs["piezohydraulic"].values())

@@ -12,6 +12,7 @@ from hypothesis import given, settings, strategies as st
 
 from sizing import api
 from sizing.technologies.piezohydraulic.convex import GPSizer, SizingInput
+from sizing.engine.candidate import records
 from sizing.engine.rank import dominates, nondominated_levels, pareto_mask, rank_order, verdict
 from sizing.engine.solve import solve
 from sizing.io.catalog import Catalog, load_catalog
@@ -200,6 +201,11 @@ def small_catalog():
                    compensators=dict(full.compensators))
 
 
+def _written(results: dict) -> dict:
+    """The results as results.json holds them: each candidate its record."""
+    return dict(results, candidates=records(results["candidates"]))
+
+
 def test_small_solve_keeps_every_combination_and_names_reasons(seed_requirements, small_catalog):
     req, sha = seed_requirements
     # at the default duty (one full stroke per second) the amplifier's
@@ -210,7 +216,7 @@ def test_small_solve_keeps_every_combination_and_names_reasons(seed_requirements
     # what it takes up within the warm-up: a two-hour warm-up lets it take most.
     req = req.model_copy(update={"duty": DutyTable(strokes_per_second=0.1, warm_up_time=7200.0)})
     out = solve(req, sha, small_catalog, detail="full", fast=True)     # stages, ranks, reasons: no flips needed
-    r = out.results
+    r = _written(out.results)
     piezo = [c for c in r["candidates"] if c["technology"] == "piezohydraulic" and c["variant"] == "uncompensated"]
     pruned = [c for c in piezo if c["stage"] == "pruned"]
     sized = [c for c in piezo if c["stage"] != "pruned"]
@@ -223,7 +229,7 @@ def test_small_solve_keeps_every_combination_and_names_reasons(seed_requirements
     assert not ruled & {c["id"] for c in r["candidates"]}
     # by default the combinations ruled out before sizing are counted, not recorded
     brief = solve(req, sha, small_catalog, fast=True).results
-    assert not [c for c in brief["candidates"] if c.get("stage") == "pruned"]
+    assert not [c for c in brief["candidates"] if c.stage == "pruned"]
     assert sum(brief["summary"]["ruled_out"].values()) >= len(pruned) + len(out_of_it)
     assert all(c["driver"] for c in r["candidates"])
     thorlabs = [c for c in piezo if c["components"]["stack"] == "thorlabs-pk4ga7p1"]

@@ -99,8 +99,9 @@ def test_stroke_tolerance_gives_the_closed_form_probability(tmp_path, small_cata
 
 
 def _sized(req, catalog, cand):
+    from sizing.engine.candidate import Candidate
     from sizing.technologies.piezohydraulic.read_back import sized_designs
-    return sized_designs(req, catalog, [cand])
+    return sized_designs(req, catalog, [Candidate.from_dict(cand)])
 
 
 def test_perturbed_parts_carry_the_factor_and_the_air(small_catalog):

@@ -72,7 +72,7 @@ def test_sweep_over_stroke_reproduces_solve_at_each_point(seed_data, small_catal
     assert out["grid"][0]["best"]["name"] in page and len(out["grid"][0]["best"]["name"]) <= 32 and "Plotly" in page and "<script src" not in page
     # feasible counts computed independently of point_summary, from the solve's own flags
     assert g["feasible"]["piezohydraulic"] == sum(1 for c in results["candidates"]
-                                                  if c["technology"] == "piezohydraulic" and c["feasible"])
+                                                  if c.technology == "piezohydraulic" and c.feasible)
 
 
 def test_limits_name_the_last_feasible_and_first_infeasible_value():

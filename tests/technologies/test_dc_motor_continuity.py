@@ -11,6 +11,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from sizing.engine.candidate import Candidate
 from sizing.engine.loads import load_cases
 from sizing.io.catalog import load_catalog
 from sizing.io.requirements import load_requirements
@@ -25,7 +26,8 @@ ROW = ("allied-mf0095020-48v", "hiwin-r12-05k4-fscdin", "belt-2", "servo-48v-10a
 def seed():
     req, _ = load_requirements(STUDIES / "seed-requirements.toml")
     from sizing.technologies.dc_motor.resolving import parts_of as dc_parts_of
-    parts = dc_parts_of(load_catalog(None), ({"components": dict(zip(("motor", "screw", "gear", "drive"), ROW))},))
+    row = Candidate(id="row", technology="dc_motor", components=dict(zip(("motor", "screw", "gear", "drive"), ROW)))
+    parts = dc_parts_of(load_catalog(None), (row,))
     return req, parts, [c["load_N"] for c in load_cases(req.load)]
 
 

@@ -53,8 +53,8 @@ def _solve(req, catalog, loads, progress, detail="summary"):
 LINE = registry.Technology(
     name=NAME, label="linear line", order=9, part_kinds=(), solve=_solve,
     groups=(registry.Group("catalog", "linear force-speed catalog actuators"),),
-    short_name=lambda c: f"LL {c['components']['unit']}",
-    describe=lambda c, catalog: f"catalog unit {c['components']['unit']} on a linear force-speed line",
+    short_name=lambda c: f"LL {c.components['unit']}",
+    describe=lambda c, catalog: f"catalog unit {c.components['unit']} on a linear force-speed line",
 )
 
 
@@ -88,14 +88,14 @@ def test_a_registered_technology_is_solved_compared_and_reported(fourth, seed_da
     req = parse_requirements(seed_data, STUDIES / "seed-requirements.toml")
     out = solve(req, "0" * 64, small_catalog, fast=True)
     results = out.results
-    ours = [c for c in results["candidates"] if c["technology"] == NAME]
-    assert {c["id"] for c in ours} == {"line-a", "line-b"}
+    ours = [c for c in results["candidates"] if c.technology == NAME]
+    assert {c.id for c in ours} == {"line-a", "line-b"}
     loads = [c["load_N"] for c in load_cases(req.load)]
     expected = speed_under(max(loads), 9000.0, 0.40) / req.requirements.speed - 1
-    assert next(c for c in ours if c["id"] == "line-a")["margins"]["speed"] == pytest.approx(expected)
+    assert next(c for c in ours if c.id == "line-a").margins["speed"] == pytest.approx(expected)
     # line-b is short of the stroke (30 mm against the seed's), line-a is not
-    assert next(c for c in ours if c["id"] == "line-b")["driver"] == "stroke"
-    assert {c["name"] for c in ours} == {"LL line-a", "LL line-b"}
+    assert next(c for c in ours if c.id == "line-b").driver == "stroke"
+    assert {c.name for c in ours} == {"LL line-a", "LL line-b"}
     entry = results["summary"]["comparison"]["technologies"][NAME]
     assert entry["description"].startswith("catalog unit")
     assert "linear line" in results["summary"]["comparison"]["text"]

@@ -9,24 +9,25 @@ from __future__ import annotations
 import numpy as np
 
 from ...engine.evaluate import lookup
+from ...engine.judge import Judged
 from ...errors import InputError
 from ...io.catalog import Catalog
 from .design_file import DCDesignFile
 
 
-def judge(req, catalog: Catalog, designs: list[DCDesignFile], files: list[str], loads) -> list[dict]:
+def judge(req, catalog: Catalog, designs: list[DCDesignFile], files: list[str], loads) -> list[Judged]:
     return [(_actuator if d.actuator is not None else _parts)(req, catalog, d, f, loads)
             for d, f in zip(designs, files)]
 
 
-def _actuator(req, catalog: Catalog, design: DCDesignFile, file: str, loads) -> dict:
+def _actuator(req, catalog: Catalog, design: DCDesignFile, file: str, loads) -> Judged:
     from .catalog_actuators import actuator_design
     act = lookup(catalog, catalog.dc_actuators, design.actuator, file, "actuator")
     d = actuator_design(req, act, loads)
-    return {"margins": dict(d.margins), "metrics": dict(d.metrics)}
+    return Judged(dict(d.margins), dict(d.metrics))
 
 
-def _parts(req, catalog: Catalog, design: DCDesignFile, file: str, loads) -> dict:
+def _parts(req, catalog: Catalog, design: DCDesignFile, file: str, loads) -> Judged:
     from .records import DCParts
     from .from_parts import dc_parts_designs, verify_parts
     from .parts import metrics, static_screen
@@ -37,7 +38,7 @@ def _parts(req, catalog: Catalog, design: DCDesignFile, file: str, loads) -> dic
         found = dc_parts_designs(req, parts_catalog(catalog, parts), loads, duration=design.duration,
                                  exhaustive=True).designs
         d = next(x for x in found if x.parts.gear == parts.gear)
-        return {"margins": dict(d.margins), "metrics": dict(d.metrics)}
+        return Judged(dict(d.margins), dict(d.metrics))
     missing = [k for k in SETTINGS if k not in design.controller]
     if missing:
         raise InputError(file, "controller", f"expected {', '.join(SETTINGS)}; missing {', '.join(missing)}")
@@ -46,4 +47,4 @@ def _parts(req, catalog: Catalog, design: DCDesignFile, file: str, loads) -> dic
     checked = verify_parts(req, one.parts, loads, settings, duration=design.duration)[0]
     static = static_screen(one.parts, req, loads, settings=settings)[1]
     met = metrics(one.parts, req, static)
-    return {"margins": checked["margins"], "metrics": {k: float(v[0]) for k, v in met.items()}}
+    return Judged(checked["margins"], {k: float(v[0]) for k, v in met.items()})

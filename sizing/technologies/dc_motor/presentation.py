@@ -3,30 +3,35 @@ actuators as large red diamonds, designs from parts as orange triangles,
 their parts and gains on hover and what the static screen ruled out."""
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 
 from ..presentation import ruled_out_by_part, SIZED_STAGES, Marker, Presentation, escaped as _e
+
+if TYPE_CHECKING:
+    from ...engine.candidate import Candidate
 
 COMBINATIONS = "DC motor x screw x gear x drive combinations"
 
 
-def parts(c: dict) -> str:
-    k = c["components"]
+def parts(c: Candidate) -> str:
+    k = c.components
     return (f"DC actuator {k['actuator']}" if "actuator" in k else
             f"DC from parts: {k['motor']}, {k['screw']}, {k['gear'] or 'no gear'}, {k['drive']}")
 
 
-def hover(c: dict) -> str:
-    if "actuator" in c["components"]:
+def hover(c: Candidate) -> str:
+    if "actuator" in c.components:
         return parts(c)
-    ctl = c.get("controller") or {}
+    ctl = c.own.get("controller") or {}
     return (parts(c) + f"<br>I-PD kp {ctl.get('kp', 0):.3g} A/m, ki {ctl.get('ki', 0):.3g} A/(m s), "
             f"kd {ctl.get('kd', 0):.3g} A s/m")
 
 
-def comparison_picks(own: list[dict]) -> list[dict]:
+def comparison_picks(own: list[Candidate]) -> list[Candidate]:
     """Every catalog actuator and the two best simulated designs from parts."""
-    return ([c for c in own if "actuator" in c["components"]]
-            + [c for c in own if c.get("variant") == "parts" and c.get("stage") == "simulated"][:2])
+    return ([c for c in own if "actuator" in c.components]
+            + [c for c in own if c.variant == "parts" and c.stage == "simulated"][:2])
 
 
 def _parts_line(counts: dict) -> str:
@@ -38,14 +43,14 @@ def _parts_line(counts: dict) -> str:
 
 
 def counts_words(results: dict) -> str:
-    n = sum(1 for c in results["candidates"] if c["technology"] == "dc_motor" and "actuator" in c["components"])
+    n = sum(1 for c in results["candidates"] if c.technology == "dc_motor" and "actuator" in c.components)
     return f"{n} catalog DC actuator{'' if n == 1 else 's'};\n{_parts_line(results['counts'])}"
 
 
 def pruned_words(results: dict) -> str:
     """Combinations ruled out by the static screen, by motor and the
     requirement that rules them out (the smallest margin)."""
-    pruned = [c for c in results["candidates"] if c.get("stage") == "pruned" and c.get("variant") == "parts"]
+    pruned = [c for c in results["candidates"] if c.stage == "pruned" and c.variant == "parts"]
     if not pruned:
         return ""
     rows = ruled_out_by_part(pruned, "motor")

@@ -12,6 +12,7 @@ from ...errors import InputError
 from ...io.catalog import Catalog
 
 if TYPE_CHECKING:                   # the types alone: not imported when the module loads
+    from ...engine.candidate import Candidate
     from .parts import PartArrays
 
 
@@ -41,19 +42,19 @@ def dc_parts_design(catalog: Catalog, d: DCDesign) -> DCPartsDesign:
     return parts_design(catalog, d.parts, {k: float(d.controller[k]) for k in SETTINGS}, d.duration)
 
 
-def read_back_parts(catalog: Catalog, cand: dict) -> DCPartsDesign:
+def read_back_parts(catalog: Catalog, cand: Candidate) -> DCPartsDesign:
     """The DC design of a results.json candidate sized from parts."""
-    comp, ctl = cand.get("components", {}), cand.get("controller", {})
+    comp, ctl = cand.components or {}, cand.own.get("controller") or {}
     gear = comp.get("gear")
-    ok = (cand.get("technology") == "dc_motor" and cand.get("variant") == "parts"
+    ok = (cand.technology == "dc_motor" and cand.variant == "parts"
           and comp.get("motor") in catalog.motors and comp.get("screw") in catalog.screws
           and comp.get("drive") in catalog.drives and (gear is None or gear in catalog.gears)
           and all(k in ctl for k in SETTINGS))
     if not ok:
-        raise InputError(None, cand.get("id"), "expected a DC design sized from parts of this catalog")
+        raise InputError(None, cand.id, "expected a DC design sized from parts of this catalog")
     return parts_design(catalog, DCParts(comp["motor"], comp["screw"], gear, comp["drive"]),
                       {k: float(ctl[k]) for k in SETTINGS},
-                      float(cand.get("design", {}).get("duration", 0.0)) or None)
+                      float((cand.design or {}).get("duration", 0.0)) or None)
 
 
 def parts_design(catalog: Catalog, parts: DCParts, settings: dict, duration: float | None) -> DCPartsDesign:

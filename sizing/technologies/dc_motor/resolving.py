@@ -3,9 +3,14 @@ the designs asked about alone, on a catalog of the parts they use (designs
 from parts each simulated, catalog actuators re-simulated)."""
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from dataclasses import replace
 
 from ..registry import Resolving
+
+if TYPE_CHECKING:
+    from ...engine.candidate import Candidate
 
 # the catalog groups of a DC design's parts, by its components key
 PART_GROUPS = {"motor": "motors", "screw": "screws", "gear": "gears", "drive": "drives", "actuator": "dc_actuators"}
@@ -16,16 +21,16 @@ def parts_of(catalog, alive: tuple):
     ``alive`` designs use; the other technologies' parts are kept."""
     used = {attr: set() for attr in PART_GROUPS.values()}
     for c in alive:
-        for kind, ident in (c.get("components") or {}).items():
+        for kind, ident in (c.components or {}).items():
             if kind in PART_GROUPS and ident is not None:
                 used[PART_GROUPS[kind]].add(ident)
     return replace(catalog, **{attr: {k: v for k, v in getattr(catalog, attr).items() if k in ids}
                                for attr, ids in used.items()})
 
 
-def units(solve, req, catalog, loads, cs: list[dict]) -> list[dict]:
+def units(solve, req, catalog, loads, cs: list[Candidate]) -> list[dict]:
     """Designs ``cs`` re-solved for ``req`` and ``catalog``."""
-    rows = {tuple((c.get("components") or {}).get(k) for k in ("motor", "screw", "gear", "drive")) for c in cs}
+    rows = {tuple((c.components or {}).get(k) for k in ("motor", "screw", "gear", "drive")) for c in cs}
     return solve(req, parts_of(catalog, tuple(cs)), loads, None, "summary", rows=rows)[0].candidates
 
 

@@ -2,6 +2,8 @@
 after it see it (``registry.Technology``)."""
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from .records import DCActuatorDesign, DCDesign
 from ...sim.dc_motor import DCMotorModel
 from ..registry import Group, Technology, on_call
@@ -9,17 +11,20 @@ from . import resolving, actuator, presentation, stage, words
 from .catalog_actuators import dc_duration
 from .verdict import dc_sourced
 
+if TYPE_CHECKING:
+    from ...engine.candidate import Candidate
 
-def supply_caveat(req, feasible: list[dict], catalog) -> str:
+
+def supply_caveat(req, feasible: list[Candidate], catalog) -> str:
     """Designs from parts: their drives and windings follow the supply."""
     if req.requirements.supply_voltage is None:
         return ""
     return f"; drives and windings chosen for the {req.requirements.supply_voltage:g} V supply"
 
 
-def traces(req, c: dict, stages, loads) -> list[dict] | None:
+def traces(req, c: Candidate, stages, loads) -> list[dict] | None:
     """Design ``c`` re-simulated under every load case with its traces kept."""
-    d, S = stages.held("dc_motor", c["id"]), req.requirements.stroke
+    d, S = stages.held("dc_motor", c.id), req.requirements.stroke
     if isinstance(d, DCActuatorDesign):
         return actuator.step_cases(d.actuator, S, loads, dc_duration(req), keep_traces=True)
     if d is not None and d.model:
@@ -29,11 +34,11 @@ def traces(req, c: dict, stages, loads) -> list[dict] | None:
     return None
 
 
-def study_design(req, catalog, c: dict, stages):
+def study_design(req, catalog, c: Candidate, stages):
     """What robust perturbs: a design from parts (``read_back.DCPartsDesign``),
     as the solve sized it or read back from its record."""
     from .read_back import dc_parts_design, read_back_parts
-    held = stages.held("dc_motor", c["id"]) if stages is not None else None
+    held = stages.held("dc_motor", c.id) if stages is not None else None
     return dc_parts_design(catalog, held) if isinstance(held, DCDesign) else read_back_parts(catalog, c)
 
 
@@ -48,7 +53,7 @@ TECHNOLOGY = Technology(
     rests_on=("sizing.physics.dc_motor", "sizing.physics.motor", "sizing.physics.screw", "sizing.sim.dc_motor"),
     traces=traces, counts_key="dc_parts", in_every_sweep_point=True,
     summary_fields=lambda catalog, candidates: {"dc_sourced": dc_sourced(catalog, candidates)},
-    perturbable=lambda candidate, asked: candidate.get("variant") == "parts",     # not the catalog's actuators
+    perturbable=lambda candidate, asked: candidate.variant == "parts",     # not the catalog's actuators
     evaluate=on_call("sizing.technologies.dc_motor.evaluate_file", "evaluate_dc"),
     study_design=study_design, verify_perturbed=on_call("sizing.technologies.dc_motor.perturbed", "verify_perturbed"),
     report=presentation.PRESENTATION, resolving=resolving.RESOLVING,

@@ -5,7 +5,12 @@ on. Best: lowest mass among the feasible, then cost (the ranking's first
 objective; the seed's objectives are mass and cost)."""
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from ...engine.assumed import assumed_clause, in_words
+
+if TYPE_CHECKING:
+    from ...engine.candidate import Candidate
 
 REAL = ("sourced", "datasheet", "measured")
 
@@ -17,8 +22,8 @@ def is_real(entry) -> bool:
     return any(text.split(":", 1)[0].strip() in REAL for text in entry.status.values())
 
 
-def _real_design(catalog, c) -> bool:
-    for ident in c.get("components", {}).values():
+def _real_design(catalog, c: Candidate) -> bool:
+    for ident in (c.components or {}).values():
         if not isinstance(ident, str):
             continue
         try:
@@ -30,38 +35,38 @@ def _real_design(catalog, c) -> bool:
     return True
 
 
-def _brief(c) -> dict:
-    m = c.get("margins", {})
-    driver = c.get("driver") or (min(m, key=m.get) if m else None)
-    sim = c.get("simulated") or {}
-    return {"id": c["id"], "name": c.get("name"), "components": c.get("components", {}), "mass_kg": c["metrics"].get("mass_kg"),
-            "cost_usd": c["metrics"].get("cost_usd"), "driver": driver,
+def _brief(c: Candidate) -> dict:
+    m = c.margins or {}
+    driver = c.driver or (min(m, key=m.get) if m else None)
+    sim = c.simulated or {}
+    return {"id": c.id, "name": c.name, "components": c.components or {}, "mass_kg": c.metrics.get("mass_kg"),
+            "cost_usd": c.metrics.get("cost_usd"), "driver": driver,
             "binding_margin": m.get(driver) if driver else None,
-            "blocked_force_N": (c.get("static") or {}).get("blocked_force_N"),
+            "blocked_force_N": (c.static or {}).get("blocked_force_N"),
             "winding_temperature_degC": sim.get("winding_temperature_degC"),
             "speed_m_s": [case.get("speed_m_s") for case in sim.get("cases", [])],
-            "rests_on_assumed": c.get("rests_on_assumed", []), "rests_on_rules": c.get("rests_on_rules", [])}
+            "rests_on_assumed": list(c.rests_on_assumed or ()), "rests_on_rules": c.own.get("rests_on_rules", [])}
 
 
-def dc_sourced(catalog, candidates: list[dict]) -> dict:
+def dc_sourced(catalog, candidates: list[Candidate]) -> dict:
     """``summary.dc_sourced``: {"best_on_sourced_parts", "best_on_any_parts",
     "best_on_sourced_parts_binding_on_no_assumed_value" (else
     "closest_on_sourced_parts_binding_on_no_assumed_value"), "feasible_on_sourced_parts", "feasible_on_any_parts", "text"}; a best is
     null when no feasible DC design exists on such parts."""
-    dc = [c for c in candidates if c.get("technology") == "dc_motor" and c.get("variant") == "parts"
-          and c.get("feasible") and c.get("metrics")]
-    key = lambda c: (c["metrics"].get("mass_kg", float("inf")), c["metrics"].get("cost_usd", float("inf")))
+    dc = [c for c in candidates if c.technology == "dc_motor" and c.variant == "parts"
+          and c.feasible and c.metrics]
+    key = lambda c: (c.metrics.get("mass_kg", float("inf")), c.metrics.get("cost_usd", float("inf")))
     real = [c for c in dc if _real_design(catalog, c)]
     best_any = min(dc, key=key) if dc else None
     best_real = min(real, key=key) if real else None
     # real parts whose binding margin rests on no assumed value (a maker's rule may enter it);
     # when none is feasible, the closest such design
-    firm_of = lambda pool: [c for c in pool if not any(x["decides"] for x in c.get("rests_on_assumed", []))]
+    firm_of = lambda pool: [c for c in pool if not any(x["decides"] for x in (c.rests_on_assumed or []))]
     firm = firm_of(real)
     best_firm = min(firm, key=key) if firm else None
-    tried = firm_of([c for c in candidates if c.get("technology") == "dc_motor" and c.get("variant") == "parts"
-                     and c.get("stage") == "simulated" and c.get("driver") and _real_design(catalog, c)])
-    closest = max(tried, key=lambda c: c["margins"][c["driver"]]) if tried and best_firm is None else None
+    tried = firm_of([c for c in candidates if c.technology == "dc_motor" and c.variant == "parts"
+                     and c.stage == "simulated" and c.driver and _real_design(catalog, c)])
+    closest = max(tried, key=lambda c: c.margins[c.driver]) if tried and best_firm is None else None
     out = {"feasible_on_sourced_parts": len(real), "feasible_on_any_parts": len(dc),
            "best_on_sourced_parts": _brief(best_real) if best_real else None,
            "best_on_any_parts": _brief(best_any) if best_any else None,

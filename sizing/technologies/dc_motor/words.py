@@ -2,13 +2,18 @@
 and the words (``engine.describe``) of a results.json candidate."""
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from ...display import number
 from ...engine.describe import mm, part_words
 from ...engine.names import short_id, id_tokens
 
+if TYPE_CHECKING:
+    from ...engine.candidate import Candidate
 
-def short_name(c: dict) -> str:
-    comp = c["components"]
+
+def short_name(c: Candidate) -> str:
+    comp = c.components
     if "actuator" in comp:
         return "DC " + short_id(comp["actuator"], 28)
     gear = comp.get("gear")
@@ -16,8 +21,8 @@ def short_name(c: dict) -> str:
                                 id_tokens(gear, 2) if gear else "") if x)
 
 
-def describe(c: dict, catalog) -> str:
-    k, s = c["components"], c.get("static") or {}
+def describe(c: Candidate, catalog) -> str:
+    k, s = c.components, c.static or {}
     if "actuator" in k:
         return f"{part_words(catalog, k['actuator'])}, stroke {mm(s.get('stroke_m'))} mm"
     parts = [part_words(catalog, k.get("motor")), part_words(catalog, k.get("screw")),

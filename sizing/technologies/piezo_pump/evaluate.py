@@ -34,13 +34,14 @@ def pump_requirements(design) -> RequirementsFile:
         "load": design.load.model_dump(exclude_none=True), "duty": {"strokes_per_second": design.strokes_per_second}})
 
 
-def design_from_candidate(req, cand: dict):
-    """The pump design file a results.json pump candidate stands for, judged
-    against ``req``'s stroke, speed, blocked force, duty and load."""
+def design_file_of(req, design: Mapping):
+    """The pump design file a pump candidate's ``design`` (results.json)
+    stands for, judged against ``req``'s stroke, speed, blocked force, duty
+    and load."""
     from .design_file import PumpDesignFile
     r = req.requirements
     return PumpDesignFile.model_validate({
-        **cand["design"], "stroke": r.stroke, "speed": r.speed, "blocked_force": r.blocked_force,
+        **design, "stroke": r.stroke, "speed": r.speed, "blocked_force": r.blocked_force,
         "strokes_per_second": req.duty.strokes_per_second, "load": req.load.model_dump(exclude_none=True)})
 
 

@@ -3,11 +3,16 @@ path as a bar of compliance shares, the thermal budget as a waterfall, the
 seal friction at pressure and what each design rests on that is assumed."""
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import html
 
 import plotly.graph_objects as go
 
 from ...report.layout import no_overprint
+
+if TYPE_CHECKING:
+    from ...engine.candidate import Candidate
 
 MEMBER_COLORS = {"stacks": "#1f77b4", "spacer": "#aec7e8", "base_plate": "#ff7f0e", "frame": "#2ca02c",
                  "wide_piston": "#98df8a", "oil_column": "#9467bd", "compensator": "#c5b0d5",
@@ -20,24 +25,24 @@ def _e(text) -> str:
     return html.escape(str(text))
 
 
-def piezo_designs(cands: list[dict], limit: int = 6) -> list[dict]:
+def piezo_designs(cands: list[Candidate], limit: int = 6) -> list[Candidate]:
     """The best-ranked sized designs, one per variant first."""
-    sized = [c for c in cands if c["technology"] == "piezohydraulic" and c.get("force_path")]
+    sized = [c for c in cands if c.technology == "piezohydraulic" and c.own.get("force_path")]
     picks, known = [], set()
     for c in sized:
-        if c.get("variant") not in known:
+        if c.variant not in known:
             picks.append(c)
-            known.add(c.get("variant"))
+            known.add(c.variant)
     picks += [c for c in sized if c not in picks]
     return picks[:limit]
 
 
-def force_path_figure(designs: list[dict]) -> go.Figure:
+def force_path_figure(designs: list[Candidate]) -> go.Figure:
     fig = go.Figure()
-    names = [d.get("name", d["id"]) for d in designs]
-    members = [m for m in MEMBER_COLORS if any(x["member"] == m for d in designs for x in d["force_path"])]
+    names = [d.name or d.id for d in designs]
+    members = [m for m in MEMBER_COLORS if any(x["member"] == m for d in designs for x in d.own["force_path"])]
     for m in members:
-        share = [next((x["compliance_share"] for x in d["force_path"] if x["member"] == m), 0.0) for d in designs]
+        share = [next((x["compliance_share"] for x in d.own["force_path"] if x["member"] == m), 0.0) for d in designs]
         fig.add_trace(go.Bar(y=names, x=share, name=m, orientation="h", marker_color=MEMBER_COLORS[m],
                              hovertemplate=m + ": %{x:.1%} of the compliance<extra></extra>"))
     fig.update_layout(barmode="stack", height=max(300, 140 + 40 * len(designs)), margin=dict(l=10, r=10, b=30),
@@ -46,29 +51,29 @@ def force_path_figure(designs: list[dict]) -> go.Figure:
     return no_overprint(fig)
 
 
-def thermal_figure(design: dict) -> go.Figure:
-    tb = design["thermal_budget"]
+def thermal_figure(design: Candidate) -> go.Figure:
+    tb = design.own["thermal_budget"]
     labels = [label for key, label in TERMS] + ["net"]
     values = [tb[key] * 1e3 for key, _ in TERMS] + [tb["net_m"] * 1e3]
     fig = go.Figure(go.Waterfall(x=labels, y=values, measure=["relative"] * len(TERMS) + ["total"],
                                  hovertemplate="%{x}: %{y:.2f} mm<extra></extra>"))
     fig.update_layout(height=330, margin=dict(l=10, r=10, t=30, b=30), showlegend=False,
-                      title=f"thermal budget of {design.get('name', design['id'])}", yaxis=dict(title="output displacement, mm"))
+                      title=f"thermal budget of {design.name or design.id}", yaxis=dict(title="output displacement, mm"))
     return fig
 
 
-def section(cands: list[dict], to_div) -> str:
+def section(cands: list[Candidate], to_div) -> str:
     """HTML of the section; ``to_div(fig)`` renders a figure without plotly.js."""
     designs = piezo_designs(cands)
     if not designs:
         return "<h2>Force path, thermal budget, seals</h2><p>No piezohydraulic design was sized.</p>"
     rows = "".join(
-        f"<tr><td class='id' title='{_e(d['id'])}'>{_e(d.get('name', d['id']))}</td><td class='l'>{_e(d.get('variant', ''))}</td>"
-        f"<td>{d['static']['blocked_force_ideal_N']:.0f}</td><td>{d['static']['blocked_force_N']:.0f}</td>"
-        f"<td>{d['static'].get('blocked_force_net_N', float('nan')):.0f}</td>"
-        f"<td>{d['seal_friction_N']['wide']:.0f}</td><td>{d['seal_friction_N']['narrow']:.1f}</td>"
-        f"<td>{d['seal_friction_N']['at_pressure_Pa'] / 1e6:.2f}</td>"
-        f"<td>{d['thermal_budget']['net_m'] * 1e3:.1f}</td>"
+        f"<tr><td class='id' title='{_e(d.id)}'>{_e(d.name or d.id)}</td><td class='l'>{_e(d.variant or '')}</td>"
+        f"<td>{d.static['blocked_force_ideal_N']:.0f}</td><td>{d.static['blocked_force_N']:.0f}</td>"
+        f"<td>{d.static.get('blocked_force_net_N', float('nan')):.0f}</td>"
+        f"<td>{d.own['seal_friction_N']['wide']:.0f}</td><td>{d.own['seal_friction_N']['narrow']:.1f}</td>"
+        f"<td>{d.own['seal_friction_N']['at_pressure_Pa'] / 1e6:.2f}</td>"
+        f"<td>{d.own['thermal_budget']['net_m'] * 1e3:.1f}</td>"
         f"<td class='l'>{_e(', '.join(_assumed_names(d)[:8]))}"
         f"{' ...' if len(_assumed_names(d)) > 8 else ''}</td></tr>" for d in designs)
     table = ("<div class='scroll'><table><tr><th class='l'>design</th><th class='l'>variant</th>"
@@ -84,7 +89,7 @@ def section(cands: list[dict], to_div) -> str:
             f"case.</p>{to_div(force_path_figure(designs))}{table}{waterfalls}")
 
 
-def _assumed_names(d) -> list[str]:
+def _assumed_names(d: Candidate) -> list[str]:
     """part.field of each assumed value, those that decide the binding margin first."""
-    rows = sorted(d.get("rests_on_assumed") or [], key=lambda r: not r.get("decides"))
+    rows = sorted(d.rests_on_assumed or [], key=lambda r: not r.get("decides"))
     return [f"{r['part']}.{r['field']}" + (" (decides)" if r.get("decides") else "") for r in rows]

@@ -8,6 +8,7 @@ from the thermal budget, as the solve derives it."""
 from __future__ import annotations
 
 from ...engine.evaluate import lookup
+from ...engine.judge import Judged
 from .records import Variant
 from ...errors import InputError
 from ...io.catalog import Catalog
@@ -17,15 +18,16 @@ from .evaluate_file import geometry, structure_of
 from .search import combos_of
 
 
-def judge(req, catalog: Catalog, designs: list[PiezoDesignFile], files: list[str], loads) -> list[dict]:
-    """The candidates of ``designs``, verified together (one batched
-    simulation per chunk, as the solve)."""
+def judge(req, catalog: Catalog, designs: list[PiezoDesignFile], files: list[str], loads) -> list[Judged]:
+    """``designs`` verified together (one batched simulation per chunk, as
+    the solve), each as its candidate's margins and metrics."""
     from .stage import verify_sized
     triples = [_triple(req, catalog, d, f) for d, f in zip(designs, files)]
     out = []
     for design, cands in zip(designs, verify_sized(req, catalog, triples, loads)):
         passive = [c for c in cands if c["id"].endswith("-pc")]
-        out.append(passive[0] if design.spacer_length > 0 and passive else cands[0])
+        c = passive[0] if design.spacer_length > 0 and passive else cands[0]
+        out.append(Judged(c["margins"], c["metrics"], c.get("static_margins")))
     return out
 
 

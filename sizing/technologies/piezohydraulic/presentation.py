@@ -3,32 +3,37 @@ markers (one per variant), the stacks and bores in the tables, the force
 path section and what the screen ruled out before sizing."""
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 
 from ..presentation import ruled_out_by_part, SIZED_STAGES, Marker, Presentation, escaped as _e, shown
 
+if TYPE_CHECKING:
+    from ...engine.candidate import Candidate
 
-def hover(c: dict) -> str:
-    comp = c["components"]
+
+def hover(c: Candidate) -> str:
+    comp = c.components
     ratio = comp.get("ratio")
     head = (f"{comp['n_stacks']} x {comp['stack']}, R = {ratio:.0f}<br>{comp['fluid']}, {comp['seal']}, "
             f"{comp['amplifier']}" if ratio else f"{comp['n_stacks']} x {comp['stack']}")
-    if c.get("variant") == "compensated":
+    if c.variant == "compensated":
         head += "<br>with thermal compensator"
     return head
 
 
-def parts(c: dict) -> str:
-    k, s = c["components"], c.get("static", {})
+def parts(c: Candidate) -> str:
+    k, s = c.components, (c.static or {})
     return (f"{k['n_stacks']} x {k['stack']}, R = {shown(k['ratio'], fmt='{:.1f}')}, "
             f"bores {shown(s.get('wide_diameter_m'), 1e3, '{:.0f}')}/{shown(s.get('narrow_diameter_m'), 1e3, '{:.1f}')} mm, "
             f"{k['fluid']}, {k['seal']}, {k['amplifier']}")
 
 
-def comparison_picks(own: list[dict]) -> list[dict]:
+def comparison_picks(own: list[Candidate]) -> list[Candidate]:
     """The best compensated and the best uncompensated design."""
     picks = []
     for variant in ("compensated", "uncompensated"):
-        group = [c for c in own if c.get("variant") == variant and c.get("stage") != "pruned"]
+        group = [c for c in own if c.variant == variant and c.stage != "pruned"]
         if group:
             picks.append(group[0])
     return picks
@@ -46,7 +51,7 @@ def counts_words(results: dict) -> str:
 def pruned_words(results: dict) -> str:
     """The combinations ruled out before sizing: by stack and requirement
     when recorded one by one, else by the requirement each misses most."""
-    pruned = [c for c in results["candidates"] if c.get("stage") == "pruned" and c["technology"] == "piezohydraulic"]
+    pruned = [c for c in results["candidates"] if c.stage == "pruned" and c.technology == "piezohydraulic"]
     counted = ((results["summary"].get("counts") or {}).get("piezohydraulic") or {}).get("ruled_out_before_sizing", 0)
     if counted and not pruned:        # counted by reason, not recorded (solve --detail full records each)
         reasons = (results["summary"].get("ruled_out_by_technology") or {}).get("piezohydraulic") or {}
@@ -64,7 +69,7 @@ def pruned_words(results: dict) -> str:
             f"<th class='l'>ruled out by</th><th>combinations</th></tr>{rows}</table>")
 
 
-def force_path_section(cands: list[dict], to_div) -> str:
+def force_path_section(cands: list[Candidate], to_div) -> str:
     from .force_path_html import section         # plotly loads with the report, not with the registry
     return section(cands, to_div)
 

@@ -5,6 +5,7 @@ catalog, the geometry (R, wide bore, drive voltage) as sized)."""
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 from .records import Variant
 from ...errors import InputError
@@ -13,26 +14,29 @@ from ...io.requirements import RequirementsFile
 from .convex import SizingResult
 from .search import enumerate_combos
 
+if TYPE_CHECKING:
+    from ...engine.candidate import Candidate
 
-def sized_designs(req: RequirementsFile, catalog: Catalog, candidates: list[dict]) -> list[tuple]:
+
+def sized_designs(req: RequirementsFile, catalog: Catalog, candidates: list[Candidate]) -> list[tuple]:
     """(Combo, Variant, SizingResult) of each piezohydraulic candidate, in
     order. A passively compensated candidate ("-pc") is rebuilt as its
     as-built variant: ``piezo_designs.designs`` derives the spacer again."""
     combos = {c.key: c for c in enumerate_combos(req, catalog)}
     out = []
     for cand in candidates:
-        design = cand.get("design", {})
+        design = cand.design or {}
         comp_id = design.get("compensator")
-        key = _combo_key(cand["id"], design.get("material", ""), comp_id)
-        if cand.get("technology") != "piezohydraulic" or key not in combos or "design" not in cand \
+        key = _combo_key(cand.id, design.get("material", ""), comp_id)
+        if cand.technology != "piezohydraulic" or key not in combos or cand.design is None \
                 or design.get("material") not in catalog.materials \
                 or (comp_id is not None and comp_id not in catalog.compensators):
-            raise InputError(None, cand.get("id"), "expected a sized piezohydraulic design of this catalog")
+            raise InputError(None, cand.id, "expected a sized piezohydraulic design of this catalog")
         combo = combos[key]
         variant = Variant(catalog.materials[design["material"]],
                           None if comp_id is None else catalog.compensators[comp_id], False)
-        gp = cand.get("gp", {})
-        res = SizingResult(success=bool(gp.get("success", True)), ratio=float(cand["components"]["ratio"]),
+        gp = cand.own.get("gp", {})
+        res = SizingResult(success=bool(gp.get("success", True)), ratio=float(cand.components["ratio"]),
                            wide_area=math.pi / 4 * float(design["wide_diameter"]) ** 2,
                            voltage_fraction=float(design["voltage"]) / combo.stack.max_voltage,
                            cap_thickness=float(design["end_cap_thickness"]),

@@ -2,6 +2,8 @@
 (``registry.Technology``)."""
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 
 from ..registry import Group, Technology, on_call
@@ -9,15 +11,18 @@ from . import resolving, designs, presentation, stage, words
 from .thermal_words import thermal_statement
 from .verify import simulate_cases
 
+if TYPE_CHECKING:
+    from ...engine.candidate import Candidate
 
-def amplifier_caveat(req, feasible: list[dict], catalog) -> str:
+
+def amplifier_caveat(req, feasible: list[Candidate], catalog) -> str:
     """Feasible only because the amplifier sits in the electronics bay: say so
     next to the verdict, not only among the assumptions."""
     T = req.requirements.max_temperature
     if req.options.amplifier_location != "bay":
         return ""
-    ratings = {c["components"]["amplifier"]: catalog.amplifiers[c["components"]["amplifier"]].max_temperature
-               for c in feasible if c["components"].get("amplifier") in catalog.amplifiers}
+    ratings = {c.components["amplifier"]: catalog.amplifiers[c.components["amplifier"]].max_temperature
+               for c in feasible if c.components.get("amplifier") in catalog.amplifiers}
     below = {k: v for k, v in ratings.items() if v < T}
     if not below or len(below) < len(ratings):
         return ""
@@ -26,20 +31,20 @@ def amplifier_caveat(req, feasible: list[dict], catalog) -> str:
             f"{T:g} degC): with the amplifier at the actuator none is feasible")
 
 
-def traces(req, c: dict, stages, loads) -> list[dict] | None:
+def traces(req, c: Candidate, stages, loads) -> list[dict] | None:
     """Design ``c`` re-simulated under every load case with its traces kept."""
-    d = stages.held("piezohydraulic", c["id"])
+    d = stages.held("piezohydraulic", c.id)
     if d is None or not d.built:
         return None
     sims = simulate_cases(d.cand, loads, np.array([d.ramp]), target_stroke=req.requirements.stroke, keep_traces=True)
     return [{"load_N": float(s["load_N"][0]), "t": s["t"], "position_m": s["position_m"][0]} for s in sims]
 
 
-def study_design(req, catalog, c: dict, stages):
+def study_design(req, catalog, c: Candidate, stages):
     """What robust perturbs: the (Combo, Variant, SizingResult) triple, as
     the solve sized it or read back from its record."""
     from .read_back import sized_designs
-    held = stages.held("piezohydraulic", c["id"]) if stages is not None else None
+    held = stages.held("piezohydraulic", c.id) if stages is not None else None
     return held.sized if held is not None else sized_designs(req, catalog, [c])[0]
 
 

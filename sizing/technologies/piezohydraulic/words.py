@@ -2,20 +2,25 @@
 and the words (``engine.describe``) of a results.json candidate."""
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import re
 
 from ...display import number
 from ...engine.describe import mm, part_words
 from ...engine.names import short_id, abbreviated
 
+if TYPE_CHECKING:
+    from ...engine.candidate import Candidate
 
-def short_name(c: dict) -> str:
-    comp = c["components"]
+
+def short_name(c: Candidate) -> str:
+    comp = c.components
     stack = short_id(comp.get("stack"))
     stack = stack.upper().replace("-", "", 1) if re.match(r"^[a-z]-\d", stack) else stack
     parts = [f"{comp.get('n_stacks')}x{stack}", abbreviated(comp.get("fluid"), 1), abbreviated(comp.get("seal"), 3),
              abbreviated(comp.get("material"), 1)]
-    variant = c.get("variant")
+    variant = c.variant
     if variant == "passive":
         parts.append("sp")
     elif variant == "compensated":
@@ -23,8 +28,8 @@ def short_name(c: dict) -> str:
     return " ".join(p for p in parts if p)
 
 
-def describe(c: dict, catalog) -> str:
-    k, s = c["components"], c.get("static") or {}
+def describe(c: Candidate, catalog) -> str:
+    k, s = c.components, c.static or {}
     parts = [f"{k.get('n_stacks')} x {part_words(catalog, k.get('stack'))}", part_words(catalog, k.get("fluid")),
              part_words(catalog, k.get("seal")), f"{part_words(catalog, k.get('material'))} structure" if k.get("material") else "",
              part_words(catalog, k.get("compensator")) if k.get("compensator") else ""]

@@ -114,11 +114,11 @@ def piezo_simulation_budget(req, catalog, n_loads: int) -> int:
                               current().steps - reserved_steps(req, catalog, but="piezohydraulic"))
 
 
-def _simulate(req, designs: list[PiezoDesign], loads, progress, budget=None) -> list[Simulation | None]:
+def _simulate(req, designs: list[PiezoDesign], loads, progress, budget: int) -> list[Simulation | None]:
     """Simulate the sized designs under every load case: the statically
     feasible ones on the Pareto front first, then the next fronts, then the
-    rest, up to ``budget`` (default ``options.max_simulated``). Per design,
-    its simulation or None (not simulated)."""
+    rest, up to ``budget`` (``piezo_simulation_budget``). Per design, its
+    simulation or None (not simulated)."""
     out: list[Simulation | None] = [None] * len(designs)
     pool = [i for i, d in enumerate(designs) if d.gp.success and d.built and d.ruled_out is None]
     if not pool:
@@ -130,7 +130,7 @@ def _simulate(req, designs: list[PiezoDesign], loads, progress, budget=None) -> 
     level = np.full(len(pool), 10**6)
     if ok.any():
         level[ok] = nondominated_levels(F[ok])
-    chosen = [pool[j] for j in np.lexsort((level, ~ok))[: req.options.max_simulated if budget is None else budget]]
+    chosen = [pool[j] for j in np.lexsort((level, ~ok))[:budget]]
     # designs that differ only in the structure material have the same force
     # path (the material screen keeps the members' stiffness) and so the same
     # dynamics: simulate one of each and share the result

@@ -22,14 +22,10 @@ LIMIT_S = 5.0
 LOAD_LIMIT_S = 0.5
 ROOT = Path(__file__).resolve().parents[1]
 
+if __package__ in (None, ""):      # run as a script: the repository root holds the benchmarks package
+    sys.path.insert(0, str(ROOT))
 
-def _best(fn, repeat):
-    times, out = [], None
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        out = fn()
-        times.append(time.perf_counter() - t0)
-    return min(times), out
+from benchmarks.timing import best_of  # noqa: E402
 
 
 def _dc_step(req, catalog, loads, designs, serialise) -> tuple:
@@ -55,11 +51,11 @@ def main() -> int:
         t0 = time.perf_counter()
         catalog = load_catalog()
         parsed = time.perf_counter() - t0
-        cached, _ = _best(load_catalog, args.repeat)
+        cached, _ = best_of(load_catalog, args.repeat)
     req, _ = load_requirements(args.requirements)
     loads = [c["load_N"] for c in load_cases(req.load)]
-    t_search, found = _best(lambda: dc_search.search(catalog, req, loads), args.repeat)
-    t_dc, (out, candidates) = _best(lambda: _dc_step(req, catalog, loads, dc_parts_designs, parts_candidate),
+    t_search, found = best_of(lambda: dc_search.search(catalog, req, loads), args.repeat)
+    t_dc, (out, candidates) = best_of(lambda: _dc_step(req, catalog, loads, dc_parts_designs, parts_candidate),
                                     args.repeat)
     print(f"catalog: {len(catalog.motors)} motors, {len(catalog.gears)} gears, {len(catalog.screws)} screws, "
           f"{len(catalog.drives)} drives; load parsed {parsed:.2f} s, from its cache {cached:.3f} s "

@@ -16,13 +16,19 @@ candidate-seconds per wall-clock second.
 from __future__ import annotations
 
 import argparse
-import time
+import sys
+from pathlib import Path
 
 import numpy as np
 from scipy.integrate import solve_ivp
 
 from sizing.physics import hydraulics
 from sizing.sim.piezohydraulic import IDX, PiezoHydraulicModel, simulate
+
+if __package__ in (None, ""):      # run as a script: the repository root holds the benchmarks package
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+from benchmarks.timing import best_of  # noqa: E402
 
 T_END, RISE = 0.5, 0.3
 SEED_BW = (8.15e-7, -2.23e-7, 0.134, 0.0755, -5.46e-8, 1.14)   # seed Table 1
@@ -78,16 +84,6 @@ def ivp_solve(p, t_eval, method="RK45", rtol=1e-6):
 TARGET = 1e-3   # matched accuracy: RMS position error at most 0.1% of the stroke
 
 
-def best_time(fn, repeats):
-    """Best wall time of ``repeats`` calls (the machine's noise only adds)."""
-    best, result = np.inf, None
-    for _ in range(repeats):
-        start = time.perf_counter()
-        result = fn()
-        best = min(best, time.perf_counter() - start)
-    return best, result
-
-
 def rms_error(y, truth):
     return np.sqrt(np.mean((y - truth) ** 2, axis=1)) / np.ptp(truth, axis=1)
 
@@ -108,7 +104,7 @@ def main() -> None:
     print(f"{args.candidates} candidates, {T_END} s simulated each; matched accuracy: RMS error <= {TARGET:.0e} of stroke")
     ours = None
     for factor in (1.2, 0.8, 0.4, 0.2, 0.1):
-        wall, out = best_time(lambda: simulate(model, t, v, step_factor=factor), 5)
+        wall, out = best_of(lambda: simulate(model, t, v, step_factor=factor), 5)
         y, per_cand = out["position_m"], wall / args.candidates
         err = float(np.max(rms_error(y[sample], truth)))
         print(f"  batch   step factor {factor:<5g} {per_cand * 1e3:8.3f} ms/candidate  error {err:.1e}")
@@ -117,7 +113,7 @@ def main() -> None:
     ivp = None   # the fastest solve_ivp method and tolerance that meets the target
     for method in ("RK45", "LSODA", "Radau"):
         for rtol in (1e-2, 3e-3, 1e-3, 1e-4, 1e-5):
-            wall, y = best_time(lambda: np.array([ivp_solve(P[i], t, method, rtol) for i in sample]), 2)
+            wall, y = best_of(lambda: np.array([ivp_solve(P[i], t, method, rtol) for i in sample]), 2)
             per_cand = wall / args.sample
             err = float(np.max(rms_error(y, truth)))
             print(f"  {method:<7} rtol {rtol:<12g} {per_cand * 1e3:8.3f} ms/candidate  error {err:.1e}")

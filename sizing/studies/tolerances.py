@@ -159,9 +159,9 @@ def _table(b: BoucWen) -> BoucWenTable:
 
 
 def perturbed_parts(parts, tols: list[Tolerance], f: np.ndarray):
-    """``parts`` (dc_parts.PartArrays, one row) repeated once per sample,
-    each field named by a tolerance scaled by that sample's factor (f (n, p),
-    ``factors``). The catalog parts are untouched."""
+    """``parts`` (a ``PartArrays`` of the DC parts, one row)
+    repeated once per sample, each field named by a tolerance scaled by that
+    sample's factor (f (n, p), ``factors``). The catalog parts are untouched."""
     n = f.shape[0]
     out = parts.take(np.zeros(n, dtype=int))
     values = dict(out.values)

@@ -4,8 +4,8 @@ from a maker's family rule (``rests_on_rules``), each with ``decides``:
 the value enters the margin named by the candidate's driver.
 
 ``INPUTS`` lists, per DC margin, the fields of each part kind its formula
-uses (``dc_parts.static_screen``, the simulation in ``dc_sizing``, the
-catalog actuators of ``dc_candidates``).
+uses (``parts.static_screen``, the simulation in ``from_parts``, the
+catalog actuators of ``catalog_actuators``).
 """
 from __future__ import annotations
 

@@ -3,7 +3,7 @@
 Each catalog DC actuator is simulated (``technologies/dc_motor/actuator.py``: seed eq. 13-14 with
 the load term of docs/models.md and the catalog's PID) for a step of the
 required stroke under each load case. A stroke counts as reached at 98 % of
-the step (``dc.SETTLED``); speed = that travel / the time to reach it.
+the step (``actuator.SETTLED``); speed = that travel / the time to reach it.
 """
 from __future__ import annotations
 

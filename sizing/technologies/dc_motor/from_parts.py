@@ -3,7 +3,7 @@ gear x drive (``dc_parts``), give each design its controller
 (``dc_controller``), simulate the best under every load case with the
 back-EMF, current and voltage limits and the load term (``sim/dc_motor``,
 batched over designs and cases), and return each as a ``records.DCDesign``
-(``dc_candidate.py`` writes its results.json candidate, docs/formats.md).
+(``record.py`` writes its results.json candidate, docs/formats.md).
 
 Simulation-based margins replace the static ones where the simulation says
 more: stroke and speed (98 % of the step, as for the catalog actuators),

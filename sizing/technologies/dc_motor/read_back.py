@@ -19,9 +19,9 @@ if TYPE_CHECKING:                   # the types alone: not imported when the mod
 @dataclass(frozen=True)
 class DCPartsDesign:
     """A solved DC design from parts, rebuilt for ``sizing robust``: its
-    parts as one row of ``dc_parts.PartArrays`` and what was set on the
+    parts as one row of ``parts.PartArrays`` and what was set on the
     nominal parts and stays when the parts vary (the controller's gains and
-    the drive's current and voltage limits, ``dc_sizing.verify_parts``)."""
+    the drive's current and voltage limits, ``from_parts.verify_parts``)."""
     parts: PartArrays       # one row
     settings: dict          # kp, ki, kd, current_limit_A, voltage_limit_V
     duration: float         # simulated time of each step (s), as solved
@@ -58,7 +58,7 @@ def read_back_parts(catalog: Catalog, cand: Candidate) -> DCPartsDesign:
 
 
 def parts_design(catalog: Catalog, parts: DCParts, settings: dict, duration: float | None) -> DCPartsDesign:
-    """``parts`` as one row of ``dc_parts.PartArrays`` (enumerated from a
+    """``parts`` as one row of ``parts.PartArrays`` (enumerated from a
     catalog of these parts alone, so the row's values are the solve's)."""
     from .parts import enumerate_parts
     p = enumerate_parts(parts_catalog(catalog, parts))

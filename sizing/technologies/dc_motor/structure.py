@@ -67,7 +67,7 @@ ECCENTRICITY = 1.0e-3         # m: the load's offset from the axis (assumed: pin
 CAP_MIN_THICKNESS = 3.0e-3    # m: thinnest end plate (assumed)
 PIN_MIN_DIAMETER = 4.0e-3     # m: smallest clevis pin (assumed: an M4 rod-end thread class)
 LUG_MIN_THICKNESS = 2.0e-3    # m: thinnest lug (assumed)
-BEARING_LIFE_H = 200.0        # h: the same required life as the screw (dc_parts.REQUIRED_LIFE_H)
+BEARING_LIFE_H = 200.0        # h: the same required life as the screw (parts.REQUIRED_LIFE_H)
 BEARING_STATIC_SAFETY = 2.0   # C0 / P0 (ISO 76 practice for vibration and shock; the screw's THK 2.0 likewise)
 JOURNAL_OVER_SHAFT = 1.05     # bearing bore at most 1.05 x the shaft's mass-equivalent diameter
 # Members sized by a closed form (end plate, clevis) are sized for the force

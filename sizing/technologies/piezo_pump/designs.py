@@ -9,7 +9,7 @@ ranked beside the single-stroke actuator and the DC motor.
    piston), then the closest of those that do not, are verified by the
    cycle-resolved simulation (sim/pump.py) under every load case: thousands
    of pumping cycles a stroke at the higher frequencies.
-3. Each simulated design as a ``records.PumpDesign`` (``pump_candidate.py``
+3. Each simulated design as a ``records.PumpDesign`` (``record.py``
    writes its results.json candidate, CONTRACTS.md, "The piezo pump"); the
    rows not simulated are counted by the check they miss most (or as not
    simulated).
@@ -228,7 +228,7 @@ def _simulate(req, ref, gs, R, st, chosen, loads, step_factor=1.0) -> list[dict]
 def simulation_model(req, ref, gs, R, st, idx) -> PumpModel:
     """The cycle-resolved model of the screen's rows ``idx`` (no load force
     yet). ``ref``: the catalog's reference Bouc-Wen stack, the one the
-    screen's strokes transfer (``pump_screen.rows``), so both models drive
+    screen's strokes transfer (``screen.rows``), so both models drive
     the same free stroke."""
     r = req.requirements
     bws = [stack_bouc_wen(gs[R["group"][i]].stack, ref)[0] for i in idx]

@@ -135,7 +135,7 @@ class SizingResult:
     binding: list = field(default_factory=list)   # requirements that cannot be met, worst first
     status: str = ""
     # the drive as a design file fixes it (``sizing evaluate``); None: planned
-    # by ``piezo_designs._build`` from the requirements (units the ramp needs)
+    # by ``designs._build`` from the requirements (units the ramp needs)
     amplifier_units: float | None = None
     ramp_time: float | None = None     # s
 

@@ -373,7 +373,7 @@ def compensator_creep(leak_conductance, pressure, hold_time, narrow_diameter):
 def nominal_figures(b: PiezoBrief, catalog, combos: list[Combo]) -> list[dict]:
     """Per combination ruled out before sizing, in order, the figures of a
     nominal design, so its record still carries a force path, a thermal
-    budget, seal friction and static figures (``candidate.pruned_candidate``):
+    budget, seal friction and static figures (``record.pruned_candidate``):
     R that just gives the stroke at the voltage the amplifier allows, the
     bore at the seal's pressure rating (or the stack packing), the default
     structure material sized by the closed-form rule, no compensator.

@@ -21,7 +21,7 @@ if TYPE_CHECKING:
 def sized_designs(req: RequirementsFile, catalog: Catalog, candidates: list[Candidate]) -> list[tuple]:
     """(Combo, Variant, SizingResult) of each piezohydraulic candidate, in
     order. A passively compensated candidate ("-pc") is rebuilt as its
-    as-built variant: ``piezo_designs.designs`` derives the spacer again."""
+    as-built variant: ``designs.designs`` derives the spacer again."""
     combos = {c.key: c for c in enumerate_combos(req, catalog)}
     out = []
     for cand in candidates:

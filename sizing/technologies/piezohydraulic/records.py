@@ -52,7 +52,7 @@ class PiezoDesign:
     """A sized piezohydraulic design with its static figures and margins.
 
     ``origin``: the index of the (combination, variant, sizing) it was built
-    from in the list handed to ``piezo_designs.designs`` (a passive design
+    from in the list handed to ``designs.designs`` (a passive design
     shares its as-built parent's). Before it is built (the sizing gave no
     finite geometry) ``cand`` is None and the figures are empty."""
 

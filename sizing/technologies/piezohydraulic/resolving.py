@@ -14,7 +14,7 @@ from ..registry import Resolving
 if TYPE_CHECKING:
     from ...engine.candidate import Candidate
 
-# margins a simulation replaces or adds (``candidate.sim_margins``): a design
+# margins a simulation replaces or adds (``record.sim_margins``): a design
 # left unsimulated that misses only these might comply once simulated
 SIMULATED = ("stroke", "speed", "overshoot", "stiffness")
 

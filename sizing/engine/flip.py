@@ -43,14 +43,14 @@ from typing import TYPE_CHECKING, Callable
 
 from . import resolve
 from .rank import verdict
+from ..settings import FLIP_COLD_LIMIT as COLD_LIMIT
+from ..settings import FLIP_RANGE as RANGE
+from ..settings import FLIP_TEMPERATURE_SPAN as TEMPERATURE_SPAN
+from ..settings import FLIP_TOLERANCE as TOLERANCE
 
 if TYPE_CHECKING:
     from .candidate import Candidate
 
-from ..settings import FLIP_TOLERANCE as TOLERANCE  # noqa: E402  of the value; of degC for a temperature (sizing/settings.py)
-RANGE = 4.0                # searched from value / RANGE to value x RANGE
-TEMPERATURE_SPAN = 150.0   # degC either side of a temperature
-COLD_LIMIT = -55.0         # degC, the usual military cold limit (MIL-STD-810 low temperature)
 # catalog fields whose larger value makes a design worse; any other field
 # (ratings, capacities, stiffness, efficiency) is worse smaller
 HIGHER_HURTS = ("capacitance", "mass", "inertia", "cost_usd", "resistance", "viscous_damping", "friction",

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from types import SimpleNamespace
 
 from .. import __version__
+from ..settings import FAR_MISS
 from ..io.catalog import Catalog
 from ..io.requirements import RequirementsFile
 from ..technologies.registry import technologies
@@ -124,10 +125,7 @@ def _with_flips(req, catalog, loads, candidates, summary) -> dict:
 # --- candidates -------------------------------------------------------------
 UNVERIFIED = ("sized", "gp_infeasible")
 UNVERIFIED_REASON = "not simulated: misses a static check"
-# a simulated design that misses a check by more than this (margin -0.5: it
-# delivers half of what is asked, or needs twice what is allowed) is far from
-# any design an engineer would adjust into compliance: counted, not recorded
-FAR_MISS = -0.5
+# a simulated design that misses a check by more than FAR_MISS is counted, not recorded
 FAR_MISS_REASON = "simulated: misses {} by more than 50 %"
 
 

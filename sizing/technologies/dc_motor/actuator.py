@@ -10,6 +10,7 @@ from ...physics import motor as motor_phys
 from ...physics import screw as screw_phys
 from ...sim.dc_motor import DCMotorModel, simulate
 from ...sim.metrics import step_metrics
+from ...settings import STEP_SETTLED as SETTLED
 
 OUTPUT_RATE_HZ = 2000.0
 # Output samples of one simulated step response: the seed's 1.6 s at 2 kHz
@@ -29,7 +30,6 @@ def output_times(duration: float) -> np.ndarray:
     """The output times (s) of a step response lasting ``duration`` s."""
     rate = output_rate(duration)
     return np.arange(0.0, duration + 0.5 / rate, 1.0 / rate)
-SETTLED = 0.98      # a step counts as reached within 2% of its size
 
 
 def voltage_limit(act: DCActuator) -> dict:

@@ -33,11 +33,11 @@ from .catalog_actuators import dc_duration
 from ...engine.rank import OBJECTIVE_KEYS, nondominated_levels, verdict
 from ...engine.records import Simulation, frozen
 from .records import DCDesign, DCParts, DCPartsOutcome
+from ...settings import DC_MAX_SIMULATED as MAX_SIMULATED
+from ...settings import DC_MIN_SIMULATED as MIN_SIMULATED
 
-MAX_SIMULATED = 300     # designs simulated per solve (each under every load case)
 REAL_SHARE = 1 / 3      # of the simulation budget, first for designs whose parts all exist (dc_verdict)
 NOT_SIMULATED = "not simulated (feasible, later Pareto level)"   # statically feasible, beyond the simulation budget
-MIN_SIMULATED = 24      # filled with the closest-to-feasible when fewer pass the screen
 SIM_CHUNK = 64          # rows (design x load case) per batched simulation
 
 

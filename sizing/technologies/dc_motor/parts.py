@@ -47,12 +47,12 @@ import numpy as np
 from ...physics import motor as motor_phys
 from ...physics import screw as screw_phys
 from . import structure as dc_structure
+from ...settings import REQUIRED_LIFE_H
+from ...settings import TRAVEL_FACTOR
 
 # Assumed construction (README, DC sizing): stated here, used everywhere.
-from ...settings import TRAVEL_FACTOR  # noqa: E402  designed travel over the required stroke (assumed, sizing/settings.py)
 SCREW_EXTRA_LENGTH = 0.05     # m: nut, bearings and end stop beyond the travel (assumed)
 ASSEMBLY_USD = 600.0          # assumed: machining and assembly of housing and bearing block
-REQUIRED_LIFE_H = 200.0       # assumed: ground test, qualification and flights of a glide body
 STATIC_SAFETY_REQUIRED = screw_phys.STATIC_SAFETY_WITH_VIBRATION   # C0 / F_peak (THK, with vibration)
 SCREW_BACK_EFFICIENCY = 0.75  # reverse efficiency of a ball screw, the low end of HIWIN's 0.75-0.85
 

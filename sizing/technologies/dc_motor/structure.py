@@ -45,10 +45,10 @@ from ...physics import bearing as bearing_phys
 from ...physics import clevis as clevis_phys
 from ...physics import column
 from ...physics import structure as plate
+from ...settings import BEARING_STATIC_SAFETY
+from ...settings import REQUIRED_LIFE_H as BEARING_LIFE_H
+from ...settings import ULTIMATE_FACTOR
 
-# Ultimate factor of safety on the largest force: 1.5 (14 CFR 25.303, CS 25.303),
-# applied against yield here (conservative: no credit for ultimate strength).
-ULTIMATE_FACTOR = 1.5
 # Materials: AISI 4340 Q&T (rod, clevises, pins) and 6061-T6 (housing, end caps),
 # the values of catalogs/materials.toml (MatWeb / Aluminum Association, cited there).
 STEEL = {"E": 205e9, "yield": 834e6, "density": 7850.0}
@@ -67,8 +67,6 @@ ECCENTRICITY = 1.0e-3         # m: the load's offset from the axis (assumed: pin
 CAP_MIN_THICKNESS = 3.0e-3    # m: thinnest end plate (assumed)
 PIN_MIN_DIAMETER = 4.0e-3     # m: smallest clevis pin (assumed: an M4 rod-end thread class)
 LUG_MIN_THICKNESS = 2.0e-3    # m: thinnest lug (assumed)
-BEARING_LIFE_H = 200.0        # h: the same required life as the screw (parts.REQUIRED_LIFE_H)
-BEARING_STATIC_SAFETY = 2.0   # C0 / P0 (ISO 76 practice for vibration and shock; the screw's THK 2.0 likewise)
 JOURNAL_OVER_SHAFT = 1.05     # bearing bore at most 1.05 x the shaft's mass-equivalent diameter
 # Members sized by a closed form (end plate, clevis) are sized for the force
 # plus this relative part: rounding in the closed form otherwise leaves a

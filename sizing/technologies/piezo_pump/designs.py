@@ -29,10 +29,11 @@ from ..piezohydraulic.parts import reference_bouc_wen, stack_bouc_wen
 from ...engine.rank import OBJECTIVE_KEYS, floor_margin, nondominated_levels
 from ...engine.records import Simulation, frozen
 from .records import PumpDesign, PumpOutcome
+from ...settings import DIVERGED_FACTOR
+from ...settings import PUMP_CLOSEST_SIMULATED as MIN_CLOSEST_SIMULATED
+from ...settings import PUMP_FEASIBLE_SIMULATED as MAX_FEASIBLE_SIMULATED
+from ...settings import PUMP_SIMULATED as SIMULATED
 
-MAX_FEASIBLE_SIMULATED = 24    # designs that pass the screen, verified by simulation
-MIN_CLOSEST_SIMULATED = 8      # and at least this many of the closest of those that do not,
-SIMULATED = 32                 # up to this many in all
 # the simulated mean speed over the cycle-averaged one, less 1, lies in this
 # band on the simulated designs (tests/engine/test_pump_engine.py; docs/models.md):
 # the averaged model is conservative, for it omits the load and the line's
@@ -278,15 +279,11 @@ def _sim_cases(sims, k, loads, static_speeds, i) -> list[dict]:
     return cases
 
 
-# a simulated mean speed this many times what the pump sweeps (swept volume x
-# frequency / bore) is a numerical divergence, not physics: the load's
-# momentum can draw some oil through both valves, never several times the pump
-DIVERGED_FACTOR = 5.0
-
-
 def diverged(cases: list[dict], swept_speed: float) -> str:
     """Why the cycle simulation of a design cannot be trusted ("" if it can):
-    a non-finite figure, or a speed far beyond what the pump sweeps."""
+    a non-finite figure, or a speed more than ``DIVERGED_FACTOR`` times what
+    the pump sweeps (swept volume x frequency / bore: a numerical
+    divergence, not physics)."""
     for c in cases:
         figures = (c["stroke_m"], c["mean_speed_m_s"], c["delivered_volume_m3"], c["peak_cylinder_pressure_Pa"])
         if not all(math.isfinite(x) for x in figures):

@@ -53,6 +53,7 @@ import numpy as np
 
 from ...physics import geometry, structure
 from ...physics.stack import LARGE_SIGNAL_CAPACITANCE_FACTOR
+from ...settings import DEFAULT_MAX_MASS
 
 CONSTRAINTS = ("stroke", "blocked_force", "pressure", "drive_current", "natural_frequency", "stiffness",
                "structure_out_of_range", "envelope_length", "envelope_diameter", "envelope_mass")
@@ -61,9 +62,6 @@ RULED_OUT_BY = {"structure_out_of_range": "structure_out_of_range", "envelope_le
                 "envelope_diameter": "envelope", "envelope_mass": "envelope"}
 RELAXED_MISS = 1.25     # the closest bounded design of infeasible parts: 25 % more miss (log) than the infimum
 NO_LIMIT = 1e6          # stands in for an envelope dimension that is not given (m)
-# assumed: when the envelope gives no mass, no control-surface actuator is
-# allowed to weigh more than ten tonnes (the search's plausibility ceiling)
-DEFAULT_MAX_MASS = 1e4  # kg
 MIN_RATIO = 1.5
 FEASIBLE_SLACK = 1.0 + 1e-6
 SOLVER = "CLARABEL"

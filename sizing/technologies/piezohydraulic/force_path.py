@@ -27,13 +27,13 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...physics import geometry, plate_fe, structure
+from ...settings import STRESS_SAFETY
 
 MECHANICAL = ("stacks", "spacer", "base_plate", "frame", "wide_piston")
 HYDRAULIC = ("oil_column", "compensator", "end_cap", "narrow_piston")
 ALUMINIUM_E = 68.9e9          # Pa, 6061-T6 pistons (physics/geometry.py); catalogs/materials.toml al-6061-t6
 ALUMINIUM_NU = 0.33           # catalogs/materials.toml al-6061-t6
 STACK_SPACING_M = 1e-3        # assumed: clearance between neighbouring stacks under the wide piston
-STRESS_SAFETY = 2.0           # allowable stress = yield / 2 (geometry.py's rule)
 FRAME_MARGIN_M = 0.0          # frame spans stacks + wide piston + gap exactly
 
 

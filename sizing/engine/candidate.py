@@ -102,6 +102,6 @@ def as_candidate(c: Mapping) -> Candidate:
     return c if isinstance(c, Candidate) else Candidate.from_dict(c)
 
 
-def records(candidates) -> list[dict]:
-    """The results.json records of ``candidates`` (candidates or records)."""
-    return [c.to_dict() if isinstance(c, Candidate) else dict(c) for c in candidates]
+def records(candidates: list[Candidate]) -> list[dict]:
+    """The results.json records of ``candidates``."""
+    return [c.to_dict() for c in candidates]

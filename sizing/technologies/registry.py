@@ -136,6 +136,10 @@ class Technology:
     judge: Callable | None = None
     reached: str = ""                       # when a step counts as reached, if short of the whole stroke: "98 % of it"
     held: Callable = _by_own_id             # (its records of a solve) -> {design id: design} (``records.Stages``)
+    # its ``solve`` may run in a worker thread while the others run: its
+    # compiled kernels release the GIL and none is a parallel one (numba's
+    # workqueue threading layer takes parallel kernels from one thread at a time)
+    alongside: bool = False
 
     @property
     def actuator(self) -> str:

@@ -70,18 +70,18 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
 
 def _stages(req, catalog, loads, progress, detail) -> dict:
     """Each technology's ``solve`` stage, by name, in the registry's order:
-    those that may (``Technology.alongside``) run in worker threads while
-    the others run here, one after another (on two cores a serial
-    simulation kernel then overlaps the other stages' sizing). Each stage
-    reads only the inputs, so its answer does not depend on what runs
-    beside it."""
+    those that may (``Technology.alongside``) run one after another in a
+    worker thread while the others run here, one after another (on two
+    cores a serial simulation kernel then overlaps the other stages'
+    sizing). Each stage reads only the inputs, so its answer does not
+    depend on what runs beside it."""
     techs = technologies()
     aside = [t for t in techs if t.alongside] if len(techs) > 1 else []
     if not aside:
         return {t.name: t.solve(req, catalog, loads, progress, detail) for t in techs}
     if progress is not None:
         progress = _one_at_a_time(progress)
-    with ThreadPoolExecutor(max_workers=len(aside), thread_name_prefix="sizing-stage") as pool:
+    with ThreadPoolExecutor(max_workers=1, thread_name_prefix="sizing-stage") as pool:     # two cores: one beside
         running = {t.name: pool.submit(contextvars.copy_context().run, t.solve, req, catalog, loads, progress, detail)
                    for t in aside}        # the context: the limits (``limits.current``) hold in the threads
         here = {t.name: t.solve(req, catalog, loads, progress, detail) for t in techs if t.name not in running}

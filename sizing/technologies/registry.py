@@ -136,9 +136,9 @@ class Technology:
     judge: Callable | None = None
     reached: str = ""                       # when a step counts as reached, if short of the whole stroke: "98 % of it"
     held: Callable = _by_own_id             # (its records of a solve) -> {design id: design} (``records.Stages``)
-    # its ``solve`` may run in a worker thread while the others run: its
-    # compiled kernels release the GIL and none is a parallel one (numba's
-    # workqueue threading layer takes parallel kernels from one thread at a time)
+    # its ``solve`` may run in a worker thread while the others run: it reads
+    # only its inputs, its compiled kernels release the GIL and its parallel
+    # ones are launched under ``sim.PARALLEL_LAUNCH``
     alongside: bool = False
 
     @property

@@ -19,6 +19,7 @@ from .. import __version__
 from ..io.catalog import Catalog
 from ..io.requirements import RequirementsFile
 from ..technologies.registry import technologies
+from ..threads import core_to_spare
 from . import assumed, names, stage_cache
 from .candidate import Candidate, records
 from .comparison import technology_comparison
@@ -73,10 +74,11 @@ def _stages(req, catalog, loads, progress, detail) -> dict:
     those that may (``Technology.alongside``) run one after another in a
     worker thread while the others run here, one after another (on two
     cores a serial simulation kernel then overlaps the other stages'
-    sizing). Each stage reads only the inputs, so its answer does not
-    depend on what runs beside it."""
+    sizing), when the machine has a core to spare (``threads.core_to_spare``).
+    Each stage reads only the inputs, so its answer does not depend on what
+    runs beside it."""
     techs = technologies()
-    aside = [t for t in techs if t.alongside] if len(techs) > 1 else []
+    aside = [t for t in techs if t.alongside] if len(techs) > 1 and core_to_spare() else []
     if not aside:
         return {t.name: t.solve(req, catalog, loads, progress, detail) for t in techs}
     if progress is not None:

@@ -2,7 +2,8 @@
 technology marked ``Technology.alongside`` runs in a worker thread under the
 caller's limits, the others in the calling thread, and the outcomes come
 back by name in the registry's order whatever finishes first; an error in
-a worker's stage reaches the caller."""
+a worker's stage reaches the caller. With no core to spare every stage runs
+in the calling thread."""
 from __future__ import annotations
 
 import threading
@@ -26,6 +27,11 @@ def _technology(name: str, order: int, alongside: bool, seen: dict, delay: float
         return f"{name} outcome", (name,)
     return registry.Technology(name=name, label=name, order=order, part_kinds=(), solve=stage, groups=(),
                                short_name=lambda c: name, describe=lambda c, catalog: name, alongside=alongside)
+
+
+@pytest.fixture(autouse=True)
+def core_to_spare(monkeypatch):
+    monkeypatch.setattr(solve_module, "core_to_spare", lambda: True)
 
 
 @pytest.fixture
@@ -62,3 +68,16 @@ def test_a_worker_stages_error_reaches_the_caller(monkeypatch):
     with pytest.raises(ValueError, match="second failed"):
         solve_module._stages(None, None, [1.0], lambda *a: None, "summary")
     assert "first" in seen
+
+
+def test_with_no_core_to_spare_every_stage_runs_in_the_calling_thread(three, monkeypatch):
+    monkeypatch.setattr(solve_module, "core_to_spare", lambda: False)
+    out = solve_module._stages(None, None, [1.0], None, "summary")
+    assert list(out) == ["first", "second", "third"]
+    assert all(in_main for in_main, _ in three.values())
+
+
+def test_one_core_has_none_to_spare(monkeypatch):
+    from sizing import threads
+    monkeypatch.setattr(threads.os, "sched_getaffinity", lambda pid: {0}, raising=False)
+    assert threads.core_to_spare() is False

@@ -46,9 +46,11 @@ views and lists (2.3-2.4x, bit-identical); the solve in one process, warm,
 one stage after another 2.64-3.18 s CPU (2.42-2.96 s in the main thread),
 wall 4.15-4.70 s, the DC and pump stages beside the piezohydraulic one
 2.73-3.20 s CPU (1.60-1.94 s in the main thread), wall 4.33-4.69 s, the
-same results.json: the main thread's CPU, which a quiet machine's wall
-time follows, down by a third, and nothing gained while the other jobs
-hold both cores (hence ``threads.core_to_spare``).
+same results.json; at load 3.2 (one core left to this process) 2.72 s CPU
+(2.50 s in the main thread), wall 2.74 s, against 2.85 s CPU (1.64 s in
+the main thread), wall 2.89 s. The main thread's CPU, which a quiet
+machine's wall time follows, falls by a third; nothing is gained while
+the other jobs hold the second core (hence ``threads.core_to_spare``).
 """
 from __future__ import annotations
 

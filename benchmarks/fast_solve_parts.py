@@ -16,16 +16,41 @@ in the same run, with a check that both give the same answer to the bit:
   (old, the module's source without ``inline="always"``, compiled outside
   the timing) or inlined by numba, on the seed's and the low-duty
   solve's pump candidates;
+- the piezohydraulic designs' build (``technologies/piezohydraulic/designs.py``
+  ``_build``): each design's candidate row copied out of the batch
+  (``Candidates.take([i])``, old) or a one-row view (``Candidates.rows``),
+  and its force path read from the members' arrays (old) or from lists
+  made once (``force_path.listed``), on the seed's built designs;
+- the stages side by side (``engine/solve.py`` ``_stages``): the seed's
+  ``--fast`` solve in this process, warm, results written, with every
+  technology's stage run one after another (old) or those marked
+  ``Technology.alongside`` (the DC motor and the piezo pump) in a worker
+  thread beside the piezohydraulic stage (forced here: the solve does so
+  only when ``threads.core_to_spare``): CPU of the process, CPU of the
+  main thread (the wall time of a quiet two-core machine follows it) and
+  wall time, and results.json the same (its run time aside);
 - the whole command (``sizing solve studies/seed-requirements.toml --fast``,
   a fresh process each time, warm caches), with the collector's full pass
   every 10 gen-1 passes (Python's default, old) or every
   ``FULL_COLLECTION_EVERY`` (``api/output.py``), and its CPU by part.
 
-    python benchmarks/fast_solve_parts.py [--repeat 3]
+    python benchmarks/fast_solve_parts.py [--repeat 3] [--only piezo_build,stages_alongside]
 
 CPU is user + system time (``time.process_time``, ``getrusage`` for the
 child processes), best of ``--repeat``: the machine is shared, and CPU time
 is what the other jobs do not change much.
+
+Figures on this 2-core machine at a load average of 5-6 (four other jobs):
+the build's rows and force paths 0.071-0.075 s copies and arrays, 0.030-0.032 s
+views and lists (2.3-2.4x, bit-identical); the solve in one process, warm,
+one stage after another 2.64-3.18 s CPU (2.42-2.96 s in the main thread),
+wall 4.15-4.70 s, the DC and pump stages beside the piezohydraulic one
+2.73-3.20 s CPU (1.60-1.94 s in the main thread), wall 4.33-4.69 s, the
+same results.json; at load 3.2 (one core left to this process) 2.72 s CPU
+(2.50 s in the main thread), wall 2.74 s, against 2.85 s CPU (1.64 s in
+the main thread), wall 2.89 s. The main thread's CPU, which a quiet
+machine's wall time follows, falls by a third; nothing is gained while
+the other jobs hold the second core (hence ``threads.core_to_spare``).
 """
 from __future__ import annotations
 
@@ -38,7 +63,9 @@ import tempfile
 import time
 from pathlib import Path
 
-import numpy as np
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")      # as the command line runs
+
+import numpy as np  # noqa: E402
 
 REPO = Path(__file__).resolve().parents[1]
 SEED = REPO / "studies" / "seed-requirements.toml"
@@ -195,6 +222,84 @@ def pump_kernel(repeat: int) -> None:
           f"{t_new:.3f} s inlined ({t_old / t_new:.2f}x), bit-identical: {same}")
 
 
+def piezo_build(repeat: int) -> None:
+    """The seed's built piezohydraulic designs split into one-row candidates
+    and their force paths listed, both ways."""
+    from sizing.technologies.piezohydraulic import designs, force_path
+    from sizing.technologies.piezohydraulic.parts import Candidates
+    from sizing.technologies.piezohydraulic.records import PiezoBrief
+    from sizing.technologies.piezohydraulic.search import enumerate_combos
+    req, cat, _ = seed_inputs()
+    brief = PiezoBrief.of(req)
+    built = [d for d in designs.designs(brief, cat, designs.size(
+        brief, cat, [c for c in enumerate_combos(req, cat) if not c.pruned])) if d.built]
+    c = Candidates(**{name: np.concatenate([getattr(d.cand, name) for d in built])
+                      for name in Candidates.__dataclass_fields__})
+    members = force_path.members(c)
+
+    def old():
+        return ([c.take([i]) for i in range(len(c))],
+                [force_path.as_list(members, i, "m", None) for i in range(len(c))])
+
+    def new():
+        listed = force_path.listed(members)
+        return c.rows(), [force_path.as_list(listed, i, "m", None) for i in range(len(c))]
+    t_old, (rows_old, paths_old) = best(old, repeat)
+    t_new, (rows_new, paths_new) = best(new, repeat)
+    same = paths_old == paths_new and all(
+        getattr(a, k).tobytes() == getattr(b, k).tobytes() for a, b in zip(rows_old, rows_new)
+        for k in Candidates.__dataclass_fields__)
+    print(f"piezohydraulic build, {len(c)} designs' rows and force paths: {t_old:.3f} s copies and arrays, "
+          f"{t_new:.3f} s views and lists ({t_old / t_new:.1f}x), bit-identical: {same}")
+
+
+def stages_alongside(repeat: int) -> None:
+    """The --fast solve in this process with the stages one after another,
+    then with those that may run beside the piezohydraulic stage."""
+    import dataclasses
+    import json
+    import shutil
+
+    from sizing.api import solve
+    from sizing.engine import solve as engine_solve
+    from sizing.technologies import registry
+    from sizing.threads import core_to_spare
+    out = Path(tempfile.mkdtemp(prefix="fast-solve-stages-"))
+    techs = {t.name: t for t in registry.technologies()}
+    spare_now = core_to_spare()
+    engine_solve.core_to_spare = lambda: True       # side by side whatever the load: the mechanism's figures
+
+    def run(alongside: bool, k: int) -> tuple[float, float, float, dict]:
+        for name, t in techs.items():
+            registry.register(dataclasses.replace(t, alongside=t.alongside and alongside))
+        folder = out / f"{alongside}-{k}"
+        t0, c0, m0 = time.perf_counter(), time.process_time(), time.thread_time()
+        solve(SEED, folder, fast=True)
+        figures = time.perf_counter() - t0, time.process_time() - c0, time.thread_time() - m0
+        results = json.loads((folder / "results.json").read_text())
+        results.pop("runtime_s")
+        shutil.rmtree(folder)
+        return (*figures, results)
+    try:
+        run(True, -1)                                   # numba's caches, plotly's validators
+        runs = {False: [], True: []}
+        for k in range(repeat):
+            for alongside in (False, True):
+                runs[alongside].append(run(alongside, k))
+    finally:
+        for t in techs.values():
+            registry.register(t)
+        engine_solve.core_to_spare = core_to_spare
+    (w_old, c_old, m_old), (w_new, c_new, m_new) = ([min(r[i] for r in runs[a]) for i in range(3)]
+                                                    for a in (False, True))
+    same = runs[False][0][3] == runs[True][0][3]
+    print(f"sizing solve seed --fast in this process, warm: one stage after another {c_old:.2f} s CPU "
+          f"({m_old:.2f} s of it in the main thread), wall {w_old:.2f} s; DC and pump beside the "
+          f"piezohydraulic stage {c_new:.2f} s CPU ({m_new:.2f} s in the main thread), wall {w_new:.2f} s; "
+          f"same results.json: {same}; load average {os.getloadavg()[0]:.1f} "
+          f"(a core to spare now: {spare_now}; the solve puts its stages side by side only then)")
+
+
 SOLVE = """
 import sys
 from sizing.api import output
@@ -230,12 +335,13 @@ def whole_solve(repeat: int) -> None:
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--only", default="", help="comma-separated parts to run (default: all)")
     args = ap.parse_args()
-    reason_counts(args.repeat)
-    structure(args.repeat)
-    reference_lookup(args.repeat)
-    pump_kernel(args.repeat)
-    whole_solve(args.repeat)
+    parts = (reason_counts, structure, reference_lookup, pump_kernel, piezo_build, stages_alongside, whole_solve)
+    only = set(filter(None, args.only.split(",")))
+    for part in parts:
+        if not only or part.__name__ in only:
+            part(args.repeat)
 
 
 if __name__ == "__main__":

@@ -48,3 +48,26 @@ def one_blas_thread(func):
         with threadpool_limits(limits=1, user_api="blas"):
             return func(*args, **kwargs)
     return limited
+
+
+def core_to_spare() -> bool:
+    """Whether a second thread of this process would find a core of its own
+    now: the tasks running or ready to run besides this one (Linux:
+    /proc/loadavg's count; elsewhere the last minute's load average) leave
+    a core this process may use free. On a busy machine a worker thread
+    only contends for the same cores: the seed's --fast solve with its
+    stages side by side took 6 % more CPU and 5-10 % more wall time than one
+    stage after another at a load average of 6 on two cores
+    (benchmarks/fast_solve_parts.py)."""
+    cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
+    if cores < 2:
+        return False
+    try:
+        with open("/proc/loadavg") as handle:
+            others = int(handle.read().split()[3].partition("/")[0]) - 1
+    except (OSError, ValueError, IndexError):
+        try:
+            others = os.getloadavg()[0]
+        except (AttributeError, OSError):
+            return True
+    return others <= cores - 2

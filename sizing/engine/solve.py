@@ -7,8 +7,11 @@ list, named, summarised and compared.
 """
 from __future__ import annotations
 
+import contextvars
+import threading
 import time
 from collections import Counter
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from types import SimpleNamespace
 
@@ -17,6 +20,7 @@ from ..settings import FAR_MISS
 from ..io.catalog import Catalog
 from ..io.requirements import RequirementsFile
 from ..technologies.registry import technologies
+from ..threads import core_to_spare
 from . import assumed, names, stage_cache
 from .candidate import Candidate, records
 from .comparison import technology_comparison
@@ -45,7 +49,7 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
     start = time.perf_counter()
     cases = load_cases(req.load)
     loads = [c["load_N"] for c in cases]
-    solved = {t.name: t.solve(req, catalog, loads, progress, detail) for t in technologies()}
+    solved = _stages(req, catalog, loads, progress, detail)
     outcomes = tuple(outcome for outcome, _ in solved.values())
     unranked = [Candidate.from_dict(c) for o in outcomes for c in o.candidates]
     ranking = standings([c.margins for c in unranked], [c.metrics for c in unranked],
@@ -64,6 +68,38 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
     results["summary"]["counts"] = summary_counts(results)
     results["runtime_s"] = time.perf_counter() - start
     return SolveOutput(results=_json_safe(results), traces=traces, stages=stages)
+
+
+def _stages(req, catalog, loads, progress, detail) -> dict:
+    """Each technology's ``solve`` stage, by name, in the registry's order:
+    those that may (``Technology.alongside``) run one after another in a
+    worker thread while the others run here, one after another (on two
+    cores a serial simulation kernel then overlaps the other stages'
+    sizing), when the machine has a core to spare (``threads.core_to_spare``).
+    Each stage reads only the inputs, so its answer does not depend on what
+    runs beside it."""
+    techs = technologies()
+    aside = [t for t in techs if t.alongside] if len(techs) > 1 and core_to_spare() else []
+    if not aside:
+        return {t.name: t.solve(req, catalog, loads, progress, detail) for t in techs}
+    if progress is not None:
+        progress = _one_at_a_time(progress)
+    with ThreadPoolExecutor(max_workers=1, thread_name_prefix="sizing-stage") as pool:     # two cores: one beside
+        running = {t.name: pool.submit(contextvars.copy_context().run, t.solve, req, catalog, loads, progress, detail)
+                   for t in aside}        # the context: the limits (``limits.current``) hold in the threads
+        here = {t.name: t.solve(req, catalog, loads, progress, detail) for t in techs if t.name not in running}
+        done = {name: future.result() for name, future in running.items()}
+    return {t.name: here[t.name] if t.name in here else done[t.name] for t in techs}
+
+
+def _one_at_a_time(progress):
+    """``progress`` called by one thread at a time."""
+    lock = threading.Lock()
+
+    def report(stage, done, total):
+        with lock:
+            progress(stage, done, total)
+    return report
 
 
 def _json_safe(results: dict) -> dict:

@@ -49,6 +49,7 @@ import numba
 import numpy as np
 
 from ..errors import SimulationError
+from . import PARALLEL_LAUNCH
 from .params import ParameterSet
 
 PARAMS = (
@@ -330,7 +331,7 @@ def _simulate_one(p, t_ref, r_row, t_out, rec, heat):
     return rec
 
 
-@numba.njit(cache=True, parallel=True)
+@numba.njit(cache=True, parallel=True, nogil=True)   # nogil: stages run in threads (sim/__init__.py)
 def _simulate(P, t_ref, R, t_out, r_stride, heat):
     n_cand = P.shape[0]
     out = np.empty((n_cand, 4 if heat else 3, t_out.shape[0]))
@@ -351,7 +352,8 @@ def simulate(model: DCMotorModel, t_ref, reference, t_out=None, heat=False) -> d
     t_ref = np.ascontiguousarray(t_ref, dtype=float)
     R = np.ascontiguousarray(np.atleast_2d(np.asarray(reference, dtype=float)))
     t_out = t_ref if t_out is None else np.ascontiguousarray(t_out, dtype=float)
-    out = _simulate(P, t_ref, R, t_out, np.int64(R.shape[0] > 1), bool(heat))
+    with PARALLEL_LAUNCH:         # one parallel kernel at a time (sim/__init__.py)
+        out = _simulate(P, t_ref, R, t_out, np.int64(R.shape[0] > 1), bool(heat))
     bad = ~np.all(np.isfinite(out), axis=(1, 2))
     if bad.any():
         raise SimulationError(f"simulation diverged for candidates {np.flatnonzero(bad).tolist()}")

@@ -32,6 +32,7 @@ import numba
 import numpy as np
 
 from ..errors import SimulationError
+from . import PARALLEL_LAUNCH
 from .params import StackParameters
 from ..physics.bouc_wen import hysteresis_step
 
@@ -278,7 +279,7 @@ def _lugre_step(F, u, z, F_c, F_s, inv_vs, z_pre, m, dt):
     return u_new, z
 
 
-@numba.njit(cache=True, parallel=True, error_model="numpy")
+@numba.njit(cache=True, parallel=True, error_model="numpy", nogil=True)   # nogil: stages run in threads (sim/__init__.py)
 def _simulate(P, dts, t_in, V_in, t_out, v_stride):
     n_cand = P.shape[0]
     n_out = t_out.shape[0]
@@ -429,7 +430,8 @@ def simulate(model: PiezoHydraulicModel, t_in, v_in, t_out=None,
     if V.shape[0] not in (1, P.shape[0]):
         raise ValueError("v_in must be shared or one row per candidate")
     t_out = t_in if t_out is None else np.ascontiguousarray(t_out, dtype=float)
-    out = _simulate(P, stable_step(P, step_factor), t_in, V, t_out, np.int64(V.shape[0] > 1))
+    with PARALLEL_LAUNCH:         # one parallel kernel at a time (sim/__init__.py)
+        out = _simulate(P, stable_step(P, step_factor), t_in, V, t_out, np.int64(V.shape[0] > 1))
     bad = ~np.all(np.isfinite(out), axis=(1, 2))
     if bad.any():
         raise SimulationError(f"simulation diverged for candidates {np.flatnonzero(bad).tolist()}")

@@ -258,7 +258,8 @@ def _high_side(a, ph, u, dt, Ac, m, c, G, pb, F, Ff, s, stuck):
     return alpha, dt / D, e, B
 
 
-@numba.njit(cache=True, error_model="numpy")
+# nogil: the solve runs this stage beside the others (``Technology.alongside``)
+@numba.njit(cache=True, error_model="numpy", nogil=True)
 def _run(P, out):
     for c in range(P.shape[0]):
         row = P[c]

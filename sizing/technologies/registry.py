@@ -140,6 +140,10 @@ class Technology:
     judge: Callable | None = None
     reached: str = ""                       # when a step counts as reached, if short of the whole stroke: "98 % of it"
     held: Callable = _by_own_id             # (its records of a solve) -> {design id: design} (``records.Stages``)
+    # its ``solve`` may run in a worker thread while the others run: it reads
+    # only its inputs, its compiled kernels release the GIL and its parallel
+    # ones are launched under ``sim.PARALLEL_LAUNCH``
+    alongside: bool = False
 
     @property
     def actuator(self) -> str:

@@ -45,7 +45,7 @@ def study_design(req, catalog, c: Candidate, stages):
 TECHNOLOGY = Technology(
     name="dc_motor", label="DC motor", order=1,
     part_kinds=("dc_actuator", "motor", "screw", "gear", "drive"),
-    solve=stage.solve,
+    solve=stage.solve, alongside=True,      # beside the others: its parallel kernels take PARALLEL_LAUNCH (sim/)
     groups=(Group("catalog", "DC motor lead-screw actuators (catalog)", empty="none in the catalog"),
             Group("parts", "DC motor actuators sized from parts (motor x screw x gear x drive)",
                   empty="none in the catalog", caveat=supply_caveat)),

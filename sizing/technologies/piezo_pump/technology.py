@@ -37,7 +37,7 @@ def study_design(req, catalog, c: Candidate, stages):
 TECHNOLOGY = Technology(
     name="piezo_pump", label="piezo pump", order=2,
     part_kinds=("stack", "amplifier", "fluid", "seal", "valve", "accumulator"),
-    solve=stage.solve,
+    solve=stage.solve, alongside=True,      # beside the others: its serial kernel (sim/pump.py) releases the GIL
     groups=(Group("pump", "piezo pump: stacks pumping through reed check valves into a cylinder"),),
     short_name=words.short_name, describe=words.describe,
     rests_on=("sizing.physics.pump", "sizing.physics.stack", "sizing.sim.pump"),

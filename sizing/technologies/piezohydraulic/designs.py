@@ -133,8 +133,14 @@ def designs(b: PiezoBrief, catalog, sized) -> list[PiezoDesign]:
     triple's index (a passive design's, its parent's)."""
     reference = reference_bouc_wen(catalog.stacks)
     spacer = force_path.spacer_material(catalog.materials)
+    transferred: dict[int, tuple] = {}      # one transfer per stack object (frozen), not per design
+
+    def bouc_wen_of(stack):
+        if id(stack) not in transferred:
+            transferred[id(stack)] = stack_bouc_wen(stack, reference)
+        return transferred[id(stack)]
     pending = [PiezoDesign(origin=i, id=combo.key + var.suffix(), combo=combo, variant=var, gp=res,
-                           bouc_wen=(stack_bouc_wen(combo.stack, reference)
+                           bouc_wen=(bouc_wen_of(combo.stack)
                                      if math.isfinite(res.ratio) and math.isfinite(res.wide_area) else None))
                for i, (combo, var, res) in enumerate(sized)]
     buildable = [d for d in pending if d.bouc_wen is not None]
@@ -243,23 +249,30 @@ def _build(b: PiezoBrief, pending: list[PiezoDesign], spacer) -> list[PiezoDesig
     members = force_path.members(c)
     p_load = b.max_load / c.narrow_area
     seal_f = seal_friction_at(c, p_load)
-    out = []
+    # each design's figures read from lists, built once: thousands of designs
+    static, met, members = _columns(static), _columns(met), force_path.listed(members)
+    out, singles = [], c.rows()
     for i, d in enumerate(pending):
         comp = d.variant.compensator
         friction = {"wide": float(seal_f["wide"][i]), "narrow": float(seal_f["narrow"][i]),
                     "at_pressure_Pa": float(p_load[i])}
-        figures = {k: float(np.asarray(v)[i]) for k, v in static.items()}
+        figures = {k: v[i] for k, v in static.items()}
         figures.update(_derived_figures(b, d, figures, float(ramp[i]), friction))
         figures.update(amplifier_units_needed=float(drive["needed"][i]), amplifier_units_max=b.max_amplifier_units,
                        amplifier_units_at_cap=float(drive["needed"][i] >= b.max_amplifier_units))
-        mets = {k: float(np.asarray(v)[i]) for k, v in met.items()}
+        mets = {k: v[i] for k, v in met.items()}
         out.append(replace(
-            d, cand=c.take([i]), ramp=float(ramp[i]), amplifier_units=float(c.amp_units[i]), static=frozen(figures), metrics=frozen(mets),
+            d, cand=singles[i], ramp=float(ramp[i]), amplifier_units=float(c.amp_units[i]), static=frozen(figures), metrics=frozen(mets),
             force_path=tuple(force_path.as_list(members, i, d.variant.material.id, comp.id if comp else None,
                                                 spacer.id if d.spacer > 0 else None)),
             seal_friction=frozen(friction), static_margins=frozen(_static_margins(b, d, figures)),
             ruled_out=ruled_out(b, figures, mets)))
     return out
+
+
+def _columns(figures: dict) -> dict[str, list[float]]:
+    """Each figure's array as a list of floats, one per candidate."""
+    return {k: np.asarray(v, dtype=float).tolist() for k, v in figures.items()}
 
 
 def sized_drive(b: PiezoBrief, c: Candidates) -> dict:

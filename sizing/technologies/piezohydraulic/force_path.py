@@ -170,38 +170,49 @@ def simulator_bulk_modulus(c, m: dict) -> np.ndarray:
     return k_h * c.oil_volume / c.wide_area**2
 
 
+def listed(m: dict) -> dict[str, dict[str, list]]:
+    """``members(c)`` with every array a list of floats: ``as_list`` reads
+    each candidate's figures from it without a numpy lookup apiece."""
+    return {name: {k: np.asarray(v, dtype=float).tolist() for k, v in member.items()} for name, member in m.items()}
+
+
+def _at(values, i: int) -> float:
+    return float(values[i]) if isinstance(values, list) else float(np.asarray(values)[i])
+
+
 def as_list(m: dict, i: int, material_id: str, compensator_id: str | None,
             spacer_id: str | None = None) -> list[dict]:
-    """The contract's ``force_path`` list for candidate i (absent members left out)."""
+    """The contract's ``force_path`` list for candidate i (absent members
+    left out); ``m``: ``members(c)`` or ``listed(members(c))``."""
     out = []
     for name in MECHANICAL + HYDRAULIC:
-        k = float(np.asarray(m[name]["stiffness"])[i])
+        k = _at(m[name]["stiffness"], i)
         if name == "spacer" and not math.isfinite(k):
             continue
         if name == "compensator" and compensator_id is None:
             continue
         row = {"member": name, "stiffness_N_m": k if math.isfinite(k) else None,
-               "mass_kg": float(np.asarray(m[name]["mass"])[i]), "cost_usd": float(np.asarray(m[name]["cost"])[i])}
+               "mass_kg": _at(m[name]["mass"], i), "cost_usd": _at(m[name]["cost"], i)}
         if name in ("base_plate", "end_cap", "frame"):
             row["material"] = material_id
         if name == "spacer":
             row["material"] = spacer_id
         if name in ("base_plate", "end_cap"):
-            row["stiffness_clamped_N_m"] = float(np.asarray(m[name]["stiffness_clamped"])[i])
-            row["thickness_m"] = float(np.asarray(m[name]["thickness"])[i])
-            beta = float(np.asarray(m[name]["edge"])[i])
+            row["stiffness_clamped_N_m"] = _at(m[name]["stiffness_clamped"], i)
+            row["thickness_m"] = _at(m[name]["thickness"], i)
+            beta = _at(m[name]["edge"], i)
             row["edge"] = structure.edge_name(beta)
             if row["edge"] == "flange":
                 row["edge_restraint"] = beta
-            ratio = float(np.asarray(m[name]["fe_ratio"])[i])
+            ratio = _at(m[name]["fe_ratio"], i)
             if math.isfinite(ratio):
                 row["fe_stiffness_ratio"] = ratio
             row["model"] = structure.PLATE_MODEL
-            row["thickness_to_radius"] = float(structure.thickness_ratio(row["thickness_m"], m[name]["radius"][i]))
+            row["thickness_to_radius"] = float(structure.thickness_ratio(row["thickness_m"], _at(m[name]["radius"], i)))
             row["model_valid_to_thickness_to_radius"] = structure.MINDLIN_MAX_THICKNESS_RATIO
         if name == "frame":
-            row["length_m"] = float(np.asarray(m[name]["length"])[i])
-            row["area_m2"] = float(np.asarray(m[name]["area"])[i])
+            row["length_m"] = _at(m[name]["length"], i)
+            row["area_m2"] = _at(m[name]["area"], i)
         if name == "compensator":
             row["id"] = compensator_id
         out.append(row)

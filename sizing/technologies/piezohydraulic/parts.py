@@ -109,6 +109,12 @@ class Candidates:
     def take(self, index) -> "Candidates":
         return Candidates(**{f.name: getattr(self, f.name)[index] for f in fields(self)})
 
+    def rows(self) -> list["Candidates"]:
+        """Each candidate on its own, as ``take([i])`` gives it but as one-row
+        views of these arrays (no copy: a solve splits thousands)."""
+        columns = [(f.name, getattr(self, f.name)) for f in fields(self)]
+        return [Candidates(**{name: col[i:i + 1] for name, col in columns}) for i in range(len(self))]
+
     # Derived geometry -----------------------------------------------------
     @property
     def narrow_area(self):

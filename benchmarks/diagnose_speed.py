@@ -9,10 +9,16 @@ median per campaign and the whole check. With ``--reference REV`` the same
 cases are run first by revision REV of this repository (exported with
 ``git archive`` into a temporary folder, run in a subprocess), and the
 verdicts of the two runs are compared case by case: a speed-up must not
-change a verdict.
+change a verdict. With one process (``--workers 1``, the default) each
+case's whole diagnosis.json is compared (a digest of it, the seconds
+aside). ``--folders DIR ...`` times ``sizing diagnose`` on campaign folders
+instead (one diagnosis each, in this process; the holdout run named by the
+folder's set's answers file, ``SET-answers/NAME.json``, else its last run),
+for example a sample of the independent generator's campaigns.
 
     python benchmarks/diagnose_speed.py [--campaign DIR] [--cases 0,5,30] [--workers N]
                                         [--reference REV] [--json FILE]
+    python benchmarks/diagnose_speed.py --folders DIR [DIR ...] [--reference REV] [--json FILE]
 
 Figures recorded before the simulators' idle threads were made to sleep
 (sizing/sim/__init__.py): the piezo campaign's --check took 442 s on a
@@ -25,8 +31,23 @@ case's diagnosis.json identical (the seconds aside). Three cases of the
 DC campaign's check (0, 5, 10) against 14828dd in the same run: CPU 9.7 s
 -> 2.7 s (median a campaign 3.0 s -> 0.9 s), verdicts unchanged. ``--workers 2``
 (one process a core) was checked for identical verdicts
-(tests/diagnose/test_check.py) but its wall time not yet measured on a
-quiet machine.
+(tests/diagnose/test_check.py).
+
+Time per campaign against 3b487e5 (the voltage treatment's knots moved
+between samples, the Karnopp seal screened at 8 x its points), each pair
+in the same run on the shared 2-core machine; every diagnosis.json
+identical. The piezo campaign's --check with ``--workers 2`` (load
+5.4-5.7): CPU 148.7 s -> 114.8 s (x 0.77), wall 210.7 s -> 144.5 s; one
+process, all 31 cases: median a campaign 3.8 s of CPU (4.3 s before).
+The DC campaign's --check with ``--workers 2`` (load 3.2-3.7): CPU 17.8 s
+-> 15.6 s, wall 26.6 s -> 21.5 s; one process: median 0.5 s a campaign.
+A sample of the independent generator's campaigns (``--folders``, 4 runs
+each; load 3-5): piezo-a c01, c05, c09 (2 kHz runs) median 33.0 s -> 27.6 s
+of CPU, piezo-c q01, q02, q05 27.4 s -> 23.6 s, dc-c f01, f04, f07 1.3 s
+-> 1.1 s; all nine 25.8 s -> 21.3 s. The piezo campaigns there integrate
+about 6 x the check's steps a candidate (three training runs against
+one), 93 % of their time in the simulator's kernel: they stay above 10 s
+a campaign.
 """
 from __future__ import annotations
 
@@ -67,8 +88,30 @@ def _skip_cases(check, keep: set) -> None:
     check.diagnose_runs = only_kept
 
 
+def digest(found) -> str:
+    """A digest of a diagnosis's diagnosis.json without its ``seconds``."""
+    import hashlib
+
+    doc = found.to_json()
+    doc.pop("seconds", None)
+    return hashlib.sha256(json.dumps(doc, sort_keys=True, default=float).encode()).hexdigest()
+
+
+def _record_digests(check, digests: list) -> None:
+    """Each diagnosis the check makes in this process leaves its digest in ``digests``."""
+    diagnose = check.diagnose_runs
+
+    def recorded(*args, **kwargs):
+        found = diagnose(*args, **kwargs)
+        digests.append(digest(found))
+        return found
+
+    check.diagnose_runs = recorded
+
+
 def measure(campaign: str, cases: list[int] | None, workers: int) -> dict:
-    """Run the check's cases with the ``sizing`` importable here; {case: verdict, CPU, wall}."""
+    """Run the check's cases with the ``sizing`` importable here; {case: verdict, CPU, wall}
+    (and, in one process, the digest of each case's diagnosis.json)."""
     from sizing.threads import single_threaded_blas
 
     single_threaded_blas()
@@ -100,23 +143,60 @@ def measure(campaign: str, cases: list[int] | None, workers: int) -> dict:
         _skip_cases(check, set(cases))
     if "workers" in accepted:
         options["workers"] = workers
+    digests = []
+    if workers <= 1:
+        _record_digests(check, digests)
     start = [_cpu(), time.perf_counter()]
     result = check.check_runs(loaded.kind, loaded.rig, check.clean_inputs(bench), holdout, noise, seed=0,
                               progress=progress, **options)
     cpu, wall = _cpu() - start[0], time.perf_counter() - start[1]
     if "only" not in options and cases is not None:  # a revision without ``only``: the others were skipped
         rows = [rows[j] for j in cases]
+    for row, code in zip(rows, digests):
+        row["digest"] = code
     return {"cases": rows, "cpu_s": cpu, "wall_s": wall, "n_cases": len(result.cases)}
 
 
-def measure_revision(rev: str, campaign: str, cases, workers: int) -> dict:
-    """``measure`` run by revision ``rev`` in a subprocess."""
+def holdout_of(folder: Path) -> str:
+    """The holdout run of a campaign folder: the one its set's answers name
+    (``SET-answers/NAME.json``, the independent generator's layout), else
+    its last run."""
+    answers = folder.parent.parent / f"{folder.parent.name}-answers" / f"{folder.name}.json"
+    if answers.exists():
+        return json.loads(answers.read_text())["holdout"]
+    return sorted(p.stem for p in (folder / "runs").glob("*.csv"))[-1]
+
+
+def measure_folders(folders: list[str]) -> dict:
+    """``sizing diagnose FOLDER --holdout RUN`` in this process (nothing
+    written) on each folder: CPU, wall and the digest of its diagnosis.json."""
+    from sizing.threads import single_threaded_blas
+
+    single_threaded_blas()
+    from sizing.api.diagnosis import run_diagnose
+
+    run_diagnose(ROOT / "studies/campaigns/dc-motor", ["steps"])      # loads and compiles, not timed
+    rows = []
+    for folder in map(Path, folders):
+        start = [time.process_time(), time.perf_counter()]
+        found = run_diagnose(folder, [holdout_of(folder)]).diagnosis
+        rows.append({"truth": folder.name, "size": 0, "predicted": found.verdict["effect"] or "none",
+                     "shrink": float(found.verdict["shrink_holdout"]), "digest": digest(found),
+                     "cpu_s": time.process_time() - start[0], "wall_s": time.perf_counter() - start[1]})
+    return {"cases": rows, "cpu_s": sum(r["cpu_s"] for r in rows), "wall_s": sum(r["wall_s"] for r in rows),
+            "n_cases": len(rows)}
+
+
+def measure_revision(rev: str, campaign: str, cases, workers: int, folders=None) -> dict:
+    """``measure`` (``measure_folders`` with ``folders``) run by revision ``rev`` in a subprocess."""
     with tempfile.TemporaryDirectory() as tree:
         archive = subprocess.run(["git", "-C", str(ROOT), "archive", rev], check=True, capture_output=True).stdout
         subprocess.run(["tar", "-x", "-C", tree], input=archive, check=True)
         out = Path(tree) / "measured.json"
         args = [sys.executable, __file__, "--campaign", str(Path(campaign).resolve()), "--worker", str(out),
                 "--tree", tree, "--workers", str(workers)] + (["--cases", ",".join(map(str, cases))] if cases else [])
+        if folders:
+            args += ["--folders"] + [str(Path(f).resolve()) for f in folders]
         subprocess.run(args, check=True, cwd=tree, env=dict(os.environ, PYTHONPATH=tree))
         return json.loads(out.read_text())
 
@@ -124,9 +204,10 @@ def measure_revision(rev: str, campaign: str, cases, workers: int) -> dict:
 def summary(label: str, m: dict) -> str:
     import statistics
 
-    cpu = [r["cpu_s"] for r in m["cases"]]
+    cpu = [r["cpu_s"] for r in m["cases"] if r["cpu_s"] == r["cpu_s"]]     # a case in a worker: not measured
     wall = [r["wall_s"] for r in m["cases"]]
-    return (f"{label:<10} {len(cpu):3d} cases: CPU {m['cpu_s']:7.1f} s (median a campaign {statistics.median(cpu):5.2f} s), "
+    median_cpu = f"{statistics.median(cpu):5.2f} s" if cpu else "-"
+    return (f"{label:<10} {len(wall):3d} cases: CPU {m['cpu_s']:7.1f} s (median a campaign {median_cpu}), "
             f"wall {m['wall_s']:7.1f} s (median a campaign {statistics.median(wall):5.2f} s)")
 
 
@@ -136,17 +217,23 @@ def main(argv=None) -> int:
     parser.add_argument("--cases", default="", help="comma-separated case numbers of the check (default: all)")
     parser.add_argument("--workers", type=int, default=1, help="processes for the check's cases")
     parser.add_argument("--reference", metavar="REV", help="a git revision to time on the same cases first")
+    parser.add_argument("--folders", nargs="+", metavar="DIR",
+                        help="instead of the check: diagnose each of these campaign folders once (holdout: "
+                             "the one its set's answers name, else its last run)")
     parser.add_argument("--json", type=Path, help="write both measurements here")
     parser.add_argument("--worker", type=Path, help=argparse.SUPPRESS)      # measure and write JSON here
     parser.add_argument("--tree", help=argparse.SUPPRESS)                   # the source tree to import
     args = parser.parse_args(argv)
     sys.path.insert(0, args.tree or str(ROOT))
     cases = [int(c) for c in args.cases.split(",")] if args.cases else None
+    run = (lambda: measure_folders(args.folders)) if args.folders else \
+        (lambda: measure(args.campaign, cases, args.workers))
     if args.worker:
-        args.worker.write_text(json.dumps(measure(args.campaign, cases, args.workers), default=float))
+        args.worker.write_text(json.dumps(run(), default=float))
         return 0
-    reference = measure_revision(args.reference, args.campaign, cases, args.workers) if args.reference else None
-    current = measure(args.campaign, cases, args.workers)
+    reference = measure_revision(args.reference, args.campaign, cases, args.workers, args.folders) \
+        if args.reference else None
+    current = run()
     if reference:
         print(summary(args.reference, reference))
     print(summary("this tree", current))
@@ -154,14 +241,15 @@ def main(argv=None) -> int:
     if reference:
         for old, new in zip(reference["cases"], current["cases"]):
             if (old["truth"], old["size"], old["predicted"]) != (new["truth"], new["size"], new["predicted"]) \
-                    or abs(old["shrink"] - new["shrink"]) > 1e-9:
+                    or abs(old["shrink"] - new["shrink"]) > 1e-9 or old.get("digest") != new.get("digest"):
                 changed.append((old, new))
-        print(f"verdicts changed: {len(changed)} of {len(current['cases'])}")
+        compared = "diagnosis.json" if all("digest" in r for r in current["cases"]) else "verdicts"
+        print(f"{compared} changed: {len(changed)} of {len(current['cases'])}")
         for old, new in changed:
             print(f"  {old['truth']} size {old['size']}: {old['predicted']} ({old['shrink']:.4f}) -> "
                   f"{new['predicted']} ({new['shrink']:.4f})")
         print(f"CPU ratio (this tree / {args.reference}): {current['cpu_s'] / reference['cpu_s']:.2f}")
-    if "piezo" in Path(args.campaign).name and not cases:
+    if "piezo" in Path(args.campaign).name and not cases and not args.folders:
         print(f"--check wall {current['wall_s']:.0f} s against {OLD_CHECK_S:.0f} s recorded before (busy machine)")
     if args.json:
         args.json.write_text(json.dumps({"reference": reference, "current": current}, indent=2, default=float))

@@ -6,7 +6,7 @@ residual of a run is (measured - simulated) / (span sqrt(n)), so the cost
 is the sum over runs of NRMSE^2 (docs/formats.md; the combined measure of bench.py when
 the runs log the current too). The Jacobian is a forward
 difference computed as one batch of the simulator (all perturbed parameter
-sets at once), step ``fd_step`` in unit coordinates or the effect's
+sets at once, only at the points whose Jacobian the solver asks for), step ``fd_step`` in unit coordinates or the effect's
 ``extra["fd_step"]`` (an additive sinusoid's frequency, which the cost is
 sharp in). Confidence intervals: 95 % from s^2 (J'J)^-1 at the
 optimum, mapped to physical units by the delta method; the residuals of a
@@ -84,21 +84,29 @@ def fit(bench, effects, z0, runs, max_nfev: int = 25) -> EffectFit:
         Y = bench.simulate_channels(effects, np.zeros((1, 0)), runs)
         score = float(np.sqrt(np.mean(run_nrmse(bench, Y, runs) ** 2)))
         return EffectFit(effects, z0, score, message="no parameter")
-    cache = {}
+    values, slopes = {}, {}
     step = np.concatenate([np.full(len(e.params), float(e.extra.get("fd_step", DEFAULT.fd_step))) for e in effects])
 
-    def batch(z):
-        steps = np.where(z + step <= 1.0, step, -step)
-        Z = np.vstack([z, z + np.diag(steps)])
-        R = bench.residuals(bench.simulate_channels(effects, Z, runs), runs)
-        cache[z.tobytes()] = (R[0], (R[1:] - R[0]).T / steps[None, :])
-        return cache[z.tobytes()]
+    def residuals(Z):
+        return bench.residuals(bench.simulate_channels(effects, Z, runs), runs)
 
+    # the residual at a point, and the perturbed points of its Jacobian only
+    # when the solver asks for it: a trial step it rejects needs no
+    # Jacobian (two in five trial points of the check's fits; each
+    # candidate is simulated on its own, so the figures do not depend on
+    # which are simulated together)
     def fun(z):
-        return (cache.get(z.tobytes()) or batch(z))[0]
+        key = z.tobytes()
+        if key not in values:
+            values[key] = residuals(z[None, :])[0]
+        return values[key]
 
     def jac(z):
-        return (cache.get(z.tobytes()) or batch(z))[1]
+        key = z.tobytes()
+        if key not in slopes:
+            steps = np.where(z + step <= 1.0, step, -step)
+            slopes[key] = (residuals(z + np.diag(steps)) - fun(z)).T / steps[None, :]
+        return slopes[key]
 
     res = least_squares(fun, z0, jac=jac, bounds=(0.0, 1.0), x_scale=1.0, max_nfev=max_nfev,
                         diff_step=None, method="trf")

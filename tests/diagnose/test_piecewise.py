@@ -102,3 +102,78 @@ def test_ramp_and_hold_at_500_hz_with_corners_between_samples(sigma):
 
     assert piecewise_linear(noisy, drive_noise_sigma(noisy)) is not None
     assert np.sqrt(np.mean((treat_voltage(noisy) - clean) ** 2)) < 0.2 * sigma
+
+
+def _hat_fit_numpy(v, knots):
+    """hat_fit as numpy and scipy compute it: np.bincount's sums, solve_banded."""
+    from scipy.linalg import solve_banded
+
+    t = np.arange(len(v))
+    m = len(knots)
+    j = np.clip(np.searchsorted(knots, t, side="right") - 1, 0, m - 2)
+    w = (t - knots[j]) / (knots[j + 1] - knots[j])
+    bands = np.zeros((3, m))
+    off = np.bincount(j, w * (1 - w), m)[:m - 1]
+    bands[0, 1:], bands[2, :-1] = off, off
+    bands[1] = np.bincount(j, (1 - w) ** 2, m) + np.bincount(j + 1, w ** 2, m)
+    rhs = np.bincount(j, (1 - w) * v, m) + np.bincount(j + 1, w * v, m)
+    c = solve_banded((1, 1), bands, rhs)
+    return c[j] * (1 - w) + c[j + 1] * w
+
+
+def test_compiled_hat_fit_is_numpy_and_lapack_to_the_last_bit():
+    # the knot search depends on the fit's last bits (its minimiser's path):
+    # the compiled fit sums and solves in the same order as np.bincount and LAPACK's dgtsv
+    rng = np.random.default_rng(4)
+    for trial in range(300):
+        n = int(rng.integers(8, 2500))
+        m = int(rng.integers(2, min(n // 4, 40) + 2))
+        knots = np.r_[0.0, np.sort(rng.choice(np.arange(2, n - 2), m - 2, replace=False)
+                                   + rng.uniform(-0.4, 0.4, m - 2)), n - 1.0]
+        v = np.cumsum(rng.normal(size=n)) * rng.uniform(0.01, 50.0) + rng.uniform(-150.0, 150.0)
+        assert hat_fit(v, knots).tobytes() == _hat_fit_numpy(v, knots).tobytes()
+
+
+def test_compiled_tridiagonal_solve_is_lapack_with_row_interchanges():
+    from scipy.linalg import solve_banded
+
+    from sizing.diagnose.piecewise import _gtsv
+
+    rng = np.random.default_rng(5)
+    for trial in range(500):
+        n = int(rng.integers(2, 30))
+        dl, d, du, b = rng.normal(size=n - 1), rng.normal(size=n), rng.normal(size=n - 1), rng.normal(size=n)
+        ab = np.zeros((3, n))
+        ab[0, 1:], ab[1], ab[2, :-1] = du, d, dl
+        x = b.copy()
+        assert _gtsv(dl.copy(), d.copy(), du.copy(), x) == 0
+        assert x.tobytes() == solve_banded((1, 1), ab, b).tobytes()
+
+
+def test_hinge_by_projections_is_the_normal_equations_hinge():
+    from sizing.diagnose import piecewise
+
+    rng = np.random.default_rng(6)
+    for trial in range(300):
+        s = int(rng.choice([2, 5, 12, 30]))
+        n = 8 * s + 40
+        offset = int(rng.choice([0, 1000, 3000]))
+        corner = n // 2 + rng.uniform(-s, s)
+        v = np.interp(np.arange(n), [0, corner, n - 1], rng.uniform(-150, 150, 3)) + rng.normal(0, 0.03, n)
+        v = np.r_[np.full(offset, v[0]), v]
+        i = offset + n // 2
+        lo, hi = max(i - 3 * s - 2, 0), min(i + 3 * s + 3, len(v))
+        taus = np.arange(max(i - 2 * s, lo + 1), min(i + 2 * s + 1, hi - 1))
+        t = np.arange(lo, hi, dtype=float)
+        H = np.maximum(t[None, :] - taus[:, None], 0.0)
+        normal = int(taus[np.argmin(piecewise._hinge_rss_normal(v[lo:hi], t, H))])
+        assert piecewise.best_hinge(v, i, s) == normal
+
+
+def test_a_treated_log_is_answered_from_memory_as_a_copy():
+    rng = np.random.default_rng(7)
+    v = _staircase()[0] + rng.normal(0, 0.03, len(T))
+    first = treat_voltage(v)
+    first[:] = 0.0                                    # the caller's copy, not the one kept
+    again = treat_voltage(v.copy())
+    assert np.array_equal(again, treat_voltage(v + 0.0)) and np.ptp(again) > 100.0

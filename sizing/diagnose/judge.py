@@ -17,7 +17,11 @@ Verdict (all measures are the combined measure of bench.py, holdout runs):
   when the gap has a line no candidate removes), unless the
   holdout gap has a spectral line (gap_lines, a narrow band the
   broadband model-form floor does not cover): then the best candidate is
-  judged on the share of the lines' energy it removes (line rule);
+  judged on the share of the lines' energy it removes (line rule) when
+  the lines carry ``line_share`` of what it removes (``lines_carry``);
+- "undetectable" too when the training runs the candidates were fitted
+  to show no gap (``no_gap_on_training``: the nominal leaves within
+  ``gap_factor`` x their floor there): a fit to them is a fit to form error;
 - "explained": the best removes >= ``explained`` of the gap energy above the
   floor (and, unless judged on lines, at least the floor's own energy:
   base^2 - best^2 >= floor^2, so that it is not fitting model-form
@@ -30,7 +34,9 @@ Verdict (all measures are the combined measure of bench.py, holdout runs):
   other conditions fails; ``remaining`` says where its residual is;
   it must remove most of the gap (>= ``explained``) or be separated from
   the runner-up: an effect that removes less than most of the gap and
-  that another explanation matches names nothing (``tied``);
+  that another explanation matches names nothing (``tied``), and so
+  does one whose runner-up, not separated from it, removes most of the
+  gap as well (two families taking up one structured residual alike);
   an effect whose fitted time constant (a ``*time_s`` parameter) is
   longer than the shortest training run does not settle within a run,
   so it cannot be told from a slow drift: it is at most "partial";
@@ -315,6 +321,7 @@ class Evidence:
     slow: dict = field(default_factory=dict)
     run_length: float | None = None
     details: dict = field(default_factory=dict)
+    training: dict | None = None
 
     @property
     def in_band(self) -> bool:
@@ -358,12 +365,12 @@ class Evidence:
 
 def evidence(baseline: float, noise: float, fits, baseline_blocks=None, seed: int = 0,
              run_length: float | None = None, line: dict | None = None, form_floor: float | None = None,
-             settings: Settings = DEFAULT, channels: dict | None = None) -> Evidence:
+             settings: Settings = DEFAULT, channels: dict | None = None, training: dict | None = None) -> Evidence:
     """The evidence of the rules (Evidence) from the verdict's inputs."""
     floor = total_floor(noise, form_floor, settings)
     best = pick(fits, seed, floor, settings, noise=noise, channels=channels)
     ev = Evidence(baseline, noise, floor, settings, total=floor, best=best, run_length=run_length,
-                  narrowband=narrowband_gap(line, best, baseline_blocks, seed, settings))
+                  narrowband=narrowband_gap(line, best, baseline_blocks, seed, settings), training=training)
     if best is None:
         return ev
     second = runner_up(fits, best)
@@ -478,6 +485,34 @@ def within_form_floor(ev: Evidence) -> Verdict | None:
     return verdict if lined else verdict.replace(status="undetectable")
 
 
+def no_gap_on_training(ev: Evidence) -> Verdict | None:
+    """The held-out gap is judged, but the training runs the candidates
+    were fitted to show no gap: the nominal's NRMSE there is within
+    ``gap_factor`` x their floor, by the rule that makes the held-out
+    baseline a gap (their noise floor with the model-form floor, or their
+    noise alone where the candidate is judged on the noise; not asked of a
+    verdict on the gap's spectral lines, which the broadband floor does not
+    cover). An effect of the library that is there shows on the runs it
+    is fitted to; a fit to runs without a gap is a fit to the nominal's
+    form error, and what it removes of the held-out gap is that form
+    error where it is larger (a nominal of another form errs more on some
+    runs than on others). The status is "undetectable": the campaign's
+    training runs cannot tell an effect of that size (runs that show it
+    would)."""
+    if ev.training is None or ev.best is None or ev.basis == "lines":
+        return None
+    base, noise = float(ev.training["baseline"]), float(ev.training["noise"])
+    form = 0.0 if ev.basis == "noise" else float(np.sqrt(max(ev.total ** 2 - ev.noise ** 2, 0.0)))
+    floor = float(np.hypot(noise, form))      # the held-out run's model-form floor, the training runs' noise
+    if base > ev.settings.gap_factor * floor:
+        return None
+    return ev.null("no_gap_on_training",
+                   f"the training runs show no gap: the nominal leaves {base:.4f} there, within "
+                   f"{ev.settings.gap_factor:g} x their floor {floor:.4f}; {ev.best.name}, fitted to them, takes up "
+                   f"the nominal's form error, which is larger on the held-out run ({ev.baseline:.4f}); an effect "
+                   f"of this size cannot be told on this campaign").replace(status="undetectable")
+
+
 def explains(ev: Evidence) -> Verdict | None:
     """Significantly better than the baseline, removes at least ``explained``
     of the gap energy above the floor (and the floor's own energy), leaves
@@ -542,13 +577,13 @@ def explains_too_little(ev: Evidence) -> Verdict:
                    f"{ev.p_base:.3f}{small})")
 
 
-RULES = (no_significant_gap, nothing_fitted, within_form_floor, explains, tied_with_runner_up, explains_part,
-         explains_too_little)
+RULES = (no_significant_gap, nothing_fitted, within_form_floor, no_gap_on_training, explains, tied_with_runner_up,
+         explains_part, explains_too_little)
 
 
 def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks=None, seed: int = 0,
             run_length: float | None = None, line: dict | None = None, form_floor: float | None = None,
-            channels: dict | None = None, settings: Settings = DEFAULT) -> Verdict:
+            channels: dict | None = None, settings: Settings = DEFAULT, training: dict | None = None) -> Verdict:
     """The first verdict of RULES on the combined measure; then, on a
     campaign that logs more than the position, the channel rule
     (``channel_verdict``) when it names more: "explained" from a channel
@@ -558,9 +593,12 @@ def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks
     the settling rule; ``line``: the spectral lines of the holdout gap
     (gap_lines); ``form_floor``: the model-form floor of the
     combined measure (None: the prior); ``channels``: {channel:
-    {"baseline", "noise", "form", "blocks"}}."""
+    {"baseline", "noise", "form", "blocks"}}; ``training``: {"baseline",
+    "noise"} of the training runs (the nominal's combined NRMSE and the
+    noise floor, root mean square over those runs), for
+    ``no_gap_on_training`` (None: not judged)."""
     ev = evidence(baseline_holdout, floor_holdout, fits, baseline_blocks, seed, run_length, line, form_floor,
-                  settings, channels)
+                  settings, channels, training)
     out = next(v for v in (rule(ev) for rule in RULES) if v is not None)
     if not channels or len(channels) < 2 or out.status == "explained":
         return out

@@ -93,3 +93,23 @@ def test_lines_carry_compares_the_lines_energy_with_what_the_candidate_removes(s
     0.0032)^2 = 0.67 removed: 4 %, below ``line_share``; 0.87 x 0.4 = 52 %."""
     ev = judge.Evidence(0.0032, NOISE, 0.0022, judge.DEFAULT, best=_fit("fluid_compressibility", 0.00183))
     assert judge.lines_carry(ev, {"share": share, "removed": 0.87}) is carried
+
+
+@pytest.mark.parametrize("train_baseline, status", [(0.00176, "undetectable"), (0.00572, "explained")])
+def test_an_effect_fitted_to_training_runs_without_a_gap_is_not_named(train_baseline, status):
+    """A fresh campaign of the same rig with no effect: the held-out run's
+    gap is 0.00358 (3.9 x the noise 0.00092), a softer oil leaves 0.00145
+    there, separated from every other family; but the nominal leaves
+    0.00176 on the training runs, within 1.5 x their floor (0.0022): the
+    oil was fitted to form error, nothing named. With 0.4 % of entrained
+    air the training runs show 0.00572 (2.6 x beyond the floor's band)
+    and the oil is named."""
+    base = 0.00358
+    fits = [_fit("fluid_compressibility", 0.00145, form="air"), _fit("sensor_vibration", 0.00353)]
+    v = judge.verdict(base, 0.00092, fits, np.full(40, base ** 2 / 40),
+                      training={"baseline": train_baseline, "noise": 0.00092})
+    assert v.status == status
+    assert (v.effect is None) is (status == "undetectable")
+    if v.effect is None:
+        assert v.rule == "no_gap_on_training" and "the training runs show no gap" in v.reason
+    assert judge.verdict(base, 0.00092, fits, np.full(40, base ** 2 / 40)).status == "explained"   # without

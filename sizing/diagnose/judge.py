@@ -34,9 +34,7 @@ Verdict (all measures are the combined measure of bench.py, holdout runs):
   other conditions fails; ``remaining`` says where its residual is;
   it must remove most of the gap (>= ``explained``) or be separated from
   the runner-up: an effect that removes less than most of the gap and
-  that another explanation matches names nothing (``tied``), and so
-  does one whose runner-up, not separated from it, removes most of the
-  gap as well (two families taking up one structured residual alike);
+  that another explanation matches names nothing (``tied``);
   an effect whose fitted time constant (a ``*time_s`` parameter) is
   longer than the shortest training run does not settle within a run,
   so it cannot be told from a slow drift: it is at most "partial";
@@ -260,19 +258,15 @@ def noise_matched(best, noise_floor: float, p_second: float, settings: Settings 
     return best.nrmse_holdout <= settings.noise_match * noise_floor and p_second < settings.alpha
 
 
-def tied(share: float, separated: bool, settings: Settings = DEFAULT, second_share: float = 0.0) -> bool:
-    """Whether the data neither pin the gap on a candidate nor prefer it
-    to another family: it is not separated from the runner-up (another
-    explanation) and either it removes less than most (``explained``) of
-    the gap energy above the floor, or the runner-up (``second_share``)
-    removes most of it as well. Separation alone, or most of the gap alone,
-    still names it "partial"; not separated, a candidate that removes less
-    than most takes what any flexible family takes up of model-form error,
-    and two families that each remove most of the gap account for one
-    structured residual alike: a difference between the nominal's form
-    and the hardware's that any flexible account takes up (a stiffer
-    response, a lag), of which neither family is the evidence."""
-    return not separated and (share < settings.explained or second_share >= settings.explained)
+def tied(share: float, separated: bool, settings: Settings = DEFAULT) -> bool:
+    """Whether a candidate is too weak on two counts to be named even as
+    partial: it removes less than most (``explained``) of the gap energy above
+    the floor and is not separated from the runner-up, another
+    explanation. Either alone still names it "partial"; both together
+    mean the data neither pin the gap on it nor prefer it to another
+    family: what a candidate removes then is as likely model-form error
+    that any flexible family takes up."""
+    return share < settings.explained and not separated
 
 
 def narrowband_gap(line: dict | None, best, baseline_blocks, seed: int = 0, settings: Settings = DEFAULT) -> bool:
@@ -315,7 +309,6 @@ class Evidence:
     basis: str = "gap"
     shrink: float = 0.0
     share: float = 0.0
-    second_share: float = 0.0
     p_base: float = 1.0
     p_second: float = 1.0
     slow: dict = field(default_factory=dict)
@@ -377,12 +370,11 @@ def evidence(baseline: float, noise: float, fits, baseline_blocks=None, seed: in
     p_base = bootstrap_p(best.residual_blocks, baseline_blocks, seed, settings.n_boot) if baseline_blocks is not None else 0.0
     p_second = separation_p(best.residual_blocks, second.residual_blocks, seed, settings.n_boot) if second is not None else 0.0
     share = explained(baseline, best.nrmse_holdout, floor)
-    second_share = 0.0 if second is None else explained(baseline, second.nrmse_holdout, floor)
     details = {"explained_gap_energy": share, "floor_holdout": floor,
                "runner_up": None if second is None else {
                    "effect": second.name, "form": second.form,
                    "shrink_holdout": float(1.0 - second.nrmse_holdout / baseline),
-                   "explained_gap_energy": second_share},
+                   "explained_gap_energy": explained(baseline, second.nrmse_holdout, floor)},
                "separation": {"test": f"block bootstrap over holdout segments ({settings.block_s:g} s blocks, "
                                       f"{settings.n_boot} resamples; one-sided against the baseline, two-sided "
                                       f"between candidates ranked on the holdout)",
@@ -390,8 +382,8 @@ def evidence(baseline: float, noise: float, fits, baseline_blocks=None, seed: in
     if line is not None:
         details["line"] = dict(line, judged_on=False)
     ev = dataclasses.replace(ev, second=second, p_base=p_base, p_second=p_second, share=share,
-                             second_share=second_share, shrink=float(1.0 - best.nrmse_holdout / baseline),
-                             slow=unsettled(best, run_length), details=details)
+                             shrink=float(1.0 - best.nrmse_holdout / baseline), slow=unsettled(best, run_length),
+                             details=details)
     return judged_basis(ev, line, channels)
 
 
@@ -408,13 +400,11 @@ def judged_basis(ev: Evidence, line: dict | None, channels: dict | None = None) 
     if line is not None and line.get("removed", 0.0) >= ev.settings.partial and lines_carry(ev, line, channels):
         share = float(line["removed"])
         details = dict(ev.details, explained_gap_energy=share, line=dict(ev.details["line"], judged_on=True))
-        return dataclasses.replace(ev, basis="lines", share=share, second_share=0.0, details=details)
+        return dataclasses.replace(ev, basis="lines", share=share, details=details)
     if noise_matched(ev.best, ev.noise, ev.p_second, ev.settings):
         share = explained(ev.baseline, ev.best.nrmse_holdout, ev.noise)
-        second_share = 0.0 if ev.second is None else explained(ev.baseline, ev.second.nrmse_holdout, ev.noise)
         details = dict(ev.details, explained_gap_energy=share, floor_holdout=ev.noise, judged_on_noise_floor=True)
-        return dataclasses.replace(ev, basis="noise", floor=ev.noise, share=share, second_share=second_share,
-                                   details=details)
+        return dataclasses.replace(ev, basis="noise", floor=ev.noise, share=share, details=details)
     return ev
 
 
@@ -529,22 +519,15 @@ def explains(ev: Evidence) -> Verdict | None:
 
 
 def tied_with_runner_up(ev: Evidence) -> Verdict | None:
-    """Significant and above ``partial``, but ``tied``: not separated from
-    another explanation that does as much (the best removes less than most
-    of the gap, or the runner-up removes most of it too), which names nothing."""
+    """Significant and above ``partial``, but ``tied``: less than most of the
+    gap and not separated from another explanation, which names nothing."""
     s = ev.settings
-    if not (ev.significant and ev.share >= s.partial and tied(ev.share, ev.separated, s, ev.second_share)):
+    if not (ev.significant and ev.share >= s.partial and tied(ev.share, ev.separated, s)):
         return None
-    if ev.share < s.explained:
-        return ev.null("tied_with_runner_up",
-                       f"{ev.best.name} removes {100 * ev.share:.0f} % < {100 * s.explained:.0f} % of the holdout gap "
-                       f"energy above the floor and is not separated from {ev.second.name} (p = {ev.p_second:.3f}): "
-                       f"the data do not say which")
     return ev.null("tied_with_runner_up",
-                   f"{ev.best.name} removes {100 * ev.share:.0f} % of the holdout gap energy above the floor and "
-                   f"{ev.second.name}, not separated from it (p = {ev.p_second:.3f}), {100 * ev.second_share:.0f} %: "
-                   f"two families account for the gap alike, as for a difference between the nominal's form and "
-                   f"the hardware's; the data do not say which")
+                   f"{ev.best.name} removes {100 * ev.share:.0f} % < {100 * s.explained:.0f} % of the holdout gap "
+                   f"energy above the floor and is not separated from {ev.second.name} (p = {ev.p_second:.3f}): "
+                   f"the data do not say which")
 
 
 def explains_part(ev: Evidence) -> Verdict | None:
@@ -646,7 +629,6 @@ def channel_evidence(fits, c: str, channels: dict, seed: int = 0, settings: Sett
     p_second = separation_p(best.residual_blocks, second.residual_blocks, seed, settings.n_boot) if second else 0.0
     return Evidence(base, ch["noise"], total, settings, total=total, best=best, second=second,
                     shrink=float(1.0 - best.nrmse_holdout / base), share=explained(base, best.nrmse_holdout, total),
-                    second_share=explained(base, second.nrmse_holdout, total) if second else 0.0,
                     p_base=p_base, p_second=p_second, slow=unsettled(best, run_length), run_length=run_length,
                     details={"explained_gap_energy": explained(base, best.nrmse_holdout, total),
                              "floor_holdout": total})

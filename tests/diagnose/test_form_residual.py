@@ -1,11 +1,11 @@
 """A nominal of another form leaves a structured residual that flexible
 families of the library take up: the verdict names none of them for it
-(judge.tied: two families that each remove most of the gap, not
-separated; judge.lines_carry: a line the excitation leaves in that
-residual does not decide), and still names an effect that the data pin
-on it. The figures are those of a two-stack rig's null campaign of the
-project's second generator (a nominal stated 2.5 % off, another
-simulator's form): 3-5 x the noise on the held-out run."""
+(judge.no_gap_on_training: a candidate fitted to training runs that show
+no gap; judge.lines_carry: a line the excitation leaves in that residual
+does not decide), and still names an effect that the data pin on it.
+The figures are those of the project's second generator's two-stack rig
+(a nominal stated 2.5 % off, another simulator's form) with no effect
+and with entrained air: 3-7 x the noise on the held-out run."""
 from __future__ import annotations
 
 import numpy as np
@@ -15,58 +15,16 @@ from sizing.diagnose import effects, judge
 from sizing.diagnose.fitting import EffectFit
 
 NOISE = 0.0009        # noise floor of the held-out run, share of the span
-BASELINE = 0.0049     # the nominal's holdout NRMSE: 5.4 x the noise
 
 
-ALTERNATING = np.repeat([1.0, -1.0], 4)[np.arange(40) % 8]     # +1 on four blocks, -1 on the next four
-
-
-def _fit(name, holdout, swing=0.0, form=None):
-    """A fitted candidate leaving ``holdout`` (NRMSE) on 40 holdout blocks
-    (their energies sum to the holdout's mean square), more in some blocks
-    than in others by ``swing`` x ALTERNATING: two candidates with
-    opposite swings leave their residual in different parts of the run,
-    and block by block the one is not consistently better than the other."""
+def _fit(name, holdout, form=None):
+    """A fitted candidate leaving ``holdout`` (NRMSE) evenly on 40 holdout
+    blocks (their energies sum to the holdout's mean square)."""
     family = [e for e in effects.library("piezohydraulic") if e.name == name]
     effect = next((e for e in family if form is None or e.form == form), family[0])
     f = EffectFit((effect,), np.zeros(len(effect.params)), holdout, message="ok")
-    f.nrmse_holdout, f.residual_blocks = holdout, holdout ** 2 / 40 * (1.0 + swing * ALTERNATING)
+    f.nrmse_holdout, f.residual_blocks = holdout, np.full(40, holdout ** 2 / 40)
     return f
-
-
-def _baseline_blocks():
-    return np.full(40, BASELINE ** 2 / 40)
-
-
-def test_two_families_that_take_up_one_form_residual_alike_name_nothing():
-    """A softer oil leaves 0.00177 and viscous damping 0.00195 (each all of
-    the gap energy above the floor, neither separated from the other):
-    named `partial` fluid_compressibility before; nothing now."""
-    fits = [_fit("fluid_compressibility", 0.00177, 0.5), _fit("viscous_damping", 0.00195, -0.5),
-            _fit("leakage", 0.0046)]
-    v = judge.verdict(BASELINE, NOISE, fits, _baseline_blocks())
-    assert v.effect is None and v.status == "unexplained" and v.rule == "tied_with_runner_up"
-    assert v["runner_up"]["explained_gap_energy"] >= 0.75 and v["separation"]["p_vs_runner_up"] >= 0.05
-    assert "two families account for the gap alike" in v.reason
-
-
-def test_an_effect_the_runner_up_does_not_match_is_named():
-    """The same gap, the softer oil to 0.0011 and viscous damping only to
-    0.0035 (less than most of the gap): compressibility named, explained;
-    with viscous damping close behind (0.00112, not separated), removing
-    most of the gap too, nothing; the oil to 0.0030 (78 % of the gap
-    energy above the floor) with viscous damping at 0.0033 (68 %), not
-    separated: `partial` as before (separation alone is not asked)."""
-    fits = [_fit("fluid_compressibility", 0.0011, 0.5), _fit("viscous_damping", 0.0035, -0.5)]
-    v = judge.verdict(BASELINE, NOISE, fits, _baseline_blocks())
-    assert (v.status, v.effect) == ("explained", "fluid_compressibility")
-    close = [_fit("fluid_compressibility", 0.0011, 0.5), _fit("viscous_damping", 0.00112, -0.5)]
-    v = judge.verdict(BASELINE, NOISE, close, _baseline_blocks())
-    assert (v.status, v.effect, v.rule) == ("unexplained", None, "tied_with_runner_up")
-    weak = [_fit("fluid_compressibility", 0.0030, 0.9), _fit("viscous_damping", 0.0033, -0.9)]
-    v = judge.verdict(BASELINE, NOISE, weak, _baseline_blocks())
-    assert v["separation"]["p_vs_runner_up"] >= 0.05 and v["runner_up"]["explained_gap_energy"] < 0.75
-    assert (v.status, v.effect) == ("partial", "fluid_compressibility")
 
 
 def test_a_line_that_a_broadband_candidate_removes_with_the_form_residual_does_not_decide():
@@ -113,3 +71,24 @@ def test_an_effect_fitted_to_training_runs_without_a_gap_is_not_named(train_base
     if v.effect is None:
         assert v.rule == "no_gap_on_training" and "the training runs show no gap" in v.reason
     assert judge.verdict(base, 0.00092, fits, np.full(40, base ** 2 / 40)).status == "explained"   # without
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("effects, seed, named", [
+    ({}, 101, None),                                                   # 0.0036 held out, 3.9 x the noise
+    ({"air": {"eps0": 0.002, "kappa": 1.2}}, 102, "fluid_compressibility"),   # 0.0059, 6.5 x
+])
+def test_a_two_stack_null_is_not_named_and_entrained_air_is(tmp_path, effects, seed, named):
+    """The second generator's two-stack rig with 3 in pistons (a nominal
+    stated 2.5 % off): with no effect a softer oil was named `explained`
+    (the training runs show 0.0018, within their floor's band); with 0.2 %
+    of entrained air it is named."""
+    from benchmarks.crossform import piezo
+    from benchmarks.crossform.common import write_campaign
+    from sizing import api
+
+    rig, runs = piezo.campaign(effects, seed, n_stacks=2, wide_in=3.0, v_max=125.0, misstate=0.025)
+    d = api.diagnose(write_campaign(tmp_path / "c", rig, runs), ["stairs_b"])
+    assert d.verdict["effect"] == named
+    if named is None:
+        assert (d.verdict.status, d.verdict.rule) == ("undetectable", "no_gap_on_training")

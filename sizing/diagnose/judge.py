@@ -479,28 +479,34 @@ def no_gap_on_training(ev: Evidence) -> Verdict | None:
     """The held-out gap is judged, but the training runs the candidates
     were fitted to show no gap: the nominal's NRMSE there is within
     ``gap_factor`` x their floor, by the rule that makes the held-out
-    baseline a gap (their noise floor with the model-form floor, or their
-    noise alone where the candidate is judged on the noise; not asked of a
-    verdict on the gap's spectral lines, which the broadband floor does not
-    cover). An effect of the library that is there shows on the runs it
-    is fitted to; a fit to runs without a gap is a fit to the nominal's
-    form error, and what it removes of the held-out gap is that form
-    error where it is larger (a nominal of another form errs more on some
-    runs than on others). The status is "undetectable": the campaign's
-    training runs cannot tell an effect of that size (runs that show it
-    would)."""
+    baseline a gap. Their floor is their noise with the held-out run's
+    model-form floor, or their noise alone where the candidate is judged
+    on the noise or takes the training runs to it (leaves at most
+    ``noise_match`` x their noise: those runs then show no model-form
+    error to allow for, as ``noise_matched`` reads the held-out runs). Not
+    asked of a verdict on the gap's spectral lines, which the broadband
+    floor does not cover. An effect of the library that is there shows on
+    the runs it is fitted to, or is fitted there down to the noise; a
+    candidate that leaves a structured residual on training runs without
+    a gap was fitted to the nominal's form error, and what it removes of
+    the held-out gap is that form error where it is larger (a nominal of
+    another form errs more on some runs than on others). The status is
+    "undetectable": the training runs cannot tell an effect of that size
+    (runs that show it would)."""
     if ev.training is None or ev.best is None or ev.basis == "lines":
         return None
     base, noise = float(ev.training["baseline"]), float(ev.training["noise"])
-    form = 0.0 if ev.basis == "noise" else float(np.sqrt(max(ev.total ** 2 - ev.noise ** 2, 0.0)))
+    to_noise = ev.basis == "noise" or ev.best.nrmse_train <= ev.settings.noise_match * noise
+    form = 0.0 if to_noise else float(np.sqrt(max(ev.total ** 2 - ev.noise ** 2, 0.0)))
     floor = float(np.hypot(noise, form))      # the held-out run's model-form floor, the training runs' noise
     if base > ev.settings.gap_factor * floor:
         return None
     return ev.null("no_gap_on_training",
                    f"the training runs show no gap: the nominal leaves {base:.4f} there, within "
-                   f"{ev.settings.gap_factor:g} x their floor {floor:.4f}; {ev.best.name}, fitted to them, takes up "
-                   f"the nominal's form error, which is larger on the held-out run ({ev.baseline:.4f}); an effect "
-                   f"of this size cannot be told on this campaign").replace(status="undetectable")
+                   f"{ev.settings.gap_factor:g} x their floor {floor:.4f}, and {ev.best.name}, fitted to them, "
+                   f"leaves {ev.best.nrmse_train:.4f} (their noise {noise:.4f}): it takes up the nominal's form "
+                   f"error, which is larger on the held-out run ({ev.baseline:.4f}); an effect of this size cannot "
+                   f"be told on this campaign").replace(status="undetectable")
 
 
 def explains(ev: Evidence) -> Verdict | None:

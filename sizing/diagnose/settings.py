@@ -25,7 +25,7 @@ class Settings:
     noise_match: float = 1.2       # within the band, a candidate leaving <= this x the noise is judged on it
     pair_gain: float = 0.25        # a pair removes this share of what its single leaves above the floor...
     line_gain: float = 0.5         # ... or this share of a spectral line its single leaves
-    line_share: float = 0.2        # within the band, lines decide when they carry this share of what the best removes
+    line_share: float = 0.05       # within the band, lines decide when they carry this share of what the best removes
     form_floor_prior: float = 0.002  # model-form floor (of the span) when the campaign cannot estimate one
     form_margin: float = 1.0       # a partner removes more than (1 + this) x what the other partners of its single take (judge.beyond_form)
     rest_samples: int = 200        # second differences at rest needed for the at-rest noise estimate

@@ -494,8 +494,10 @@ def no_gap_on_training(ev: Evidence) -> Verdict | None:
     the held-out gap is that form error where it is larger (a nominal of
     another form errs more on some runs than on others). The status is
     "undetectable": the training runs cannot tell an effect of that size
-    (runs that show it would)."""
-    if ev.training is None or ev.best is None or ev.basis == "lines":
+    (runs that show it would). Asked only of a verdict that would name an
+    effect (``names_an_effect``): one that names nothing keeps its own
+    status and reason (an outside effect stays "unexplained")."""
+    if ev.training is None or ev.best is None or ev.basis == "lines" or not names_an_effect(ev):
         return None
     base, noise = float(ev.training["baseline"]), float(ev.training["noise"])
     to_noise = ev.basis == "noise" or ev.best.nrmse_train <= ev.settings.noise_match * noise
@@ -509,6 +511,12 @@ def no_gap_on_training(ev: Evidence) -> Verdict | None:
                    f"leaves {ev.best.nrmse_train:.4f} (their noise {noise:.4f}): it takes up the nominal's form "
                    f"error, which is larger on the held-out run ({ev.baseline:.4f}); an effect of this size cannot "
                    f"be told on this campaign").replace(status="undetectable")
+
+
+def names_an_effect(ev: Evidence) -> bool:
+    """Whether the rules after ``no_gap_on_training`` would name an effect."""
+    v = next((v for v in (rule(ev) for rule in (explains, tied_with_runner_up, explains_part)) if v is not None), None)
+    return v is not None and v.effect is not None
 
 
 def explains(ev: Evidence) -> Verdict | None:

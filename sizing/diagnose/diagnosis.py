@@ -117,6 +117,17 @@ def floors_by_channel(bench, nominal, noise_position: float, forms, settings: Se
     return out
 
 
+def training_gap(combined: np.ndarray, floor: np.ndarray, train: list[int]) -> dict | None:
+    """{"baseline", "noise"}: the nominal's combined NRMSE and the noise
+    floor over the training runs (root mean square over them, as a
+    candidate's training NRMSE is), for judge.no_gap_on_training; None
+    without training runs."""
+    if not train:
+        return None
+    return {"baseline": float(np.sqrt(np.mean(np.asarray(combined, float)[train] ** 2))),
+            "noise": float(np.sqrt(np.mean(np.asarray(floor, float)[train] ** 2)))}
+
+
 def stated_form_floor(verdict: Verdict, campaign: float | None, settings: Settings = DEFAULT_SETTINGS) -> Verdict:
     """The verdict with the position's model-form floor stated: the prior
     it was judged against and the campaign's own reading
@@ -177,7 +188,8 @@ def diagnose_runs(kind: str, rig, runs, holdout: list[str], recalibrate: list[st
     line = judge.gap_lines(bench, [nominal[i][0] for i in bench.holdout],
                               None if best_sim is None else [best_sim[i][0] for i in bench.holdout])
     inputs = dict(baseline_holdout=base_ho, floor_holdout=floor_ho, fits=fits, baseline_blocks=base_blocks,
-                  seed=seed, run_length=shortest, line=line, form_floor=form_ho, channels=channels)
+                  seed=seed, run_length=shortest, line=line, form_floor=form_ho, channels=channels,
+                  training=training_gap(combined, floor, bench.train))
     verdict = judge.verdict(**inputs, settings=settings)
     verdict = stated_form_floor(verdict, campaign_form_floor(fits, floor, bench.train), settings)
     floors = {c: {k: v for k, v in ch.items() if k != "blocks"} for c, ch in channels.items()}

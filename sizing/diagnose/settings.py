@@ -25,6 +25,7 @@ class Settings:
     noise_match: float = 1.2       # within the band, a candidate leaving <= this x the noise is judged on it
     pair_gain: float = 0.25        # a pair removes this share of what its single leaves above the floor...
     line_gain: float = 0.5         # ... or this share of a spectral line its single leaves
+    line_share: float = 0.05       # within the band, lines decide when they carry this share of what the best removes
     form_floor_prior: float = 0.002  # model-form floor (of the span) when the campaign cannot estimate one
     form_margin: float = 1.0       # a partner removes more than (1 + this) x what the other partners of its single take (judge.beyond_form)
     rest_samples: int = 200        # second differences at rest needed for the at-rest noise estimate
@@ -69,7 +70,7 @@ DEFAULT = Settings()
 # (form_floor_prior: the combined measure's floor; each channel's floors
 # in the verdict's inputs stay as measured)
 VERDICT_THRESHOLDS = ("gap_factor", "explained", "partial", "residual_factor", "alpha", "noise_match",
-                      "pair_gain", "line_gain", "form_margin", "form_floor_prior")
+                      "pair_gain", "line_gain", "line_share", "form_margin", "form_floor_prior")
 
 
 def names() -> list[str]:

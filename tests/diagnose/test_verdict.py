@@ -48,7 +48,8 @@ def test_verdict_refuses_an_unknown_status_or_a_named_status_without_an_effect()
 
 def test_rules_are_declared_in_order_and_each_decides_one_verdict():
     assert [r.__name__ for r in judge.RULES] == [
-        "no_significant_gap", "nothing_fitted", "within_form_floor", "explains", "tied_with_runner_up",
+        "no_significant_gap", "nothing_fitted", "within_form_floor", "no_gap_on_training", "explains",
+        "tied_with_runner_up",
         "explains_part", "explains_too_little"]
     blocks = np.full(40, 10.0)
     # a gap within 1.5 x the noise: no gap

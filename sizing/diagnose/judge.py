@@ -492,7 +492,9 @@ def no_gap_on_training(ev: Evidence) -> Verdict | None:
     candidate that leaves a structured residual on training runs without
     a gap was fitted to the nominal's form error, and what it removes of
     the held-out gap is that form error where it is larger (a nominal of
-    another form errs more on some runs than on others). The status is
+    another form errs more on some runs than on others, but not
+    ``form_spread`` x more: a held-out gap beyond that is not the
+    nominal's form error, whatever the training runs show). The status is
     "undetectable": the training runs cannot tell an effect of that size
     (runs that show it would). Asked only of a verdict that would name an
     effect (``names_an_effect``): one that names nothing keeps its own
@@ -500,6 +502,8 @@ def no_gap_on_training(ev: Evidence) -> Verdict | None:
     if ev.training is None or ev.best is None or ev.basis == "lines" or not names_an_effect(ev):
         return None
     base, noise = float(ev.training["baseline"]), float(ev.training["noise"])
+    if ev.baseline > ev.settings.form_spread * base:
+        return None      # many times the training runs' error: more than a form error's spread between runs
     to_noise = ev.basis == "noise" or ev.best.nrmse_train <= ev.settings.noise_match * noise
     form = 0.0 if to_noise else float(np.sqrt(max(ev.total ** 2 - ev.noise ** 2, 0.0)))
     floor = float(np.hypot(noise, form))      # the held-out run's model-form floor, the training runs' noise

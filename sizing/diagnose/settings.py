@@ -26,6 +26,7 @@ class Settings:
     pair_gain: float = 0.25        # a pair removes this share of what its single leaves above the floor...
     line_gain: float = 0.5         # ... or this share of a spectral line its single leaves
     line_share: float = 0.05       # within the band, lines decide when they carry this share of what the best removes
+    form_spread: float = 4.0       # a nominal's form error on the held-out run at most this x the training runs' (judge.no_gap_on_training)
     form_floor_prior: float = 0.002  # model-form floor (of the span) when the campaign cannot estimate one
     form_margin: float = 1.0       # a partner removes more than (1 + this) x what the other partners of its single take (judge.beyond_form)
     rest_samples: int = 200        # second differences at rest needed for the at-rest noise estimate
@@ -70,7 +71,7 @@ DEFAULT = Settings()
 # (form_floor_prior: the combined measure's floor; each channel's floors
 # in the verdict's inputs stay as measured)
 VERDICT_THRESHOLDS = ("gap_factor", "explained", "partial", "residual_factor", "alpha", "noise_match",
-                      "pair_gain", "line_gain", "line_share", "form_margin", "form_floor_prior")
+                      "pair_gain", "line_gain", "line_share", "form_spread", "form_margin", "form_floor_prior")
 
 
 def names() -> list[str]:

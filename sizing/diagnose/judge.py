@@ -519,8 +519,8 @@ def no_gap_on_training(ev: Evidence) -> Verdict | None:
 
 def names_an_effect(ev: Evidence) -> bool:
     """Whether the rules after ``no_gap_on_training`` would name an effect."""
-    v = next((v for v in (rule(ev) for rule in (explains, tied_with_runner_up, explains_part)) if v is not None), None)
-    return v is not None and v.effect is not None
+    later = RULES[RULES.index(no_gap_on_training) + 1:]
+    return next(v for v in (rule(ev) for rule in later) if v is not None).effect is not None
 
 
 def explains(ev: Evidence) -> Verdict | None:

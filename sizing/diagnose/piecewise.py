@@ -44,7 +44,6 @@ from scipy.ndimage import convolve1d, gaussian_filter1d, maximum_filter1d, media
 from .settings import DEFAULT
 
 
-
 def hat_fit(v: np.ndarray, knots: np.ndarray) -> np.ndarray:
     """Least-squares continuous piecewise-linear fit of v with nodes at the
     sorted positions ``knots`` in samples (first 0, last len(v) - 1; the

@@ -183,12 +183,18 @@ class Search:
         design of ``cs`` that is not among them was ruled out)."""
         req, catalog = probe.apply(self.req, self.catalog, x)
         self.solves += 1
-        found = self.known.setdefault((tech, probe.field), {}).setdefault(x, {})
-        for fresh in resolve.units(self.stages, tech, req, catalog, self.loads, cs):
-            ok, driver = verdict(fresh.margins)
-            found[fresh.id] = (ok, _objective(fresh, self.key), _slack_of(fresh.margins, driver))
+        found = self._record(tech, probe, x, resolve.units(self.stages, tech, req, catalog, self.loads, cs))
         for c in cs:
             found.setdefault(c.id, (False, math.inf, -math.inf))
+        return found
+
+    def _record(self, tech: str, probe: Probe, x: float, fresh) -> dict:
+        """What the re-solved designs ``fresh`` gave at ``x``, kept with what
+        is known there: {id: (feasible, first objective, slack)}."""
+        found = self.known.setdefault((tech, probe.field), {}).setdefault(x, {})
+        for c in fresh:
+            ok, driver = verdict(c.margins)
+            found[c.id] = (ok, _objective(c, self.key), _slack_of(c.margins, driver))
         return found
 
     def design_at(self, tech: str, probe: Probe, x: float, c: Candidate) -> tuple[bool, float]:
@@ -263,10 +269,7 @@ class Search:
                 return []
             self.solves += 1
             fresh = resolve.units(self.stages, tech, req, catalog, self.loads, cs)
-            found = self.known.setdefault((tech, probe.field), {}).setdefault(x, {})
-            for c in fresh:
-                ok, driver = verdict(c.margins)
-                found[c.id] = (ok, _objective(c, self.key), _slack_of(c.margins, driver))
+            self._record(tech, probe, x, fresh)
         alive = []
         for c in fresh:
             ok, driver = verdict(c.margins)

@@ -162,7 +162,7 @@ def _with_flips(req, catalog, loads, candidates, summary) -> dict:
 UNVERIFIED = ("sized", "gp_infeasible")
 UNVERIFIED_REASON = "not simulated: misses a static check"
 # a simulated design that misses a check by more than FAR_MISS is counted, not recorded
-FAR_MISS_REASON = "simulated: misses {} by more than 50 %"
+FAR_MISS_REASON = "simulated: misses {} by more than " + f"{-100 * FAR_MISS:g} %"
 
 
 def _dropped_reason(c: Candidate, named: set) -> str | None:

@@ -1,5 +1,6 @@
-"""The BLAS library's threads: one each, for the command line, the
-benchmarks and every call into ``sizing.api`` from Python.
+"""Threads: the BLAS library's, one each, for the command line, the
+benchmarks and every call into ``sizing.api`` from Python; and whether a
+worker thread of the solve would find a core of its own (``core_to_spare``).
 
 The package's linear algebra is on small or thin matrices (a few
 parameters by thousands of samples); its parallel work is the numba

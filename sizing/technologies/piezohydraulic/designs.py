@@ -250,7 +250,7 @@ def _build(b: PiezoBrief, pending: list[PiezoDesign], spacer) -> list[PiezoDesig
     p_load = b.max_load / c.narrow_area
     seal_f = seal_friction_at(c, p_load)
     # each design's figures read from lists, built once: thousands of designs
-    static, met, members = _columns(static), _columns(met), force_path.listed(members)
+    static, met, members = force_path.columns(static), force_path.columns(met), force_path.listed(members)
     out, singles = [], c.rows()
     for i, d in enumerate(pending):
         comp = d.variant.compensator
@@ -268,11 +268,6 @@ def _build(b: PiezoBrief, pending: list[PiezoDesign], spacer) -> list[PiezoDesig
             seal_friction=frozen(friction), static_margins=frozen(_static_margins(b, d, figures)),
             ruled_out=ruled_out(b, figures, mets)))
     return out
-
-
-def _columns(figures: dict) -> dict[str, list[float]]:
-    """Each figure's array as a list of floats, one per candidate."""
-    return {k: np.asarray(v, dtype=float).tolist() for k, v in figures.items()}
 
 
 def sized_drive(b: PiezoBrief, c: Candidates) -> dict:

@@ -170,10 +170,16 @@ def simulator_bulk_modulus(c, m: dict) -> np.ndarray:
     return k_h * c.oil_volume / c.wide_area**2
 
 
+def columns(figures: dict) -> dict[str, list[float]]:
+    """Each figure's array as a list of floats, one per candidate: read a
+    candidate at a time without a numpy lookup apiece."""
+    return {k: np.asarray(v, dtype=float).tolist() for k, v in figures.items()}
+
+
 def listed(m: dict) -> dict[str, dict[str, list]]:
-    """``members(c)`` with every array a list of floats: ``as_list`` reads
-    each candidate's figures from it without a numpy lookup apiece."""
-    return {name: {k: np.asarray(v, dtype=float).tolist() for k, v in member.items()} for name, member in m.items()}
+    """``members(c)`` with every array a list of floats (``columns``), as
+    ``as_list`` reads it."""
+    return {name: columns(member) for name, member in m.items()}
 
 
 def _at(values, i: int) -> float:

@@ -249,7 +249,26 @@ def _narrow_accel_stribeck(F, u, F_run, F_static, inv_m, inv_vs):
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _lugre_step(F, u, z, F_c, F_s, inv_vs, z_pre, m, dt):
+def _lugre_constants(F_s, z_pre, m, dt):
+    """Bristle stiffness sigma0 = F_s / z_pre, bristle damping sigma1 =
+    sqrt(sigma0 m) and the denominator m + dt sigma1 + dt^2 sigma0 of
+    ``_lugre_step``'s speed, fixed over a step's sub-steps."""
+    s0 = F_s / z_pre
+    s1 = np.sqrt(s0 * m)
+    return s0, s1, m + dt * s1 + dt * dt * s0
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _lugre_g(u, F_c, F_s, inv_vs):
+    """The LuGre seal's steady friction at speed u, g(u) = F_c + (F_s - F_c)
+    exp(-(u / v_s)^2) (F_c when v_s is 0), at least 1e-12 N."""
+    w = u * inv_vs
+    g = F_c + (F_s - F_c) * np.exp(-w * w) if inv_vs > 0.0 else F_c
+    return max(g, 1e-12)
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _lugre_step(F, u, z, g, s0, s1, den, F_c, F_s, inv_vs, m, dt):
     """One step of the output piston with a LuGre seal (Canudas de Wit,
     Olsson, Astrom and Lischinsky, IEEE TAC 40 (1995) 419): friction
     sigma0 z + sigma1 z', z' = u - sigma0 |u| z / g(u), g(u) = F_c + (F_s -
@@ -259,39 +278,81 @@ def _lugre_step(F, u, z, F_c, F_s, inv_vs, z_pre, m, dt):
     advanced semi-implicitly (bristle damping implicit), then the bristle
     relaxes exactly towards its steady deflection at the new speed (the
     bristle spring and damping are implicit in the speed: stable at any step).
-    Returns the new speed and bristle deflection."""
-    s0 = F_s / z_pre
-    s1 = np.sqrt(s0 * m)
-    w = u * inv_vs
-    g = F_c + (F_s - F_c) * np.exp(-w * w) if inv_vs > 0.0 else F_c
-    g = max(g, 1e-12)
+    ``g`` is g(u) (``_lugre_g``), s0, s1 and den from ``_lugre_constants``.
+    Returns the new speed, bristle deflection and g at the new speed."""
     k = s0 * abs(u) / g
     # friction s0 z + s1 z' with z' = u - k z; the bristle spring and damping
     # taken implicitly in u (z -> z + u_new dt), so a stiff bristle (short
     # presliding) stays stable at the step of the hydraulics
-    u_new = (m * u + dt * (F - s0 * z + s1 * k * z)) / (m + dt * s1 + dt * dt * s0)
-    w = u_new * inv_vs
-    g = F_c + (F_s - F_c) * np.exp(-w * w) if inv_vs > 0.0 else F_c
-    g = max(g, 1e-12)
+    u_new = (m * u + dt * (F - s0 * z + s1 * k * z)) / den
+    g = _lugre_g(u_new, F_c, F_s, inv_vs)
     if u_new != 0.0:
         zss = g / s0 * (1.0 if u_new > 0.0 else -1.0)
         z = zss + (z - zss) * np.exp(-s0 * abs(u_new) * dt / g)
-    return u_new, z
+    return u_new, z, g
+
+
+# Parameters of the stacks' drive: the amplifier and the Bouc-Wen loop.
+# With the voltage row and the step they fix the stack voltage and the
+# hysteresis h at every step, which the stacks' gain, creep, oil, pistons,
+# seals and load never feed back into.
+DRIVE = ("alpha", "beta", "gamma", "delta", "n_bw", "h0", "slew_rate", "amp_bandwidth", "hold_rate")
+DRIVE_COLS = [IDX[name] for name in DRIVE]
+DRIVE_BYTES = 2 ** 27   # drive buffers of one kernel call (a larger batch runs in slices)
 
 
 @numba.njit(cache=True, parallel=True, error_model="numpy", nogil=True)   # nogil: stages run in threads (sim/__init__.py)
-def _simulate(P, dts, t_in, V_in, t_out, v_stride):
+def _simulate(P, dts, t_in, V_in, t_out, v_stride, drivers, driver_of, kept):
+    """Candidate c shares the drive (stack voltage and hysteresis at each
+    step) of candidate ``drivers[driver_of[c]]``: the drivers integrate it
+    (the Bouc-Wen power is a third of a step), those of a drive shared
+    (``kept[g]`` >= 0) keep it in row ``kept[g]``, the others read it."""
     n_cand = P.shape[0]
     n_out = t_out.shape[0]
     out = np.empty((n_cand, 4, n_out))
     inv_dt = 1.0 / (t_in[1:] - t_in[:-1])
+    n_drv = drivers.shape[0]
+    n_steps = 0
+    for g in range(n_drv):
+        if kept[g] >= 0:
+            n_steps = max(n_steps, _n_steps(dts[drivers[g]], t_out))
+    vh = np.empty((max(kept.max() + 1, 1), 2, n_steps + 1))
+    for g in numba.prange(n_drv):
+        c = drivers[g]
+        mode = KEEP if kept[g] >= 0 else INTEGRATE
+        _simulate_one(P[c], dts[c], t_in, inv_dt, V_in[c * v_stride], t_out, vh[max(kept[g], 0)], mode, out[c])
     for c in numba.prange(n_cand):
-        _simulate_one(P[c], dts[c], t_in, inv_dt, V_in[c * v_stride], t_out, out[c])
+        g = driver_of[c]
+        if drivers[g] != c:
+            _simulate_one(P[c], dts[c], t_in, inv_dt, V_in[c * v_stride], t_out, vh[kept[g]], READ, out[c])
     return out
 
 
+READ, INTEGRATE, KEEP = 0, 1, 2     # how a candidate comes by its drive (_simulate_one)
+
+
 @numba.njit(cache=True, error_model="numpy")
-def _simulate_one(p, dt_max, t_in, inv_dt, v_row, t_out, rec):
+def _n_steps(dt_max, t_out):
+    """Steps of a run: ``_substeps`` of every sample interval."""
+    n = 0
+    for k in range(t_out.shape[0] - 1):
+        n += _substeps(t_out[k + 1] - t_out[k], dt_max)
+    return n
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _substeps(span, dt_max):
+    nsub = int(np.ceil(span / dt_max - 1e-9))
+    return nsub if nsub >= 1 else 1
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _simulate_one(p, dt_max, t_in, inv_dt, v_row, t_out, vh, mode, rec):
+    """One candidate. ``mode`` INTEGRATE: integrate the stack voltage and
+    hysteresis; KEEP: and keep them in vh (vh[0] voltage, vh[1] h; index 0
+    at rest, then a value a step); READ: read them from vh, kept by a
+    candidate of the same drive. The rest (creep, oil, pistons, seals,
+    load) is the candidate's own."""
     K, d33, al, be, ga, de, nb, h = p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]
     A_w, A_n, V0, bulk, m = p[8], p[9], p[10], p[11], p[12]
     rho, k_con, k_exp = p[13], p[14], p[15]
@@ -319,7 +380,12 @@ def _simulate_one(p, dt_max, t_in, inv_dt, v_row, t_out, rec):
     inv_tau = 1.0 / tau if tau > 0.0 else 0.0
     loss_fwd, loss_back = 0.5 * rho * (bern + k_con), 0.5 * rho * (bern + k_exp)
     j = 0
-    v, j = _interp(t_out[0], t_in, inv_dt, v_row, j)
+    if mode == READ:
+        v, h = vh[0, 0], vh[1, 0]
+    else:
+        v, j = _interp(t_out[0], t_in, inv_dt, v_row, j)
+        if mode == KEEP:
+            vh[0, 0], vh[1, 0] = v, h
     xf_lin = d33 * v + h
     creep = kappa * xf_lin
     xf_tot = xf_lin + creep
@@ -334,25 +400,30 @@ def _simulate_one(p, dt_max, t_in, inv_dt, v_row, t_out, rec):
     u = 0.0
     v_leak = 0.0
     sliding = False
+    s = 0
     t = t_out[0]
     rec[0, 0], rec[1, 0], rec[2, 0], rec[3, 0] = 0.0, pr, x, v
     for k in range(t_out.shape[0] - 1):
-        span = t_out[k + 1] - t
-        nsub = int(np.ceil(span / dt_max - 1e-9))
-        if nsub < 1:
-            nsub = 1
-        dt = span / nsub
+        nsub = _substeps(t_out[k + 1] - t, dt_max)
+        dt = (t_out[k + 1] - t) / nsub
+        amp = 1.0 - np.exp(-bw * dt) if bw > 0.0 else 0.0     # first-order amplifier, exact over the step
         for _ in range(nsub):
-            t += dt
-            v_cmd, j = _interp(t, t_in, inv_dt, v_row, j)
-            v_new = v_cmd
-            if bw > 0.0:                      # first-order amplifier (exact over the step)
-                v_new = v + (v_cmd - v) * (1.0 - np.exp(-bw * dt))
-            if slew > 0.0:
-                step = slew * dt
-                v_new = min(max(v_new, v - step), v + step)
-            h = hysteresis_step(h, v, v_new, dt, al, be, ga, de, nb, hold)
-            v = v_new
+            s += 1
+            if mode != READ:
+                t += dt
+                v_cmd, j = _interp(t, t_in, inv_dt, v_row, j)
+                v_new = v_cmd
+                if bw > 0.0:
+                    v_new = v + (v_cmd - v) * amp
+                if slew > 0.0:
+                    step = slew * dt
+                    v_new = min(max(v_new, v - step), v + step)
+                h = hysteresis_step(h, v, v_new, dt, al, be, ga, de, nb, hold)
+                v = v_new
+                if mode == KEEP:
+                    vh[0, s], vh[1, s] = v, h
+            else:
+                v, h = vh[0, s], vh[1, s]
             xf_lin = d33 * v + h
             if tau > 0.0:
                 creep += dt * (kappa * xf_lin - creep) * inv_tau
@@ -386,11 +457,13 @@ def _simulate_one(p, dt_max, t_in, inv_dt, v_row, t_out, rec):
                 F_s = Fn * brk_n
                 n_br = int(dt * np.sqrt(F_s / zpre * inv_m) / LUGRE_SUBSTEP) + 1
                 h_dt = dt / n_br
+                s0, s1, den = _lugre_constants(F_s, zpre, m, h_dt)
+                g_br = _lugre_g(u, Fn, F_s, inv_vs)
                 for _ in range(n_br):
                     p_s = a_oil * (A_w * x - A_n * y - v_eff)
                     p_n = p_s - u * abs(u) * (loss_fwd if u >= 0.0 else loss_back)
                     F = A_n * p_n - (F0 + kL * y) - cv * u
-                    u, z_br = _lugre_step(F, u, z_br, Fn, F_s, inv_vs, zpre, m, h_dt)
+                    u, z_br, g_br = _lugre_step(F, u, z_br, g_br, s0, s1, den, Fn, F_s, inv_vs, m, h_dt)
                     y += u * h_dt
                 continue
             # viscous damping implicit in the new speed (stable at any step,
@@ -413,6 +486,33 @@ def _simulate_one(p, dt_max, t_in, inv_dt, v_row, t_out, rec):
     return rec
 
 
+def _drive_groups(P, dts, v_stride, t_out):
+    """Slices of the candidates for the kernel, as (members, drivers,
+    driver_of, kept): candidates with the same drive parameters, step and
+    voltage row share one drive, integrated by their first member
+    (``drivers`` and ``driver_of`` index ``members``); ``kept`` numbers the
+    drives shared by more than one candidate (-1: not kept). A slice keeps
+    its drives within DRIVE_BYTES."""
+    if len(P) == 1:
+        yield slice(None), np.zeros(1, np.int64), np.zeros(1, np.int64), np.full(1, -1, np.int64)
+        return
+    key = np.column_stack([P[:, DRIVE_COLS], dts, np.arange(len(P)) if v_stride else np.zeros(len(P))])
+    _, group = np.unique(key, axis=0, return_inverse=True)
+    group = group.ravel()
+    shared = np.bincount(group) > 1
+    steps = (t_out[-1] - t_out[0]) / np.min(dts) + len(t_out)      # at least a run's steps
+    per_slice = max(1, int(DRIVE_BYTES // (16 * steps)))
+    # slices of consecutive groups holding at most per_slice kept drives
+    bounds = np.flatnonzero(np.diff((np.cumsum(shared) - shared) // per_slice)) + 1
+    for lo, hi in zip([0, *bounds], [*bounds, len(shared)]):
+        whole = lo == 0 and hi == len(shared)
+        members = slice(None) if whole else np.flatnonzero((group >= lo) & (group < hi))
+        driver_of = group[members] - lo
+        drivers = np.unique(driver_of, return_index=True)[1].astype(np.int64)
+        kept = np.where(shared[lo:hi], np.cumsum(shared[lo:hi]) - 1, -1).astype(np.int64)
+        yield members, drivers, driver_of.astype(np.int64), kept
+
+
 def simulate(model: PiezoHydraulicModel, t_in, v_in, t_out=None,
              step_factor: float = STEP_FACTOR) -> dict[str, np.ndarray]:
     """Simulate every candidate of ``model`` driven by voltage v_in(t_in).
@@ -430,8 +530,13 @@ def simulate(model: PiezoHydraulicModel, t_in, v_in, t_out=None,
     if V.shape[0] not in (1, P.shape[0]):
         raise ValueError("v_in must be shared or one row per candidate")
     t_out = t_in if t_out is None else np.ascontiguousarray(t_out, dtype=float)
-    with PARALLEL_LAUNCH:         # one parallel kernel at a time (sim/__init__.py)
-        out = _simulate(P, stable_step(P, step_factor), t_in, V, t_out, np.int64(V.shape[0] > 1))
+    dts = stable_step(P, step_factor)
+    v_stride = np.int64(V.shape[0] > 1)
+    out = np.empty((P.shape[0], len(CHANNELS), t_out.shape[0]))
+    for members, drivers, driver_of, kept in _drive_groups(P, dts, v_stride, t_out):
+        with PARALLEL_LAUNCH:     # one parallel kernel at a time (sim/__init__.py)
+            out[members] = _simulate(P[members], dts[members], t_in, V[members] if v_stride else V,
+                                     t_out, v_stride, drivers, driver_of, kept)
     bad = ~np.all(np.isfinite(out), axis=(1, 2))
     if bad.any():
         raise SimulationError(f"simulation diverged for candidates {np.flatnonzero(bad).tolist()}")

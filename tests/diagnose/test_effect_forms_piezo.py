@@ -56,13 +56,20 @@ def test_stribeck_friction_by_hand():
     assert ph._narrow_accel_stribeck(2.5, 0.0, 1.0, 2.0, 1 / 0.02, 1e3) == pytest.approx(25.0)  # (2.5 - 2) / 0.02
 
 
+def lugre_step(F, u, z, F_c, F_s, inv_vs, z_pre, m, dt):
+    """One LuGre step from the seal's forces, presliding, mass and step."""
+    s0, s1, den = ph._lugre_constants(F_s, z_pre, m, dt)
+    u, z, _ = ph._lugre_step(F, u, z, ph._lugre_g(u, F_c, F_s, inv_vs), s0, s1, den, F_c, F_s, inv_vs, m, dt)
+    return u, z
+
+
 def test_lugre_presliding_is_a_spring_of_breakaway_over_deflection():
     """Below the running friction a LuGre seal is a spring sigma0 = F_s /
     z_pre: a constant 0.5 N on a seal of F_c = 1 N, F_s = 2 N and 10 um
     presliding comes to rest with the bristle at 0.5 / 2e5 = 2.5 um."""
     u, z, y, dt = 0.0, 0.0, 0.0, 1e-5
     for _ in range(30000):
-        u, z = ph._lugre_step(0.5, u, z, 1.0, 2.0, 1e3, 1e-5, 0.02, dt)
+        u, z = lugre_step(0.5, u, z, 1.0, 2.0, 1e3, 1e-5, 0.02, dt)
         y += u * dt
     assert z == pytest.approx(2.5e-6, rel=1e-6)
     assert abs(u) < 1e-9
@@ -75,7 +82,7 @@ def test_lugre_steady_sliding_friction_is_the_stribeck_curve():
     u = 1 mm/s gives 1 + e^-1 = 1.367879 N (speed held by a huge mass)."""
     u, z = 1e-3, 0.0
     for _ in range(20000):
-        u, z = ph._lugre_step(0.0, u, z, 1.0, 2.0, 1e3, 1e-5, 1e12, 1e-5)
+        u, z = lugre_step(0.0, u, z, 1.0, 2.0, 1e3, 1e-5, 1e12, 1e-5)
     assert u == pytest.approx(1e-3, rel=1e-4)
     assert z * 2.0 / 1e-5 == pytest.approx(1.367879, rel=1e-4)
 

@@ -135,6 +135,39 @@ def test_batch_equals_single_runs():
         np.testing.assert_array_equal(batch[i], single)
 
 
+def test_candidates_of_one_drive_share_it_and_mixed_batches_equal_single_runs(monkeypatch):
+    """Candidates with the same amplifier, loop, step and voltage share one
+    integration of the drive; a batch mixing drives, gains, creep and steps,
+    cut into slices of one shared drive, or with a voltage row each, gives
+    each candidate's single run to the bit."""
+    from sizing.sim import piezohydraulic as ph
+
+    t, v = slow_ramp()
+    loop = dict(alpha=0.13, beta=7.5e4, gamma=-5.5e4, n_bw=1.14, slew_rate=400.0, amp_bandwidth=600.0)
+    cases = [dict(narrow_friction=0.5), dict(narrow_friction=2.0, d33=7.0e-7),
+             dict(creep_fraction=0.05, creep_time=0.1), dict(bulk_modulus=0.8e9),
+             dict(bulk_modulus=0.8e9, narrow_friction=1.0), dict(slew_rate=200.0),
+             dict(slew_rate=200.0, leak_conductance=1e-13), dict(delta=-5e-8, hold_rate=3.0)]
+    rows = [loop | c for c in cases]
+    batch = ph.PiezoHydraulicModel(**{k: np.array([r.get(k, getattr(prototype(**loop), k)) for r in rows])
+                                      for k in set().union(*rows) | set(prototype().__dict__)})
+    P = batch.matrix()
+    (_, drivers, driver_of, kept), = ph._drive_groups(P, ph.stable_step(P), 0, t)
+    # friction, gain and creep are not part of the drive; the stiffer oil's
+    # step, the slower slew and the delta term are: four drives, three shared
+    assert len(drivers) == 4 and np.count_nonzero(kept >= 0) == 3
+    assert len(set(driver_of[:3])) == 1 and driver_of[3] == driver_of[4] and driver_of[5] == driver_of[6]
+    monkeypatch.setattr(ph, "DRIVE_BYTES", 1)          # one shared drive a slice
+    assert len(list(ph._drive_groups(P, ph.stable_step(P), 0, t))) == 3
+    voltages = np.vstack([v * (1.0 + 0.1 * i) for i in range(len(rows))])
+    for drive in (v, voltages):
+        together = simulate(batch, t, drive)
+        for i, row in enumerate(rows):
+            alone = simulate(prototype(**row), t, drive if drive.ndim == 1 else drive[i])
+            for name in ph.CHANNELS:
+                np.testing.assert_array_equal(together[name][i], alone[name][0])
+
+
 def test_rejects_mismatched_input_rows():
     t, v = slow_ramp()
     with pytest.raises(ValueError, match="one row per candidate"):

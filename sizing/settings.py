@@ -24,6 +24,7 @@ REQUIRED_LIFE_H = 200.0         # h: the L10 life a DC screw and its thrust bear
 BEARING_STATIC_SAFETY = 2.0     # a DC thrust bearing's static rating C0 over its peak load, at least
 STRESS_SAFETY = 2.0             # a hydraulic actuator's structural member: allowable stress = its yield over this
 DEFAULT_MAX_MASS = 1e4          # kg: the geometric programs' mass ceiling when the envelope states none
+MIN_AREA_RATIO = 1.5            # a piezohydraulic design's area ratio R, at least (an amplifier, not a direct drive)
 
 # --- checks --------------------------------------------------------------------
 STEP_SETTLED = 0.98             # a DC step counts as reached at this fraction of its size
@@ -32,6 +33,7 @@ DIVERGED_FACTOR = 5.0           # a simulated pump speed above this x what the p
 # --- simulation budgets ---------------------------------------------------------
 DC_MAX_SIMULATED = 300          # DC designs from parts simulated per solve, before the rest is tried
 DC_MIN_SIMULATED = 24           # DC designs simulated at least (the closest to feasible when fewer pass)
+DC_REAL_SHARE = 1 / 3           # of the DC budget, first for designs whose parts all exist
 PUMP_FEASIBLE_SIMULATED = 24    # pump designs that pass the screen simulated, best first
 PUMP_CLOSEST_SIMULATED = 8      # pump designs that miss the screen simulated, closest first, at least
 PUMP_SIMULATED = 32             # pump designs simulated in all

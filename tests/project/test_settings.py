@@ -6,6 +6,7 @@ from __future__ import annotations
 import ast
 import functools
 import re
+from fractions import Fraction
 from pathlib import Path
 
 import pytest
@@ -32,7 +33,7 @@ def test_each_setting_has_its_row_with_its_value(name):
     row = next((line for line in DOC.splitlines() if line.startswith(f"| `{name}` |")), None)
     assert row is not None, f"docs/settings.md has no row for {name}"
     cells = [c.strip() for c in row.strip("|").split("|")]
-    assert float(cells[1]) == DECLARED[name], (name, cells[1], DECLARED[name])
+    assert float(Fraction(cells[1])) == DECLARED[name], (name, cells[1], DECLARED[name])
     assert all(cells[2:]), f"{name}: every column of its row is filled"
 
 

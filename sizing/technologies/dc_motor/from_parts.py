@@ -35,8 +35,8 @@ from ...engine.records import Simulation, frozen
 from .records import DCDesign, DCParts, DCPartsOutcome
 from ...settings import DC_MAX_SIMULATED as MAX_SIMULATED
 from ...settings import DC_MIN_SIMULATED as MIN_SIMULATED
+from ...settings import DC_REAL_SHARE as REAL_SHARE
 
-REAL_SHARE = 1 / 3      # of the simulation budget, first for designs whose parts all exist (dc_verdict)
 NOT_SIMULATED = "not simulated (feasible, later Pareto level)"   # statically feasible, beyond the simulation budget
 SIM_CHUNK = 64          # rows (design x load case) per batched simulation
 

@@ -53,7 +53,7 @@ import numpy as np
 
 from ...physics import geometry, structure
 from ...physics.stack import LARGE_SIGNAL_CAPACITANCE_FACTOR
-from ...settings import DEFAULT_MAX_MASS
+from ...settings import DEFAULT_MAX_MASS, MIN_AREA_RATIO
 
 CONSTRAINTS = ("stroke", "blocked_force", "pressure", "drive_current", "natural_frequency", "stiffness",
                "structure_out_of_range", "envelope_length", "envelope_diameter", "envelope_mass")
@@ -62,7 +62,6 @@ RULED_OUT_BY = {"structure_out_of_range": "structure_out_of_range", "envelope_le
                 "envelope_diameter": "envelope", "envelope_mass": "envelope"}
 RELAXED_MISS = 1.25     # the closest bounded design of infeasible parts: 25 % more miss (log) than the infimum
 NO_LIMIT = 1e6          # stands in for an envelope dimension that is not given (m)
-MIN_RATIO = 1.5
 FEASIBLE_SLACK = 1.0 + 1e-6
 SOLVER = "CLARABEL"
 ALUMINIUM_E = 68.9e9    # Pa, 6061-T6 wide piston (force_path.ALUMINIUM_E)
@@ -173,7 +172,7 @@ class Program:
 
     def _bounds(self) -> list:
         """What every design keeps, besides the requirements' terms."""
-        return ([self.v <= self.par["vmax"], MIN_RATIO / self.R <= 1] + self._structure_bounds() + self._gap_bounds()
+        return ([self.v <= self.par["vmax"], MIN_AREA_RATIO / self.R <= 1] + self._structure_bounds() + self._gap_bounds()
                 + self._drive_bounds()
                 + [self._compliance() / self.C <= 1, (self.par["F"] + self._seal_force()) / self.Fs <= 1,
                    self._reflected() / self.M <= 1])

@@ -5,6 +5,10 @@ Data flows one way: files -> SI objects (``sizing.io``) -> physics
 """
 from importlib.metadata import PackageNotFoundError, version
 
+from . import kernel_cache
+
+kernel_cache.configure()       # before any kernel is compiled or loaded (kernel_cache.py says why)
+
 try:
     __version__ = version("sizing")
 except PackageNotFoundError:  # running from a source tree without install

@@ -9,7 +9,7 @@ physics/bouc_wen.py: after an edit there, or a pull that changes only that
 file, they went on running the old loop from the cache. The kernels are
 therefore cached in a folder named by a digest of every file that holds
 one (``KERNEL_MODULES``, kept complete by tests/project/test_kernel_cache.py),
-under the user's cache directory; a NUMBA_CACHE_DIR the user set is left as
+in the project's cache folder; a NUMBA_CACHE_DIR the user set is left as
 it is. A new version of the sources compiles once, in about a minute.
 """
 from __future__ import annotations
@@ -17,7 +17,6 @@ from __future__ import annotations
 import hashlib
 import os
 import sys
-import tempfile
 from pathlib import Path
 
 PACKAGE = Path(__file__).resolve().parent
@@ -41,25 +40,19 @@ def sources_digest(package: Path = PACKAGE) -> str:
 
 
 def cache_folder(package: Path = PACKAGE) -> Path:
-    """The folder of this version's compiled kernels, under the user's
-    cache directory (XDG_CACHE_HOME, else ~/.cache)."""
-    try:
-        base = Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache")
-    except RuntimeError:                            # no home directory
-        base = Path(tempfile.gettempdir())
-    return base / "sizing" / "numba" / sources_digest(package)
+    """The folder of this version's compiled kernels, in the project's cache
+    folder (SIZING_CACHE_DIR, else ~/.cache/sizing, as ``disk_cache``)."""
+    root = os.environ.get("SIZING_CACHE_DIR") or Path.home() / ".cache" / "sizing"
+    return Path(root) / "numba" / sources_digest(package)
 
 
 def configure() -> None:
-    """Point numba's cache at ``cache_folder()`` unless the user chose one
-    (a folder that cannot be made falls back to the temporary directory)."""
+    """Point numba's cache at ``cache_folder()`` unless the user chose one.
+    numba makes the folder; where it cannot, it caches beside the sources
+    as it would have."""
     if os.environ.get("NUMBA_CACHE_DIR"):
         return
-    folder = cache_folder()
-    try:
-        folder.mkdir(parents=True, exist_ok=True)
-    except OSError:
-        folder = Path(tempfile.gettempdir()) / "sizing-numba" / folder.name
-    os.environ["NUMBA_CACHE_DIR"] = str(folder)     # read by numba when it is imported, here and in workers
+    folder = str(cache_folder())
+    os.environ["NUMBA_CACHE_DIR"] = folder          # read by numba when it is imported, here and in workers
     if "numba" in sys.modules:                      # imported already: its configuration is read
-        sys.modules["numba"].config.CACHE_DIR = str(folder)
+        sys.modules["numba"].config.CACHE_DIR = folder

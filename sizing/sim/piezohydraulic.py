@@ -22,7 +22,10 @@ its fastest mode (dt <= 0.2 / omega_max). A velocity that would change sign
 inside a step under friction is set to zero and the piston sticks, which is
 what keeps stick-slip free of chattering. The initial state is the static
 equilibrium under the load with zero friction; positions are reported from
-that rest point (docs/formats.md, "Test campaigns").
+that rest point (docs/formats.md, "Test campaigns"). Candidates of one
+batch with the same drive (amplifier, Bouc-Wen loop, step and voltage:
+``DRIVE``) share its integration, done once for them: a diagnosis screens
+a seal or a leak at dozens of points with the stacks unchanged.
 """
 from __future__ import annotations
 
@@ -299,6 +302,7 @@ def _lugre_step(F, u, z, g, s0, s1, den, F_c, F_s, inv_vs, m, dt):
 DRIVE = ("alpha", "beta", "gamma", "delta", "n_bw", "h0", "slew_rate", "amp_bandwidth", "hold_rate")
 DRIVE_COLS = [IDX[name] for name in DRIVE]
 DRIVE_BYTES = 2 ** 27   # drive buffers of one kernel call (a larger batch runs in slices)
+READ, INTEGRATE, KEEP = 0, 1, 2     # how a candidate comes by its drive (_simulate_one)
 
 
 @numba.njit(cache=True, parallel=True, error_model="numpy", nogil=True)   # nogil: stages run in threads (sim/__init__.py)
@@ -326,9 +330,6 @@ def _simulate(P, dts, t_in, V_in, t_out, v_stride, drivers, driver_of, kept):
         if drivers[g] != c:
             _simulate_one(P[c], dts[c], t_in, inv_dt, V_in[c * v_stride], t_out, vh[kept[g]], READ, out[c])
     return out
-
-
-READ, INTEGRATE, KEEP = 0, 1, 2     # how a candidate comes by its drive (_simulate_one)
 
 
 @numba.njit(cache=True, error_model="numpy")

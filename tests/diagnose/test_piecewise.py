@@ -135,6 +135,8 @@ def test_compiled_hat_fit_is_numpy_and_lapack_to_the_last_bit():
 
 
 def test_compiled_tridiagonal_solve_is_lapack_with_row_interchanges():
+    # the kernel's call into LAPACK passes each band where dgtsv reads it:
+    # random systems pivot, so a sub- and super-diagonal swapped would show
     from scipy.linalg import solve_banded
 
     from sizing.diagnose.piecewise import _gtsv
@@ -148,6 +150,17 @@ def test_compiled_tridiagonal_solve_is_lapack_with_row_interchanges():
         x = b.copy()
         assert _gtsv(dl.copy(), d.copy(), du.copy(), x) == 0
         assert x.tobytes() == solve_banded((1, 1), ab, b).tobytes()
+
+
+def test_a_singular_system_names_its_pivot():
+    from scipy.linalg import LinAlgError
+
+    from sizing.diagnose.piecewise import _gtsv
+
+    # the second row is zero: LAPACK's info names pivot 2
+    assert _gtsv(np.zeros(2), np.array([1.0, 0.0, 1.0]), np.zeros(2), np.ones(3)) == 2
+    with pytest.raises(LinAlgError):
+        hat_fit(np.ones(10), np.array([0.0, 0.3, 0.6, 9.0]))        # the hat at 0.3 covers no sample
 
 
 def test_hinge_by_projections_is_the_normal_equations_hinge():

@@ -190,3 +190,18 @@ def test_a_treated_log_is_answered_from_memory_as_a_copy():
     first[:] = 0.0                                    # the caller's copy, not the one kept
     again = treat_voltage(v.copy())
     assert np.array_equal(again, treat_voltage(v + 0.0)) and np.ptp(again) > 100.0
+
+
+def test_a_treated_log_is_kept_by_log_and_settings(monkeypatch):
+    from dataclasses import replace
+
+    from sizing.diagnose import inputs
+
+    v = _staircase()[0] + np.random.default_rng(8).normal(0, 0.03, len(T))
+    inputs._treated.cache_clear()
+    first = treat_voltage(v)
+    assert np.array_equal(treat_voltage(v), first) and inputs._treated.cache_info().hits == 1
+    treat_voltage(v + 1e-9)                           # another log: treated
+    monkeypatch.setattr(inputs, "DEFAULT", replace(inputs.DEFAULT, smooth_samples=9.0))
+    treat_voltage(v)                                  # other settings: treated again
+    assert inputs._treated.cache_info().misses == 3

@@ -10,7 +10,9 @@ it rests on, so that any change to the code that computes the values
 starts a new file. New values are written when the process exits (or at
 ``flush()``), each file whole by ``io.atomic.store_cache`` and then
 renamed; one that cannot be written only means the values are computed
-again next run, one that cannot be read is ignored.
+again next run, one that cannot be read is ignored. What only one process
+asks for twice (a treated voltage log, ``diagnose.inputs``) is kept in its
+memory by ``functools.lru_cache`` instead: it is not worth a file.
 """
 from __future__ import annotations
 

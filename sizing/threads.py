@@ -59,7 +59,11 @@ def core_to_spare() -> bool:
     only contends for the same cores: the seed's --fast solve with its
     stages side by side took 6 % more CPU and 5-10 % more wall time than one
     stage after another at a load average of 6 on two cores
-    (benchmarks/fast_solve_parts.py)."""
+    (benchmarks/fast_solve_parts.py).
+
+    Only the timing depends on the load: each stage reads only its inputs,
+    so a solve's results are the same to the bit whether its stages run
+    side by side or one after another (tests/engine/test_stages_alongside.py)."""
     cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
     if cores < 2:
         return False

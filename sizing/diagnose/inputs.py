@@ -25,7 +25,7 @@ rings at the edges of voltage steps. The treatment, stated in every report:
 """
 from __future__ import annotations
 
-from collections import OrderedDict
+from functools import lru_cache
 from math import comb
 
 import numpy as np
@@ -139,28 +139,25 @@ def smooth_piece(x: np.ndarray) -> np.ndarray:
     return gaussian_filter1d(ext, DEFAULT.smooth_samples, mode="nearest")[pad:pad + x.size]
 
 
-# treated voltages by (log, settings): the withheld-effect check treats each
-# campaign's clean voltages again in every case (its model, its synthesis),
-# a third of its treatments; a treatment costs 0.05-0.15 s of CPU
-_TREATED: OrderedDict = OrderedDict()
-_TREATED_KEPT = 32
-
-
 def treat_voltage(v: np.ndarray) -> np.ndarray:
     """The treated input (see the module docstring); a log treated before
     with the same settings is answered from memory (a copy)."""
     v = np.asarray(v, float)
     if len(v) < 8:
         return v.copy()
-    key = (v.shape, v.tobytes(), DEFAULT, piecewise.DEFAULT)
-    if key in _TREATED:
-        _TREATED.move_to_end(key)
-        return _TREATED[key].copy()
-    out = _treat(v)
-    _TREATED[key] = out.copy()
-    if len(_TREATED) > _TREATED_KEPT:
-        _TREATED.popitem(last=False)
-    return out
+    return _treated(v.shape, v.tobytes(), DEFAULT, piecewise.DEFAULT).copy()
+
+
+# Kept in memory for the process, where ``disk_cache`` keeps between runs the
+# floats that every run asks for again (a unit's text, a plate's solve): a
+# treated log is an array that only the withheld-effect check asks for again,
+# within its process (each campaign's clean voltages in every case, its model
+# and its synthesis: a third of its treatments, 0.05-0.15 s of CPU each).
+@lru_cache(maxsize=32)
+def _treated(shape: tuple, log: bytes, settings, fit_settings) -> np.ndarray:
+    """_treat of the log whose float64 samples are ``log``; the treatment
+    reads the settings as DEFAULT, and they are part of the key."""
+    return _treat(np.frombuffer(log).reshape(shape).copy())
 
 
 def _treat(v: np.ndarray) -> np.ndarray:

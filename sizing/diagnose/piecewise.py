@@ -36,12 +36,25 @@ noise and keeps the corners:
 """
 from __future__ import annotations
 
+import llvmlite.binding as llvm
 import numba
 import numpy as np
+from numba.extending import get_cython_function_address
 from scipy.linalg import LinAlgError
 from scipy.ndimage import convolve1d, gaussian_filter1d, maximum_filter1d, median_filter
 
 from .settings import DEFAULT
+
+# LAPACK's dgtsv, the routine scipy's solve_banded calls for one band either
+# side, called by its name from compiled code: a kernel that held a ctypes
+# function would hold its address, which numba does not cache (1 s to
+# compile again in every process), and one given it as an argument pays
+# 1.2 us a call to type it (a short fit takes 1.5 us), 15-20 % of the
+# voltage treatment
+_DGTSV_SYMBOL = "sizing_scipy_lapack_dgtsv"
+llvm.add_symbol(_DGTSV_SYMBOL, get_cython_function_address("scipy.linalg.cython_lapack", "dgtsv"))
+_INT, _DOUBLE = numba.types.CPointer(numba.int32), numba.types.CPointer(numba.float64)
+_DGTSV = numba.types.ExternalFunction(_DGTSV_SYMBOL, numba.void(_INT, _INT, *[_DOUBLE] * 4, _INT, _INT))
 
 
 def hat_fit(v: np.ndarray, knots: np.ndarray) -> np.ndarray:
@@ -59,9 +72,9 @@ def _hat_fit(v, knots):
     """hat_fit compiled (the knot search, refine, fits hundreds of short
     stretches a log, where numpy's call overheads cost more than the
     arithmetic): the normal equations summed sample by sample in order,
-    as np.bincount does, and solved as LAPACK's dgtsv (scipy's solve_banded
-    with one band either side) solves them, so the fit is the same to the
-    last bit as with numpy and scipy. (fit, LAPACK's info)."""
+    as np.bincount does, and solved by LAPACK's dgtsv as scipy's
+    solve_banded with one band either side solves them, so the fit is the
+    same to the last bit as with numpy and scipy. (fit, LAPACK's info)."""
     n, m = v.shape[0], knots.shape[0]
     j = np.empty(n, np.int64)
     w = np.empty(n)
@@ -92,38 +105,14 @@ def _hat_fit(v, knots):
 
 @numba.njit(cache=True)
 def _gtsv(dl, d, du, b):
-    """LAPACK's dgtsv for one right-hand side, step for step (Gaussian
-    elimination with partial pivoting, then the back solve): b becomes the
-    solution; returns LAPACK's info (0, or the singular pivot's number)."""
-    n = d.shape[0]
-    for i in range(n - 1):
-        if abs(d[i]) >= abs(dl[i]):                   # no row interchange
-            if d[i] == 0.0:
-                return i + 1
-            fact = dl[i] / d[i]
-            d[i + 1] = d[i + 1] - fact * du[i]
-            b[i + 1] = b[i + 1] - fact * b[i]
-            dl[i] = 0.0
-        else:                                         # interchange rows i and i + 1
-            fact = d[i] / dl[i]
-            d[i] = dl[i]
-            temp = d[i + 1]
-            d[i + 1] = du[i] - fact * temp
-            if i < n - 2:
-                dl[i] = du[i + 1]
-                du[i + 1] = -fact * dl[i]
-            du[i] = temp
-            temp = b[i]
-            b[i] = b[i + 1]
-            b[i + 1] = temp - fact * b[i + 1]
-    if d[n - 1] == 0.0:
-        return n
-    b[n - 1] = b[n - 1] / d[n - 1]
-    if n > 1:
-        b[n - 2] = (b[n - 2] - du[n - 2] * b[n - 1]) / d[n - 2]
-    for i in range(n - 3, -1, -1):
-        b[i] = (b[i] - du[i] * b[i + 1] - dl[i] * b[i + 2]) / d[i]
-    return 0
+    """LAPACK's dgtsv for one right-hand side (contiguous arrays, changed
+    in place as LAPACK changes them): b becomes the solution; returns
+    LAPACK's info (0, or the singular pivot's number)."""
+    ints = np.empty(4, np.int32)                      # n, nrhs, ldb, info
+    ints[0], ints[1], ints[2], ints[3] = d.shape[0], 1, d.shape[0], 0
+    _DGTSV(ints[0:].ctypes, ints[1:].ctypes, dl.ctypes, d.ctypes, du.ctypes, b.ctypes, ints[2:].ctypes,
+           ints[3:].ctypes)
+    return ints[3]
 
 
 def best_hinge(v: np.ndarray, i: int, s: int) -> int:

@@ -3,7 +3,7 @@
 A discrete PID at the controller rate (1.25 kHz in the seed) sets the motor
 current from the reference and the measured position; the current is held
 over each period and clipped at the current limit (conditional integration
-stops wind-up). The drive's bus voltage U adds the back-EMF ceiling
+stops wind-up: ``_integrate``). The drive's bus voltage U adds the back-EMF ceiling
 (docs/models.md, DC motor actuator): when the held current would need more than U
 (R i + k_e omega > U) the motor is voltage-driven for that period,
 i = (U - k_e omega) / R, which turns eq. 13 into the same linear form with
@@ -255,6 +255,31 @@ def _interp(x, xp, fp):
 
 
 @numba.njit(cache=True)
+def _integrate(integ, err, Ts, i_try, ki, i_max, to_limit):
+    """The integrator after a controller tick of error ``err`` and period
+    ``Ts``, ``i_try`` the command with the whole step e Ts taken: the
+    anti-wind-up at the current limit ``i_max``. Conditional integration
+    takes the whole step while the command stays inside the limit or the
+    error brings it back, else none; with ``to_limit`` a step that would
+    carry the command past the limit takes the part that brings it to the
+    limit instead of none. Two rules on purpose: conditional integration
+    stands for the built-in PID of a catalog actuator or a test rig, whose
+    rule neither the catalog nor rig.toml states (assumed: the common one;
+    the shipped campaigns were synthesised with it); the designs sized from
+    parts have the controller this tool specifies, and integrating to the
+    limit makes their loop, and every simulated margin, continuous in the
+    requirements (the whole-or-nothing rule jumps by ki e Ts where it
+    switches)."""
+    if abs(i_try) < i_max or i_try * err < 0.0:
+        return integ + err * Ts
+    if to_limit and ki != 0.0:
+        room = ((i_max if i_try > 0.0 else -i_max) - (i_try - ki * err * Ts)) / ki
+        if room * err > 0.0:
+            return integ + room
+    return integ
+
+
+@numba.njit(cache=True)
 def _simulate_one(p, t_ref, r_row, t_out, rec, heat):
     c1, c2, lead, rate, kp, ki, kd = p[0], p[1], p[2], p[3], p[4], p[5], p[6]
     d_meas, i_max, F0, kL, eta, kt, Fc = p[7], p[8], p[9], p[10], p[11], p[12], p[13]
@@ -316,15 +341,7 @@ def _simulate_one(p, t_ref, r_row, t_out, rec, heat):
         deriv = -(m - y_prev) / Ts if d_meas > 0.5 else (err - e_prev) / Ts
         prop = -m if p_meas > 0.5 else err
         i_try = kp * prop + ki * (integ + err * Ts) + kd * deriv
-        if abs(i_try) < i_max or i_try * err < 0.0:
-            integ += err * Ts
-        elif to_limit and ki != 0.0:
-            # the part of the step that brings the command to the limit:
-            # the integrator then depends continuously on the state (the
-            # whole-or-nothing rule jumps by ki e Ts where it switches)
-            room = ((i_max if i_try > 0.0 else -i_max) - (i_try - ki * err * Ts)) / ki
-            if room * err > 0.0:
-                integ += room
+        integ = _integrate(integ, err, Ts, i_try, ki, i_max, to_limit)
         i_new = kp * prop + ki * integ + kd * deriv
         i = min(max(i_new, -i_max), i_max)
         e_prev, y_prev = err, m

@@ -135,6 +135,8 @@ def test_compiled_hat_fit_is_numpy_and_lapack_to_the_last_bit():
 
 
 def test_compiled_tridiagonal_solve_is_lapack_with_row_interchanges():
+    # the kernel's call into LAPACK passes each band where dgtsv reads it:
+    # random systems pivot, so a sub- and super-diagonal swapped would show
     from scipy.linalg import solve_banded
 
     from sizing.diagnose.piecewise import _gtsv
@@ -148,6 +150,17 @@ def test_compiled_tridiagonal_solve_is_lapack_with_row_interchanges():
         x = b.copy()
         assert _gtsv(dl.copy(), d.copy(), du.copy(), x) == 0
         assert x.tobytes() == solve_banded((1, 1), ab, b).tobytes()
+
+
+def test_a_singular_system_names_its_pivot():
+    from scipy.linalg import LinAlgError
+
+    from sizing.diagnose.piecewise import _gtsv
+
+    # the second row is zero: LAPACK's info names pivot 2
+    assert _gtsv(np.zeros(2), np.array([1.0, 0.0, 1.0]), np.zeros(2), np.ones(3)) == 2
+    with pytest.raises(LinAlgError):
+        hat_fit(np.ones(10), np.array([0.0, 0.3, 0.6, 9.0]))        # the hat at 0.3 covers no sample
 
 
 def test_hinge_by_projections_is_the_normal_equations_hinge():
@@ -177,3 +190,18 @@ def test_a_treated_log_is_answered_from_memory_as_a_copy():
     first[:] = 0.0                                    # the caller's copy, not the one kept
     again = treat_voltage(v.copy())
     assert np.array_equal(again, treat_voltage(v + 0.0)) and np.ptp(again) > 100.0
+
+
+def test_a_treated_log_is_kept_by_log_and_settings(monkeypatch):
+    from dataclasses import replace
+
+    from sizing.diagnose import inputs
+
+    v = _staircase()[0] + np.random.default_rng(8).normal(0, 0.03, len(T))
+    inputs._treated.cache_clear()
+    first = treat_voltage(v)
+    assert np.array_equal(treat_voltage(v), first) and inputs._treated.cache_info().hits == 1
+    treat_voltage(v + 1e-9)                           # another log: treated
+    monkeypatch.setattr(inputs, "DEFAULT", replace(inputs.DEFAULT, smooth_samples=9.0))
+    treat_voltage(v)                                  # other settings: treated again
+    assert inputs._treated.cache_info().misses == 3

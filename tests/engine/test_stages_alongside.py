@@ -81,3 +81,43 @@ def test_one_core_has_none_to_spare(monkeypatch):
     from sizing import threads
     monkeypatch.setattr(threads.os, "sched_getaffinity", lambda pid: {0}, raising=False)
     assert threads.core_to_spare() is False
+
+
+def test_the_solve_gives_the_same_results_with_or_without_a_core_to_spare(monkeypatch):
+    """The real stages (the seed's requirements on one piezohydraulic
+    design's parts and three catalog DC actuators, simulated, ``fast``):
+    results.json and the traces are the same, field by field and to the
+    bit, whether the DC stage runs in a worker thread beside the others or
+    every stage in turn here; only the time taken depends on the load."""
+    import json
+    from dataclasses import replace
+
+    from sizing.engine.candidate import records
+    from sizing.io.requirements import load_requirements
+    from tests.conftest import ONE_DESIGN, STUDIES, subset_catalog
+
+    catalog = subset_catalog(**ONE_DESIGN, dc_actuators=3)
+    req, sha = load_requirements(STUDIES / "seed-requirements.toml")
+    ran_in = {}
+
+    def recorded(t):
+        def stage(*args):
+            ran_in[t.name] = threading.current_thread().name
+            return t.solve(*args)
+        return replace(t, solve=stage)
+    techs = tuple(recorded(t) for t in registry.technologies())
+    monkeypatch.setattr(solve_module, "technologies", lambda: techs)
+
+    def written(spare: bool) -> tuple[str, set]:
+        monkeypatch.setattr(solve_module, "core_to_spare", lambda: spare)
+        out = solve_module.solve(req, sha, catalog, fast=True)
+        results = dict(out.results, candidates=records(out.results["candidates"]), runtime_s=None)
+        designed = {c["technology"] for c in results["candidates"]}
+        return json.dumps([results, out.traces], sort_keys=True, default=lambda a: a.tolist()), designed
+
+    beside, designed = written(True)
+    assert all(ran_in[t.name].startswith("sizing-stage") == t.alongside for t in techs)
+    assert designed & {t.name for t in techs if t.alongside}         # a worker's stage gave designs
+    in_turn, _ = written(False)
+    assert set(ran_in.values()) == {"MainThread"}
+    assert beside == in_turn

@@ -4,6 +4,7 @@ step or none, makes the closed loop depend continuously on what it is
 asked; a servo step's time to 98 % then moves by small, same-sign steps
 with the stroke."""
 import numpy as np
+import pytest
 
 from sizing.sim.dc_motor import DCMotorModel, simulate
 from sizing.technologies.dc_motor import controller as ctl
@@ -37,3 +38,17 @@ def test_the_time_to_stroke_is_continuous_in_the_stroke_when_integrating_to_the_
     assert np.all(smooth > 0) and np.all(smooth < 5e-4)
     jumps = np.diff(_speeds(0.0)) / _speeds(0.0)[:-1]
     assert (jumps < 0).any() and np.abs(jumps).max() > 3e-3
+
+
+def test_the_two_anti_wind_up_rules_by_hand():
+    """ki 100 A/(m s), Ts 1 ms, limit 10 A: a command at 9.995 A before the
+    step, whose error 0.1 m adds ki e Ts = 0.01 A (10.005 A with it)."""
+    from sizing.sim.dc_motor import _integrate
+
+    before, err, Ts, ki = 9.995, 0.1, 1e-3, 100.0
+    i_try = before + ki * err * Ts
+    assert _integrate(0.0, err, Ts, i_try, ki, 10.0, False) == 0.0                    # past the limit: none
+    assert _integrate(0.0, err, Ts, i_try, ki, 10.0, True) == pytest.approx(5e-5)    # (10 - 9.995) / ki
+    assert _integrate(0.0, err, Ts, 9.5, ki, 10.0, True) == pytest.approx(1e-4)      # inside: the whole e Ts
+    assert _integrate(0.0, -err, Ts, 12.0, ki, 10.0, False) == pytest.approx(-1e-4)  # back towards it: whole
+    assert _integrate(0.0, err, Ts, 12.0, ki, 10.0, True) == 0.0                     # already past: none

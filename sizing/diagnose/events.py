@@ -121,7 +121,7 @@ def event_verdict(bench, baseline_holdout: float, settings: Settings = DEFAULT, 
                f"{base_ho:.2f} -> {after:.2f} x the noise, floor {floor_ho:.2f})",
                f"on the point-by-point measure it leaves {point:.4f} against the nominal's {baseline_holdout:.4f}: "
                f"which instant each slip takes is not predicted")
-    details = {"events": {"measure": "Wasserstein-2 distance of the position's sample-to-sample increments, "
+    details = {"explained_gap_energy": share, "events": {"measure": "Wasserstein-2 distance of the position's sample-to-sample increments, "
                                      "measured against simulated plus the run's white noise, in units of that noise",
                           "baseline_holdout": base_ho, "after_holdout": after, "floor_holdout": floor_ho,
                           "baseline_train": base_tr, "after_train": m.train(d), "floor_train": floor_tr,

@@ -44,6 +44,7 @@ class Settings:
     step_pairs: int = 2            # families screened as the second effect given the best single
     fd_step: float = 0.01          # forward-difference step of the Jacobian, unit coordinates
     start_spacing: float = 0.15    # the starts of an effect fitted from several: this far apart (unit coordinates, max norm)
+    event_grid: int = 10           # an effect judged on its events (events.py): screened at this many values per parameter
     # the campaign and its floors
     min_periods: float = 1.0       # a run lasts at least this x the longest effect time constant
     rest_half_width: int = 10      # samples either side that must be at rest too (the at-rest noise)

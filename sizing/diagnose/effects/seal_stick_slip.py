@@ -53,6 +53,8 @@ from .base import Effect, Param
 # training fit by less than 0.3 % on the campaigns measured, at twice the
 # Karnopp form's time per fit, so it keeps one start.
 RUGGED = {"fit_starts": 3, "screen_factor": 8}
+# judged on its events too when the point-by-point verdict names nothing (events.py)
+EVENTS = {"events": True}
 
 # The output seal's running friction, N, searched on a linear scale up to
 # 20 N; on a rig, from its stated running friction (``AddedFriction``).
@@ -102,7 +104,7 @@ class SealStickSlip(AddedFriction):
 
 
 KARNOPP = SealStickSlip(
-    form="karnopp", extra=RUGGED,
+    form="karnopp", extra={**RUGGED, **EVENTS},
     name="seal_stick_slip", technology="piezohydraulic",
     params=(Param("narrow_friction_N", *RUNNING_N, doc="running friction of the output seal"),
             Param("breakaway_ratio", 1.0, 4.0, doc="breakaway / running friction of both seals")),

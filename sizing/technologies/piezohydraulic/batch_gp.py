@@ -80,16 +80,21 @@ class _Posynomials:
         spread[np.arange(terms), layout.group] = a
         self.spread = spread.reshape(terms, m * n)
 
-    def evaluate(self, y: np.ndarray, b: np.ndarray):
+    def evaluate(self, y: np.ndarray, b: np.ndarray, value: bool = True):
+        """lse of each posynomial (None when not ``value``), its gradient and
+        each term's share of its posynomial. ``take`` and the in-place
+        operations compute what fancy indexing and fresh arrays would, bit for
+        bit, with fewer allocations: the backtracking calls this thousands of
+        times on a few rows."""
         L = self.layout
         e = y @ L.variable_powers.T + b                               # (rows, terms)
         top = np.maximum.reduceat(e, L.starts, axis=1)
-        w = np.exp(e - top[:, L.group])
+        e -= top.take(L.group, axis=1)
+        w = np.exp(e, out=e)
         total = w @ self.member
-        value = top + np.log(total)
-        w /= total[:, L.group]                                        # each term's share of its posynomial
+        w /= total.take(L.group, axis=1)                              # each term's share of its posynomial
         grad = (w @ self.spread).reshape(len(y), L.size, -1)          # (rows, m, n)
-        return value, grad, w
+        return (top + np.log(total) if value else None), grad, w
 
     def hessian(self, w: np.ndarray, grad: np.ndarray, weight: np.ndarray) -> np.ndarray:
         """sum_i weight_i (sum_k w_k a_k a_k^T - grad_i grad_i^T)."""
@@ -119,7 +124,7 @@ def solve(program: Program, log_parameters: np.ndarray, y0: np.ndarray,
     it = 0
     for it in range(1, max_iterations + 1):
         ya, sa, za, bo, bc = y[active], s[active], z[active], b_obj[active], b_con[active]
-        _, G0, w0 = obj.evaluate(ya, bo)
+        _, G0, w0 = obj.evaluate(ya, bo, value=False)
         g, J, w = con.evaluate(ya, bc)
         r_d = G0.sum(axis=1) + np.einsum("rm,rmn->rn", za, J)
         r_p = g + sa
@@ -159,7 +164,7 @@ def solve(program: Program, log_parameters: np.ndarray, y0: np.ndarray,
         y_new, s_new, z_new = ya + alpha[:, None] * dy, sa + alpha[:, None] * ds, za + alpha[:, None] * dz
         bad = np.arange(len(active))
         for _ in range(BACKTRACKS):      # damp the rows whose residual does not fall
-            _, G0n, _ = obj.evaluate(y_new[bad], bo[bad])
+            _, G0n, _ = obj.evaluate(y_new[bad], bo[bad], value=False)
             gn, Jn, _ = con.evaluate(y_new[bad], bc[bad])
             after = _residual(G0n.sum(axis=1) + np.einsum("rm,rmn->rn", z_new[bad], Jn), gn + s_new[bad],
                               s_new[bad] * z_new[bad] - target[bad, None])

@@ -195,10 +195,10 @@ def _backtrack(obj, con, start, step, new, alpha, offsets, target, before) -> np
 
 
 def _to_boundary(x: np.ndarray, dx: np.ndarray) -> np.ndarray:
-    """The largest step t with x + t dx >= 0, per row (inf when dx >= 0)."""
-    with np.errstate(divide="ignore"):
-        t = np.where(dx < 0, -x / np.where(dx < 0, dx, -1.0), np.inf)
-    return t.min(axis=1)
+    """The largest step t with x + t dx >= 0, per row (inf when dx >= 0).
+    Only negative dx divide (the others by -1, then dropped): no division by
+    zero to silence."""
+    return np.where(dx < 0, -x / np.where(dx < 0, dx, -1.0), np.inf).min(axis=1)
 
 
 def _residual(r_d, r_p, r_c) -> np.ndarray:

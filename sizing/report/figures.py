@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+import numpy as np
 import plotly.graph_objects as go
 from plotly.subplots import make_subplots
 
@@ -120,7 +121,10 @@ def traces_figure(results: dict, traces: list[dict]) -> go.Figure:
     for k, tr in enumerate(traces):
         color = palette[k % len(palette)]
         for i, case in enumerate(tr["cases"][:n]):
-            fig.add_trace(go.Scatter(x=case["t"], y=[v * 1e3 for v in case["position_m"]], mode="lines",
+            # arrays: plotly checks a list element by element, an array at once
+            # (and writes it as a typed array, the same doubles)
+            fig.add_trace(go.Scatter(x=np.asarray(case["t"], float), y=np.asarray(case["position_m"], float) * 1e3,
+                                     mode="lines",
                                      name=tr.get("name", tr["id"]) + ("" if tr["feasible"] else " (infeasible)"),
                                      legendgroup=tr["id"], showlegend=(i == 0),
                                      line=dict(color=color, dash=presentation(tr["technology"]).trace_dash)),

@@ -127,11 +127,17 @@ def mountable(catalog) -> list[np.ndarray]:
     by_mount: dict = {}
     for j, g in enumerate(gears):
         by_mount.setdefault(g.mount, []).append(j)
+    # most motors name the same mounts: each distinct set of mounts sorted once
+    # (the motors that share it share its read-only array)
+    fits: dict = {}
     out = []
     for m in catalog.motors.values():
-        keys = [None] + list(m.gear_mounts or ())
-        idx = sorted({j for k in keys for j in by_mount.get(k, ())}, key=lambda j: (gears[j].ratio, j))
-        out.append(np.asarray(idx, dtype=int))
+        keys = tuple(m.gear_mounts or ())
+        if keys not in fits:
+            idx = sorted({j for k in (None,) + keys for j in by_mount.get(k, ())}, key=lambda j: (gears[j].ratio, j))
+            fits[keys] = np.asarray(idx, dtype=int)
+            fits[keys].flags.writeable = False
+        out.append(fits[keys])
     return out
 
 

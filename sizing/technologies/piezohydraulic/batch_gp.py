@@ -80,16 +80,21 @@ class _Posynomials:
         spread[np.arange(terms), layout.group] = a
         self.spread = spread.reshape(terms, m * n)
 
-    def evaluate(self, y: np.ndarray, b: np.ndarray):
+    def evaluate(self, y: np.ndarray, b: np.ndarray, value: bool = True):
+        """lse of each posynomial (None when not ``value``), its gradient and
+        each term's share of its posynomial. ``take`` and the in-place
+        operations compute what fancy indexing and fresh arrays would, bit for
+        bit, with fewer allocations: the backtracking calls this thousands of
+        times on a few rows."""
         L = self.layout
         e = y @ L.variable_powers.T + b                               # (rows, terms)
         top = np.maximum.reduceat(e, L.starts, axis=1)
-        w = np.exp(e - top[:, L.group])
+        e -= top.take(L.group, axis=1)
+        w = np.exp(e, out=e)
         total = w @ self.member
-        value = top + np.log(total)
-        w /= total[:, L.group]                                        # each term's share of its posynomial
+        w /= total.take(L.group, axis=1)                              # each term's share of its posynomial
         grad = (w @ self.spread).reshape(len(y), L.size, -1)          # (rows, m, n)
-        return value, grad, w
+        return (top + np.log(total) if value else None), grad, w
 
     def hessian(self, w: np.ndarray, grad: np.ndarray, weight: np.ndarray) -> np.ndarray:
         """sum_i weight_i (sum_k w_k a_k a_k^T - grad_i grad_i^T)."""
@@ -119,7 +124,7 @@ def solve(program: Program, log_parameters: np.ndarray, y0: np.ndarray,
     it = 0
     for it in range(1, max_iterations + 1):
         ya, sa, za, bo, bc = y[active], s[active], z[active], b_obj[active], b_con[active]
-        _, G0, w0 = obj.evaluate(ya, bo)
+        _, G0, w0 = obj.evaluate(ya, bo, value=False)
         g, J, w = con.evaluate(ya, bc)
         r_d = G0.sum(axis=1) + np.einsum("rm,rmn->rn", za, J)
         r_p = g + sa
@@ -157,29 +162,43 @@ def solve(program: Program, log_parameters: np.ndarray, y0: np.ndarray,
         alpha = np.minimum(1.0, STEP_TO_BOUNDARY * np.minimum(_to_boundary(sa, ds), _to_boundary(za, dz)))
         before = _residual(r_d, r_p, sa * za - target[:, None])
         y_new, s_new, z_new = ya + alpha[:, None] * dy, sa + alpha[:, None] * ds, za + alpha[:, None] * dz
-        bad = np.arange(len(active))
-        for _ in range(BACKTRACKS):      # damp the rows whose residual does not fall
-            _, G0n, _ = obj.evaluate(y_new[bad], bo[bad])
-            gn, Jn, _ = con.evaluate(y_new[bad], bc[bad])
-            after = _residual(G0n.sum(axis=1) + np.einsum("rm,rmn->rn", z_new[bad], Jn), gn + s_new[bad],
-                              s_new[bad] * z_new[bad] - target[bad, None])
-            bad = bad[~(after <= (1 - SUFFICIENT * alpha[bad]) * before[bad])]
-            if not len(bad):
-                break
-            alpha[bad] *= BACKTRACK
-            y_new[bad] = ya[bad] + alpha[bad, None] * dy[bad]
-            s_new[bad] = sa[bad] + alpha[bad, None] * ds[bad]
-            z_new[bad] = za[bad] + alpha[bad, None] * dz[bad]
+        bad = _backtrack(obj, con, (ya, sa, za), (dy, ds, dz), (y_new, s_new, z_new), alpha, (bo, bc),
+                         target, before)
         stalled[active[bad]] += 1
         y[active], s[active], z[active] = y_new, s_new, z_new
     return Solution(y, z, certified, it, at)
 
 
+def _backtrack(obj, con, start, step, new, alpha, offsets, target, before) -> np.ndarray:
+    """Damp the steps of the rows whose residual does not fall, halving
+    ``alpha`` up to BACKTRACKS times; ``new`` (y, s, z) and ``alpha`` are
+    updated in place. Returns the rows still not falling (stalled). The
+    rows in doubt are carried as compact arrays, cut down after each trial:
+    the same figures as indexing the whole arrays each time, with fewer
+    copies."""
+    (ya, sa, za), (dy, ds, dz), (y_new, s_new, z_new), (bo, bc) = start, step, new, offsets
+    bad = np.arange(len(alpha))
+    yb, sb, zb, ab, tb, fb = y_new, s_new, z_new, alpha[bad], target, before
+    for _ in range(BACKTRACKS):
+        _, G0n, _ = obj.evaluate(yb, bo, value=False)
+        gn, Jn, _ = con.evaluate(yb, bc)
+        after = _residual(G0n.sum(axis=1) + np.einsum("rm,rmn->rn", zb, Jn), gn + sb, sb * zb - tb[:, None])
+        fails = ~(after <= (1 - SUFFICIENT * ab) * fb)
+        bad = bad[fails]
+        if not len(bad):
+            break
+        ya, sa, za, dy, ds, dz, bo, bc, tb, fb = (x[fails] for x in (ya, sa, za, dy, ds, dz, bo, bc, tb, fb))
+        ab = ab[fails] * BACKTRACK
+        yb, sb, zb = ya + ab[:, None] * dy, sa + ab[:, None] * ds, za + ab[:, None] * dz
+        alpha[bad], y_new[bad], s_new[bad], z_new[bad] = ab, yb, sb, zb
+    return bad
+
+
 def _to_boundary(x: np.ndarray, dx: np.ndarray) -> np.ndarray:
-    """The largest step t with x + t dx >= 0, per row (inf when dx >= 0)."""
-    with np.errstate(divide="ignore"):
-        t = np.where(dx < 0, -x / np.where(dx < 0, dx, -1.0), np.inf)
-    return t.min(axis=1)
+    """The largest step t with x + t dx >= 0, per row (inf when dx >= 0).
+    Only negative dx divide (the others by -1, then dropped): no division by
+    zero to silence."""
+    return np.where(dx < 0, -x / np.where(dx < 0, dx, -1.0), np.inf).min(axis=1)
 
 
 def _residual(r_d, r_p, r_c) -> np.ndarray:

@@ -2,13 +2,15 @@
 sources.
 
 numba marks a cached kernel stale when the file that defines it changes,
-not when a function it inlines from another file does (numba's
-documentation, "Notes on caching": "changes in other files are not
-detected"). The piezohydraulic and pump kernels inline the Bouc-Wen step of
+not when a function it inlines from another file does (numba's developer
+documentation, "Notes on Caching", limitations: cache invalidation "fails
+to recognize changes in symbols defined in another file"; numba pull
+requests 8396 and 9563, which would extend it, were not merged). Two of the simulators' kernels inline the Bouc-Wen step of
 physics/bouc_wen.py: after an edit there, or a pull that changes only that
 file, they went on running the old loop from the cache. The kernels are
 therefore cached in a folder named by a digest of every file that holds
-one (``KERNEL_MODULES``, kept complete by tests/project/test_kernel_cache.py),
+one and of its neighbours (``KERNEL_FILES``, kept complete by
+tests/project/test_kernel_cache.py),
 in the project's cache folder; a NUMBA_CACHE_DIR the user set is left as
 it is. A new version of the sources compiles once, in about a minute.
 """
@@ -20,22 +22,21 @@ import sys
 from pathlib import Path
 
 PACKAGE = Path(__file__).resolve().parent
-KERNEL_MODULES = (
-    "physics/bouc_wen.py",
-    "physics/prandtl_ishlinskii.py",
-    "sim/piezohydraulic.py",
-    "sim/pump.py",
-    "sim/dc_motor.py",
-    "diagnose/effects/backlash.py",
-    "diagnose/piecewise.py",
-)
+# the files whose kernels numba compiles, and every file beside them (a
+# kernel may inline a function of a neighbour)
+KERNEL_FILES = ("physics/*.py", "sim/*.py", "diagnose/piecewise.py", "diagnose/effects/*.py")
+
+
+def kernel_modules(package: Path = PACKAGE) -> list[Path]:
+    """The files of KERNEL_FILES, in a stable order."""
+    return sorted({path for pattern in KERNEL_FILES for path in package.glob(pattern)})
 
 
 def sources_digest(package: Path = PACKAGE) -> str:
-    """A digest of the kernel modules' bytes, in KERNEL_MODULES' order."""
+    """A digest of the kernel files' names and bytes."""
     digest = hashlib.sha256()
-    for module in KERNEL_MODULES:
-        digest.update(module.encode() + b"\0" + (package / module).read_bytes())
+    for path in kernel_modules(package):
+        digest.update(path.relative_to(package).as_posix().encode() + b"\0" + path.read_bytes())
     return digest.hexdigest()[:16]
 
 

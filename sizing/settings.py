@@ -24,7 +24,7 @@ REQUIRED_LIFE_H = 200.0         # h: the L10 life a DC screw and its thrust bear
 BEARING_STATIC_SAFETY = 2.0     # a DC thrust bearing's static rating C0 over its peak load, at least
 STRESS_SAFETY = 2.0             # a hydraulic actuator's structural member: allowable stress = its yield over this
 DEFAULT_MAX_MASS = 1e4          # kg: the geometric programs' mass ceiling when the envelope states none
-MIN_AREA_RATIO = 1.5            # a piezohydraulic design's area ratio R, at least (an amplifier, not a direct drive)
+MIN_AREA_RATIO = 1.5            # a stack-and-oil design's area ratio R, at least (an amplifier, not a direct drive)
 
 # --- checks --------------------------------------------------------------------
 STEP_SETTLED = 0.98             # a DC step counts as reached at this fraction of its size

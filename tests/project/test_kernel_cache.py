@@ -13,18 +13,20 @@ PACKAGE = Path(kernel_cache.__file__).parent
 
 
 def test_every_file_with_a_kernel_is_in_the_digest():
-    holding = {str(p.relative_to(PACKAGE)) for p in PACKAGE.rglob("*.py")
+    holding = {p for p in PACKAGE.rglob("*.py")
                if re.search(r"numba\.(njit|jit|vectorize|guvectorize)\b|^\s*@njit\b", p.read_text(), re.M)}
-    assert holding == set(kernel_cache.KERNEL_MODULES)
+    assert len(holding) >= 5
+    assert holding <= set(kernel_cache.kernel_modules())
 
 
 def test_an_edit_to_an_inlined_function_moves_the_cache(tmp_path):
     """The piezohydraulic kernel inlines physics/bouc_wen.py's step: a
     change there alone gives another cache folder."""
     copy = tmp_path / "sizing"
-    for module in kernel_cache.KERNEL_MODULES:
+    for path in kernel_cache.kernel_modules():
+        module = path.relative_to(PACKAGE)
         (copy / module).parent.mkdir(parents=True, exist_ok=True)
-        shutil.copy(PACKAGE / module, copy / module)
+        shutil.copy(path, copy / module)
     before = kernel_cache.sources_digest(copy)
     assert before == kernel_cache.sources_digest(PACKAGE)
     bouc_wen = copy / "physics" / "bouc_wen.py"

@@ -42,10 +42,13 @@ process, all 31 cases: median a campaign 3.8 s of CPU (4.3 s before).
 The DC campaign's --check with ``--workers 2`` (load 3.2-3.7): CPU 17.8 s
 -> 15.6 s, wall 26.6 s -> 21.5 s; one process: median 0.5 s a campaign.
 
-Time per campaign against 2a71a11 (before the screen's ranking was
-computed as read, sizing/diagnose/ranking.py, and a bench remembered its
-last simulations), on the shared 2-core machine; every diagnosis.json
-identical. A sample of the independent generator's campaigns
+Time per campaign against f1d1ec2 (the kernel of 2a71a11, before the
+screen's ranking was computed as read, sizing/diagnose/ranking.py, and a
+bench remembered its last simulations; its voltage treatment already
+solved its tridiagonal systems in LAPACK, which the code measured after
+did not yet), on the shared 2-core machine; every diagnosis.json
+identical. The first piezo campaign of each run of the older revision
+(c01) includes compiling its kernels, the medians do not. A sample of the independent generator's campaigns
 (``--folders``, one diagnosis each, both revisions in the same run, load
 2.6-4.2): piezo-a c01, c05, c09 (2 kHz runs) median 25.6 s -> 13.5 s of
 CPU (wall 33.5 s -> 13.4 s), piezo-c q01, q02, q05 (500 Hz) 22.0 s ->
@@ -62,7 +65,9 @@ the fits' least squares (a point and its Jacobian at a time, 4-5
 simulations a Jacobian), about 40 % the screen (most of it each screened
 point on the shortest training run), the rest the re-calibration, the
 voltage treatment, the noise floor and the verdict (profiles of c01 and
-q01). It stays above 10 s of CPU. With one numba thread and with two, c05
+q01). It stays above 10 s of CPU. The same changes on 8f8e172 (with
+the seal's event rule) against 8f8e172 alone: q05 20.7 s -> 11.4 s of
+CPU, p01 23.2 s -> 14.2 s, f04 6.8 s -> 4.8 s, diagnosis.json identical. With one numba thread and with two, c05
 took the same CPU (7.9-8.4 s) at a load of 3.8-4.5: no core to spare.
 """
 from __future__ import annotations

@@ -41,13 +41,34 @@ identical. The piezo campaign's --check with ``--workers 2`` (load
 process, all 31 cases: median a campaign 3.8 s of CPU (4.3 s before).
 The DC campaign's --check with ``--workers 2`` (load 3.2-3.7): CPU 17.8 s
 -> 15.6 s, wall 26.6 s -> 21.5 s; one process: median 0.5 s a campaign.
-A sample of the independent generator's campaigns (``--folders``, 4 runs
-each; load 3-5): piezo-a c01, c05, c09 (2 kHz runs) median 33.0 s -> 27.6 s
-of CPU, piezo-c q01, q02, q05 27.4 s -> 23.6 s, dc-c f01, f04, f07 1.3 s
--> 1.1 s; all nine 25.8 s -> 21.3 s. The piezo campaigns there integrate
-about 6 x the check's steps a candidate (three training runs against
-one), 93 % of their time in the simulator's kernel: they stay above 10 s
-a campaign.
+
+Time per campaign against f1d1ec2 (the kernel of 2a71a11, before the
+screen's ranking was computed as read, sizing/diagnose/ranking.py, and a
+bench remembered its last simulations; its voltage treatment already
+solved its tridiagonal systems in LAPACK, which the code measured after
+did not yet), on the shared 2-core machine; every diagnosis.json
+identical. The first piezo campaign of each run of the older revision
+(c01) includes compiling its kernels, the medians do not. A sample of the independent generator's campaigns
+(``--folders``, one diagnosis each, both revisions in the same run, load
+2.6-4.2): piezo-a c01, c05, c09 (2 kHz runs) median 25.6 s -> 13.5 s of
+CPU (wall 33.5 s -> 13.4 s), piezo-c q01, q02, q05 (500 Hz) 22.0 s ->
+12.0 s (33.5 s -> 14.3 s), dc-c f01, f04, f07 1.1 s -> 1.0 s; the six
+piezo campaigns 22.1 s -> 12.7 s (8.7 s to 14.6 s each), all nine 18.4 s
+-> 10.6 s. Run again at a load of 5.3-6.6: piezo 22.1 s -> 12.5 s of CPU,
+wall 42.7 s -> 24.9 s. The check's cases 0, 5, 12, 20 of the piezo
+campaign: median 3.6 s -> 3.3 s of CPU (its one training run leaves the
+ranking nothing to bound with); cases 0, 5, 10, 15 of the DC campaign
+0.62 s -> 0.48 s. A piezo campaign of the independent generator
+integrates about 6 x the check's steps a candidate (three training runs of
+2 000-12 000 samples against one of 2 000); of its CPU 35-45 % is now
+the fits' least squares (a point and its Jacobian at a time, 4-5
+simulations a Jacobian), about 40 % the screen (most of it each screened
+point on the shortest training run), the rest the re-calibration, the
+voltage treatment, the noise floor and the verdict (profiles of c01 and
+q01). It stays above 10 s of CPU. The same changes on 8f8e172 (with
+the seal's event rule) against 8f8e172 alone: q05 20.7 s -> 11.4 s of
+CPU, p01 23.2 s -> 14.2 s, f04 6.8 s -> 4.8 s, diagnosis.json identical. With one numba thread and with two, c05
+took the same CPU (7.9-8.4 s) at a load of 3.8-4.5: no core to spare.
 """
 from __future__ import annotations
 

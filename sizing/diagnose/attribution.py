@@ -32,6 +32,7 @@ from . import fitting
 from .effects import library
 from .floor import total_floor
 from .judge import block_energy, explained
+from .ranking import Ranking
 from .settings import DEFAULT, Settings
 
 
@@ -50,9 +51,10 @@ def screen(bench, effect, seed: int = 0, head=(), z_heads=(np.zeros(0),)) -> tup
     return z, float(np.sqrt(c)), zh
 
 
-def screen_ranked(bench, effect, seed: int = 0, head=(), z_heads=(np.zeros(0),), dense: bool = True) -> list:
+def screen_ranked(bench, effect, seed: int = 0, head=(), z_heads=(np.zeros(0),), dense: bool = True) -> Ranking:
     """Every screened point as (mean squared training score, unit point,
-    head start, regular), best first. ``regular``: one of the sizes and
+    head start, regular), best first (a ``ranking.Ranking``: read from its
+    start, computed as read). ``regular``: one of the sizes and
     the Latin hypercube every effect is screened with, from which its
     screening score comes (the families are ranked on equal draws); a
     rugged effect (``extra["screen_factor"]``) adds ``screen_factor`` - 1
@@ -72,12 +74,13 @@ def screen_ranked(bench, effect, seed: int = 0, head=(), z_heads=(np.zeros(0),),
     if extra > 0:
         Z = np.vstack([Z, _lhs(extra, d, seed + 1)])
     Z = np.clip(Z, 0.0, 1.0)
-    ranked = []
-    for zh in z_heads:
-        scores = fitting.cost(bench, list(head) + [effect], np.hstack([np.tile(zh, (len(Z), 1)), Z]), train)
-        ranked += [(float(c), z, zh, k < n_regular) for k, (c, z) in enumerate(zip(scores, Z))]
-    # stable: among equal scores the earlier head start and point, as before
-    return sorted(ranked, key=lambda r: r[0])
+    # stable: among equal scores the earlier head start and point, as before;
+    # computed as read, the candidates that cannot rank first not simulated
+    # on every run (ranking.py)
+    points = [(z, zh, k < n_regular) for zh in z_heads for k, z in enumerate(Z)]
+    heads = np.vstack([np.hstack([np.tile(zh, (len(Z), 1)), Z]) for zh in z_heads])
+    return Ranking(bench, list(head) + [effect], heads, train, points,
+                   wanted=int(effect.extra.get("fit_starts", 1)) if dense else 1)
 
 
 def fit_starts(ranked, n: int, spacing: float) -> list:

@@ -28,6 +28,7 @@ little from sample to sample (levels, where friction and saturation show).
 """
 from __future__ import annotations
 
+from collections import OrderedDict
 from dataclasses import dataclass
 
 import numpy as np
@@ -39,6 +40,8 @@ from .inputs import describe as describe_treatment
 from .inputs import hold_rate, noise_sigma, treat_voltage
 
 CHANNEL_UNITS = {"position_m": "m", "current_A": "A"}
+MEMO_BATCH = 8      # distinct models in a batch that Bench._remembered serves (a screen's are not kept)
+MEMO_KEPT = 128     # simulated runs it keeps (at most ~25 MB on a 12 000-sample campaign)
 
 def timing_band(measured: np.ndarray, simulated: np.ndarray) -> np.ndarray:
     """measured - the nearest value in [min, max] of ``simulated`` over each
@@ -99,6 +102,8 @@ class Bench:
         self.channels = ("position_m", "current_A") if has_current else ("position_m",)
         self._nominal = None
         self._weights = None
+        self._model_key = None               # the nominal model's parameters, as bytes (_remembered)
+        self._memo = OrderedDict()           # shared with the benches of other models (with_model)
 
     def measured(self, i: int) -> np.ndarray:
         """(n_ch, n) measured channels of run i."""
@@ -167,7 +172,7 @@ class Bench:
         other = object.__new__(Bench)
         other.__dict__.update(self.__dict__)
         other.model = model
-        other._nominal = None
+        other._nominal = other._model_key = None
         return other
 
     def _raw(self, model, run: PreparedRun) -> np.ndarray:
@@ -179,10 +184,15 @@ class Bench:
     def _simulate_unique(self, changes: dict, run: PreparedRun, n_cand: int) -> np.ndarray:
         """(n_cand, n_ch, n) for the model ``changes``, simulating each distinct
         set of model values once (a measurement effect's candidates share
-        theirs: only the re-calibrated parameters change the model)."""
+        theirs: only the re-calibrated parameters change the model), and
+        in a small batch (a fit's point or Jacobian) only those not
+        simulated lately (``_remembered``)."""
         keys = list(changes)
         M = np.column_stack([np.broadcast_to(np.asarray(changes[k], float), (n_cand,)) for k in keys])
         uniq, inverse = np.unique(M, axis=0, return_inverse=True)
+        if len(uniq) <= MEMO_BATCH:
+            Y = self._remembered(run, keys, uniq)
+            return Y[np.asarray(inverse).ravel()].copy()
         if len(uniq) < n_cand:
             Y = self._raw(self.model.replace(**{k: uniq[:, j].copy() for j, k in enumerate(keys)}), run)
             if Y.shape[0] != len(uniq):
@@ -193,10 +203,36 @@ class Bench:
             Y = np.broadcast_to(Y, (n_cand,) + Y.shape[1:]).copy()
         return Y
 
-    def nominal_channels(self) -> list[np.ndarray]:
-        """(n_ch, n) simulated channels of every run with the nominal model."""
+    def _remembered(self, run: PreparedRun, keys: list, rows: np.ndarray) -> np.ndarray:
+        """(n_rows, n_ch, n) for the model with ``keys`` set to each row of
+        ``rows``; the rows simulated lately on this run (the last
+        MEMO_KEPT) are not simulated again. The kernel simulates each
+        candidate on its own, so a remembered row is what simulating it
+        again gives, to the bit. A fit's Jacobian repeats its point's
+        simulation where a measurement effect's parameter moves (the model
+        stays), a re-calibration's model is the nominal's after it."""
+        if self._model_key is None:
+            self._model_key = self.model.matrix().tobytes()
+        found = [self._memo.get((id(run), self._model_key, tuple(keys), row.tobytes())) for row in rows]
+        missing = [k for k, y in enumerate(found) if y is None]
+        if missing:
+            Y = self._raw(self.model.replace(**{k: rows[missing, j].copy() for j, k in enumerate(keys)}), run)
+            for k, y in zip(missing, np.broadcast_to(Y, (len(missing),) + Y.shape[1:])):
+                found[k] = y
+                self._memo[(id(run), self._model_key, tuple(keys), rows[k].tobytes())] = y
+                if len(self._memo) > MEMO_KEPT:
+                    self._memo.popitem(last=False)
+        return np.stack(found)
+
+    def nominal_channels(self, runs=None) -> list:
+        """(n_ch, n) simulated channels of every run with the nominal model;
+        with ``runs``, of those runs only (the others' entries None until
+        asked for: a re-calibration's trial models need the training runs)."""
         if self._nominal is None:
-            self._nominal = [self._raw(self.model, r)[0] for r in self.runs]
+            self._nominal = [None] * len(self.runs)
+        for i in range(len(self.runs)) if runs is None else runs:
+            if self._nominal[i] is None:
+                self._nominal[i] = self._remembered(self.runs[i], [], np.zeros((1, 0)))[0]
         return self._nominal
 
     def nominal(self) -> list[np.ndarray]:

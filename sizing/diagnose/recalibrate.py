@@ -65,7 +65,7 @@ def recalibrate(bench, names: list[str]):
 
     def residual(x):
         b = bench.with_model(model_at(x))
-        return b.residuals([y[None] for y in (b.nominal_channels()[i] for i in b.train)], b.train)[0]
+        return b.residuals([y[None] for y in (b.nominal_channels(b.train)[i] for i in b.train)], b.train)[0]
 
     x0 = []
     for n in names:

@@ -28,9 +28,13 @@ from pathlib import Path
 KEEP = 16       # files kept in the folder (older versions of the code are dropped)
 
 
+def root() -> Path:
+    """The project's cache folder: SIZING_CACHE_DIR, else ~/.cache/sizing."""
+    return Path(os.environ.get("SIZING_CACHE_DIR") or Path.home() / ".cache" / "sizing")
+
+
 def folder() -> Path:
-    root = os.environ.get("SIZING_CACHE_DIR") or Path.home() / ".cache" / "sizing"
-    return Path(root) / "computed"
+    return root() / "computed"
 
 
 def memo(*packages: str):

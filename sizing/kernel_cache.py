@@ -21,6 +21,8 @@ import os
 import sys
 from pathlib import Path
 
+from . import disk_cache
+
 PACKAGE = Path(__file__).resolve().parent
 # the files whose kernels numba compiles, and every file beside them (a
 # kernel may inline a function of a neighbour)
@@ -42,9 +44,8 @@ def sources_digest(package: Path = PACKAGE) -> str:
 
 def cache_folder(package: Path = PACKAGE) -> Path:
     """The folder of this version's compiled kernels, in the project's cache
-    folder (SIZING_CACHE_DIR, else ~/.cache/sizing, as ``disk_cache``)."""
-    root = os.environ.get("SIZING_CACHE_DIR") or Path.home() / ".cache" / "sizing"
-    return Path(root) / "numba" / sources_digest(package)
+    folder (``disk_cache.root``)."""
+    return disk_cache.root() / "numba" / sources_digest(package)
 
 
 def configure() -> None:

@@ -196,7 +196,7 @@ def diagnose_runs(kind: str, rig, runs, holdout: list[str], recalibrate: list[st
         # response is a train of events (a seal's slips) is judged on them
         evented = events.event_verdict(bench, base_ho, settings, seed)
         if evented is not None:
-            named, effect, z, _ = evented
+            named, effect, z = evented
             verdict = named.replace(reasons=named.reasons + (f"on the point-by-point measure: {verdict.reason}",),
                                     details={**verdict.details, **named.details})
             best_sim = [y[0] for y in bench.simulate_channels([effect], z[None, :])]

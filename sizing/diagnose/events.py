@@ -92,8 +92,8 @@ def screen(bench, effect, measure: EventMeasure, n: int) -> tuple[np.ndarray, np
 
 
 def event_verdict(bench, baseline_holdout: float, settings: Settings = DEFAULT, seed: int = 0):
-    """(Verdict, fitted effect, unit point, simulated positions) naming an
-    event effect ``partial`` by the rule of the module docstring, or None."""
+    """(Verdict, fitted effect, unit point) naming an event effect
+    ``partial`` by the rule of the module docstring, or None."""
     effects = [e.for_rig(bench.rig, bench.model) for e in library(bench.kind)
                if e.extra.get("events") and e.applicable(bench.rig, bench.model)]
     if not effects:
@@ -129,4 +129,4 @@ def event_verdict(bench, baseline_holdout: float, settings: Settings = DEFAULT, 
                           "nrmse_holdout": point}}
     verdict = Verdict("partial", effect=effect.name, form=effect.form, shrink=float(1.0 - after / base_ho),
                       reasons=reasons, rule="explains_events", details=details)
-    return verdict, effect, z, sims
+    return verdict, effect, z

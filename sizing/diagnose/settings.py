@@ -50,7 +50,7 @@ class Settings:
     rest_half_width: int = 10      # samples either side that must be at rest too (the at-rest noise)
     # the logged voltage's treatment (inputs.py, piecewise.py)
     noise_clip: float = 4.0       # a voltage difference beyond this x its robust sigma is a step or a corner, not noise
-    smooth_samples: float = 4.0    # sigma of the zero-phase Gaussian low-pass, samples
+    smooth_samples: float = 4.0    # sigma of the zero-phase Gaussian low-pass that guides the reversals, samples
     reversal_sigmas: float = 6.0   # a reversal moves by more than this x the voltage noise
     jump_sigmas: float = 8.0       # a jump: a change this x the noise away from the local slope
     kink_scales: tuple = (2, 5, 12, 30)   # samples: scales of the kink detector

@@ -468,8 +468,8 @@ def _parse_file(path: Path, array_name: str, model: type[Entry]) -> list[tuple[s
 # Parsed catalog files are kept by content hash (and the schema's own hash):
 # a TOML file of a thousand datasheet entries parses in about a second and
 # the unit strings of the small files in a third of one; the validated
-# entries unpickle in a few hundredths. SIZING_CACHE_DIR moves the
-# cache; an unreadable or stale cache entry is parsed again.
+# entries unpickle in a few hundredths, in the project's cache folder
+# (disk_cache.root); an unreadable or stale cache entry is parsed again.
 # the models, their quantity parsing and the units: a change to any of them re-parses
 _SCHEMA_HASH = hashlib.sha256(b"".join(p.read_bytes() for p in (
     Path(__file__), Path(__file__).with_name("schema.py"), Path(__file__).parents[1] / "units.py"))).hexdigest()[:16]
@@ -479,8 +479,8 @@ CACHE_KEEP = 200               # cached files kept, the most recently written
 
 
 def _cache_path(digest: str) -> Path:
-    root = os.environ.get("SIZING_CACHE_DIR") or Path.home() / ".cache" / "sizing" / "catalog"
-    return Path(root) / f"{digest}-{_SCHEMA_HASH}.pickle"
+    from ..disk_cache import root        # the project's cache folder (SIZING_CACHE_DIR moves it)
+    return root() / "catalog" / f"{digest}-{_SCHEMA_HASH}.pickle"
 
 
 def _cached(digest: str):

@@ -17,7 +17,7 @@ def test_cache_returns_the_same_entries_and_follows_changes(tmp_path, monkeypatc
     for name in ("motors.toml", "drives.toml", "screws.toml"):
         shutil.copy(ROOT / "catalogs" / name, folder / name)
     first = catalog_io.load_catalog(folder)
-    assert len(list((tmp_path / "cache").glob("*.pickle"))) == 3
+    assert len(list((tmp_path / "cache" / "catalog").glob("*.pickle"))) == 3
     again = catalog_io.load_catalog(folder)
     assert again.motors == first.motors and again.origin == first.origin
     path = folder / "motors.toml"
@@ -31,4 +31,4 @@ def test_cache_is_bounded(tmp_path, monkeypatch):
     monkeypatch.setattr(catalog_io, "CACHE_KEEP", 2)
     for k in range(4):
         catalog_io._store(f"{k:064x}", [])
-    assert len(list((tmp_path / "cache").glob("*.pickle"))) == 2
+    assert len(list((tmp_path / "cache" / "catalog").glob("*.pickle"))) == 2

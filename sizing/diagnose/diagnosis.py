@@ -191,15 +191,12 @@ def diagnose_runs(kind: str, rig, runs, holdout: list[str], recalibrate: list[st
                   seed=seed, run_length=shortest, line=line, form_floor=form_ho, channels=channels,
                   training=training_gap(combined, floor, bench.train))
     verdict = judge.verdict(**inputs, settings=settings)
-    if verdict.effect is None and verdict.status in ("unexplained", "undetectable"):
-        # a gap no candidate removes point by point: an effect whose
-        # response is a train of events (a seal's slips) is judged on them
-        evented = events.event_verdict(bench, base_ho, settings, seed)
-        if evented is not None:
-            named, effect, z = evented
-            verdict = named.replace(reasons=named.reasons + (f"on the point-by-point measure: {verdict.reason}",),
-                                    details={**verdict.details, **named.details})
-            best_sim = [y[0] for y in bench.simulate_channels([effect], z[None, :])]
+    # a gap no candidate removes point by point: an effect whose response
+    # is a train of events (a seal's slips) is judged on them
+    verdict, evented = judge.revisit(verdict, (lambda: events.event_verdict(bench, base_ho, settings, seed),))
+    if evented is not None:
+        effect, z = evented
+        best_sim = [y[0] for y in bench.simulate_channels([effect], z[None, :])]
     verdict = stated_form_floor(verdict, campaign_form_floor(fits, floor, bench.train), settings)
     floors = {c: {k: v for k, v in ch.items() if k != "blocks"} for c, ch in channels.items()}
     named = verdict.status in ("explained", "partial") and best_sim is not None

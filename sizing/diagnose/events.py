@@ -16,7 +16,8 @@ its floor is the distance between two draws of that noise on the nominal.
 
 Only effects that declare it (``extra["events"]``: the Karnopp seal) are
 judged this way, and only when the point-by-point verdict names nothing
-while the holdout shows a gap (``unexplained``, ``undetectable``). The
+while the holdout shows a gap (``judge.REVISITED``: ``unexplained``,
+``undetectable``; ``judge.revisit``). The
 effect is screened on a grid (``event_grid`` points per parameter, geometric
 between positive bounds: a seal that only sticks, near the stated running
 friction, is reached) by its distance on the training runs, and named
@@ -92,8 +93,9 @@ def screen(bench, effect, measure: EventMeasure, n: int) -> tuple[np.ndarray, np
 
 
 def event_verdict(bench, baseline_holdout: float, settings: Settings = DEFAULT, seed: int = 0):
-    """(Verdict, fitted effect, unit point) naming an event effect
-    ``partial`` by the rule of the module docstring, or None."""
+    """(Verdict, (fitted effect, unit point)) naming an event effect
+    ``partial`` by the rule of the module docstring, or None (a measure of
+    ``judge.revisit``)."""
     effects = [e.for_rig(bench.rig, bench.model) for e in library(bench.kind)
                if e.extra.get("events") and e.applicable(bench.rig, bench.model)]
     if not effects:
@@ -129,4 +131,4 @@ def event_verdict(bench, baseline_holdout: float, settings: Settings = DEFAULT, 
                           "nrmse_holdout": point}}
     verdict = Verdict("partial", effect=effect.name, form=effect.form, shrink=float(1.0 - after / base_ho),
                       reasons=reasons, rule="explains_events", details=details)
-    return verdict, effect, z
+    return verdict, (effect, z)

@@ -584,6 +584,30 @@ RULES = (no_significant_gap, nothing_fitted, within_form_floor, no_gap_on_traini
          explains_part, explains_too_little)
 
 
+# Verdicts another measure of the same runs may revisit (``revisit``): the
+# holdout shows a gap, and no candidate removes it point by point.
+REVISITED = ("unexplained", "undetectable")
+
+
+def revisit(out: Verdict, measures) -> tuple[Verdict, object]:
+    """The verdict of the first of ``measures`` that names an effect, when
+    ``out`` names nothing and its status is REVISITED; else ``out``. Each
+    measure is called without arguments, only when reached (it simulates),
+    and gives (Verdict, payload) or None: events.event_verdict judges a
+    train of slips on the position's increments. Returns (verdict, the
+    deciding measure's payload or None); a revisited verdict keeps the
+    point-by-point reason and details beside its own."""
+    if out.effect is not None or out.status not in REVISITED:
+        return out, None
+    for measure in measures:
+        found = measure()
+        if found is not None:
+            named, payload = found
+            return named.replace(reasons=named.reasons + (f"on the point-by-point measure: {out.reason}",),
+                                 details={**out.details, **named.details}), payload
+    return out, None
+
+
 def verdict(baseline_holdout: float, floor_holdout: float, fits, baseline_blocks=None, seed: int = 0,
             run_length: float | None = None, line: dict | None = None, form_floor: float | None = None,
             channels: dict | None = None, settings: Settings = DEFAULT, training: dict | None = None) -> Verdict:

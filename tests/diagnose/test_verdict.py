@@ -86,3 +86,29 @@ def test_the_library_is_every_effect_modules_forms(kind):
         assert all(f.name == module.__name__.rsplit(".", 1)[-1] for f in module.FORMS)
         first = next(f for f in module.FORMS if f.technology == kind)
         assert next(f for f in library(kind) if f.name == first.name) is first     # the default form first
+
+
+def test_a_verdict_naming_nothing_is_revisited_by_the_first_measure_that_names():
+    """judge.revisit: a named verdict and one without a gap are kept and no
+    measure runs; an `unexplained` one takes the first measure that names
+    an effect, with the point-by-point reason and details beside its own."""
+    calls = []
+
+    def measure(found):
+        def run():
+            calls.append(found)
+            return found
+        return run
+
+    seal = Verdict("partial", "seal_stick_slip", "karnopp", 0.7, reasons=("slips",), details={"events": 1})
+    named = Verdict("explained", "leakage", "laminar", 0.9, reasons=("leak",))
+    no_gap = Verdict("no_significant_gap", reasons=("within the noise",))
+    for kept in (named, no_gap):
+        assert judge.revisit(kept, (measure((seal, "z")),)) == (kept, None) and not calls
+    unexplained = Verdict("unexplained", reasons=("nothing removes it",), details={"floors": 2})
+    out, payload = judge.revisit(unexplained, (measure(None), measure((seal, "z")), measure((named, "w"))))
+    assert payload == "z" and calls == [None, (seal, "z")]
+    assert out.effect == "seal_stick_slip" and out.status == "partial"
+    assert out.reasons == ("slips", "on the point-by-point measure: nothing removes it")
+    assert out.details == {"floors": 2, "events": 1}
+    assert judge.revisit(unexplained, (measure(None),)) == (unexplained, None)

@@ -18,20 +18,16 @@ exits 1 when a limit is exceeded.
 
 With ``--sizing``, only the piezohydraulic geometric programs of the seed
 (every combination the search keeps, every structure material and
-compensator) are timed, in CPU seconds, best of ``--repeat``: the sizer as
-the solve runs it (each program compiled once, re-solved by handing the
-cone data to Clarabel) against cvxpy's own re-solve of the same programs
-(``problem.solve(gp=True)`` every time), on every ``--stride``-th input, in
-the same run; the answers are compared too. Figures on this 2-core machine
-(CPU seconds, load 3-8): the 936 programs in 2.2-2.8 s (2.3-3.0 ms each,
-about seven tenths of it Clarabel's own 23 iterations over 72 exponential
-cones); every 8th program 0.29-0.32 s against 0.74-1.12 s through cvxpy,
-x2.5-3.5, the same feasibility and binding requirements, the points within
-4e-5. Before the re-solves called Clarabel directly (through cvxpy's
-``solve_via_data``, with the cones, settings and sparse checks rebuilt per
-solve) the seed's 1079 programs took 3.4-3.6 s against 2.8-3.1 s now, and
-the whole --fast solve (the engine, no files) 7.1 s against 5.9 s (same
-run, load 5-8); the answers are bitwise the same.
+compensator) are timed, in CPU seconds, best of ``--repeat``: Clarabel's
+direct re-solve of each compiled program (``convex.GPSizer``, the path the
+solve takes for the rows its batch sizer does not certify) against cvxpy's
+own re-solve of the same programs (``problem.solve(gp=True)`` every time,
+the reference), on every ``--stride``-th input, in the same run; the
+answers are compared too.
+
+The reference printed beside the default solve, ``EARLIER_DEFAULT_S``, is
+that solve's wall time before its flips' re-solves were narrowed. Today's
+figures are in docs/validation.md, "Simulator and solve speed".
 """
 from __future__ import annotations
 
@@ -53,8 +49,8 @@ from sizing.studies import compliance
 
 LIMIT_S = 20.0            # solve --fast
 LIMIT_DEFAULT_S = 20.0    # the default solve: flips and compliance
-# the default seed solve before its flips' re-solves sized only the variants
-# feasible today and read back what they had run (docs/validation.md)
+# the reference: the default seed solve's wall time, warm, before its flips'
+# re-solves sized only the variants asked about and read back what they had run
 EARLIER_DEFAULT_S = 70.0
 PUMP_LIMIT_S = 3.0
 ROOT = Path(__file__).resolve().parents[1]

@@ -4,7 +4,7 @@ Test voltages are mostly made of holds, ramps and steps (trapezoids,
 staircases of ramped steps). A symmetric low-pass rounds every corner of
 such a signal: a 4-sample Gaussian moves a 1.5 V/sample ramp start by some
 2 V for ten samples, and the model carries that input error into a gap that
-no effect explains (on the cross-form staircases it was 2.5-4.6 x the
+no effect explains (on the cross-form staircases it is 2.5-4.6 x the
 output error of the white voltage noise alone). When the log *is*
 piecewise linear to within its noise, fitting it as such removes the
 noise and keeps the corners:

@@ -104,7 +104,7 @@ class Bench:
         self._weights = None
         self._model_key = None               # the nominal model's parameters, as bytes (_remembered)
         self._memo = OrderedDict()           # shared with the benches of other models (with_model)
-        self._drives = OrderedDict()         # the piezo kernel's drives of these runs (simulate_runs), shared too
+        self._drives = ph_sim.DriveMemory()  # the piezo kernel's drives of these runs (simulate_runs), shared too
         self._named = {}                     # the arrays _drive_key named
 
     def measured(self, i: int) -> np.ndarray:

@@ -42,12 +42,14 @@ lanes against 30-37 ns alone (benchmarks/diagnose_speed.py).
 """
 from __future__ import annotations
 
+from collections import OrderedDict
 from dataclasses import dataclass
 
 import numba
 import numpy as np
 
 from ..errors import SimulationError
+from ..threads import core_to_spare
 from . import PARALLEL_LAUNCH
 from .params import StackParameters
 from ..physics.bouc_wen import hysteresis_step
@@ -708,31 +710,67 @@ def _lanes(P, tasks: np.ndarray) -> list[np.ndarray]:
     (``_simulate_lanes``). A task that reads its drive and whose step is
     short takes a lane: at most LANES a group, groups of about equal size,
     and one group a thread of numba's (so its threads share the work) where
-    that leaves at least two tasks a group. The others run alone: a step
-    that integrates the drive (a power a step), sub-steps a LuGre seal (two
-    exponentials a sub-step) or follows entrained air (a power) fills the
-    processor's window that the lanes overlap, and took 10-15 % longer in
-    lanes than alone."""
+    that leaves at least two tasks a group, or one when a core is free
+    (``threads.core_to_spare``: the wall time then counts, not the CPU a
+    lane saves). The others run alone: a step that integrates the drive (a
+    power a step), sub-steps a LuGre seal (two exponentials a sub-step) or
+    follows entrained air (a power) fills the processor's window that the
+    lanes overlap, and took 10-15 % longer in lanes than alone."""
     light = (tasks[:, 2] == READ) & np.all(P[tasks[:, 0]][:, LANE_FREE] == 0.0, axis=1)
     alone = [tasks[k:k + 1] for k in np.flatnonzero(~light)]
     tasks = tasks[light]
     if not len(tasks):
         return alone
-    n = max(-(-len(tasks) // LANES), min(numba.get_num_threads(), len(tasks) // 2), 1)
+    fewest = 1 if core_to_spare() else 2
+    n = max(-(-len(tasks) // LANES), min(numba.get_num_threads(), len(tasks) // fewest), 1)
     return np.array_split(tasks, n) + alone
 
 
-DRIVES_KEPT = 16        # drives a caller's ``drives`` memory keeps (~2 MB each on a 12 000-sample run)
-DRIVES_REMEMBERED = 8   # drives of a kernel call that go into it (a fit's batches; not a screen's)
+DRIVES_KEPT = 16        # drives a DriveMemory keeps (~2 MB each on a 12 000-sample run)
+DRIVES_SEEN = 4096      # drives it knows it met once
+DRIVES_REMEMBERED = 8   # drives of a kernel call that may go into it (a fit's batches; not a screen's)
+
+
+class DriveMemory:
+    """Drives (stack voltage and hysteresis at each step: ``_launch``) of a
+    caller's runs, kept between kernel calls: a drive met a second time in
+    a call with few drives is kept, and read in later calls instead of
+    integrated again. Once only, it is not kept: a fit of the amplifier or
+    the loop meets each of its drives once, the fits of a seal or a leak
+    meet the nominal's again and again."""
+
+    def __init__(self):
+        self.kept = OrderedDict()       # key -> (2, steps + 1) drive, the last used last
+        self.seen = OrderedDict()       # key -> None: met once
+
+    def get(self, key):
+        drive = self.kept.get(key)
+        if drive is not None:
+            self.kept.move_to_end(key)
+        return drive
+
+    def met_before(self, key) -> bool:
+        """Whether ``key`` was met before; it is now."""
+        if key in self.seen:
+            return True
+        self.seen[key] = None
+        if len(self.seen) > DRIVES_SEEN:
+            self.seen.popitem(last=False)
+        return False
+
+    def keep(self, key, drive) -> None:
+        self.kept[key] = drive
+        if len(self.kept) > DRIVES_KEPT:
+            self.kept.popitem(last=False)
 
 
 def _launch(P, dts, runs, parts, keys=None, drives=None) -> list[np.ndarray]:
     """One kernel call: (n_cand, 4, n_out) of each of ``runs`` ((t_in, V,
     t_out)) for every candidate of P; ``parts``: (drivers, driver_of,
-    kept) of each run (``_drive_groups``, one slice). ``drives``: a dict
-    the caller keeps (see ``simulate_runs``), of the drives integrated
-    before, ``keys`` naming each run in it: a drive found there is read,
-    and the drives of a call with few of them are kept into it."""
+    kept) of each run (``_drive_groups``, one slice). ``drives``: the
+    caller's DriveMemory (see ``simulate_runs``), ``keys`` naming each run
+    in it: a drive found there is read, and a drive met before in a call
+    with few of them is kept into it."""
     in_at = np.cumsum([0] + [len(t) for t, _, _ in runs]).astype(np.int64)
     out_at = np.cumsum([0] + [len(t) for _, _, t in runs]).astype(np.int64)
     V = np.ascontiguousarray(np.concatenate([v for _, v, _ in runs], axis=1))
@@ -750,13 +788,12 @@ def _launch(P, dts, runs, parts, keys=None, drives=None) -> list[np.ndarray]:
             known = drives.get(key) if drives is not None else None
             members = driver_of == g
             if known is not None:
-                drives.move_to_end(key)
                 given.append((rows, known))
                 mode[members], row[members] = READ, rows
                 driving[members] = True             # read from the start: with the drives
-            elif remember or kept[g] >= 0:
+            elif (again := remember and drives.met_before(key)) or kept[g] >= 0:
                 mode[c], row[members] = KEEP, rows
-                if remember:
+                if again:
                     new.append((rows, key, _n_steps(dts[c], runs[r][2])))
             else:
                 continue
@@ -778,9 +815,7 @@ def _launch(P, dts, runs, parts, keys=None, drives=None) -> list[np.ndarray]:
                         np.ascontiguousarray(tasks[:, :2]), starts, np.int64(len(first)),
                         np.ascontiguousarray(tasks[:, 2]), np.ascontiguousarray(tasks[:, 3]))
     for k, key, steps in new:
-        drives[key] = vh[k, :, :steps + 1].copy()
-        if len(drives) > DRIVES_KEPT:
-            drives.popitem(last=False)
+        drives.keep(key, vh[k, :, :steps + 1].copy())
     return [out[:, :, a:b] for a, b in zip(out_at[:-1], out_at[1:])]
 
 
@@ -791,14 +826,14 @@ def simulate_runs(model: PiezoHydraulicModel, runs, step_factor: float = STEP_FA
     the drives allow (the runs' steps advance together: ``_simulate_lanes``).
     Returns a dict of channels for each run.
 
-    ``drives`` (an OrderedDict, with ``keys``: a hashable name of each run)
+    ``drives`` (a DriveMemory, with ``keys``: a hashable name of each run)
     remembers the drives (stack voltage and hysteresis at each step, which
-    depend on the drive parameters DRIVE, the step and the run only) of
-    calls with few of them, DRIVES_KEPT at most, and reads them in later
-    calls instead of integrating them again: the caller promises that a
-    key always names the same times and voltage (a diagnosis's bench, whose
-    runs do not change). A drive read is the one integrating it gives, to
-    the bit."""
+    depend on the drive parameters DRIVE, the step and the run only) met
+    again in calls with few of them, DRIVES_KEPT at most, and reads them in
+    later calls instead of integrating them again: the caller promises that
+    a key always names the same times and voltage (a diagnosis's bench,
+    whose runs do not change). A drive read is the one integrating it
+    gives, to the bit."""
     P = model.matrix()
     dts = stable_step(P, step_factor)
     prepared = []

@@ -205,29 +205,30 @@ def test_lanes_and_runs_together_equal_single_runs():
 
 def test_a_remembered_drive_gives_the_run_it_was_kept_from():
     """A caller's memory of drives (``simulate_runs(drives=...)``): a small
-    call keeps its drives, a later call reads them instead of integrating,
-    and gives the same figures to the bit; it keeps DRIVES_KEPT at most."""
-    from collections import OrderedDict
-
+    call meeting its drives a second time keeps them, a later call reads
+    them instead of integrating, and each gives the same figures to the
+    bit; it keeps DRIVES_KEPT at most."""
     from sizing.sim import piezohydraulic as ph
 
     rows, batch = _mixed_batch(4)
     t, v = slow_ramp()
-    drives = OrderedDict()
-    first = ph.simulate_runs(batch, [(t, v, None)], drives=drives, keys=["ramp"])[0]
-    assert 0 < len(drives) <= 4
-    kept = dict(drives)
-    again = ph.simulate_runs(batch, [(t, v, None)], drives=drives, keys=["ramp"])[0]
-    assert dict(drives).keys() == kept.keys()                  # read, not integrated again
+    drives = ph.DriveMemory()
+    outs = [ph.simulate_runs(batch, [(t, v, None)], drives=drives, keys=["ramp"])[0]]
+    assert not drives.kept and drives.seen                     # met once: not kept
+    outs.append(ph.simulate_runs(batch, [(t, v, None)], drives=drives, keys=["ramp"])[0])
+    kept = dict(drives.kept)
+    assert 0 < len(kept) <= 4
+    outs.append(ph.simulate_runs(batch, [(t, v, None)], drives=drives, keys=["ramp"])[0])
+    assert all(drives.kept[k] is kept[k] for k in kept)        # read, not integrated again
     for i, row in enumerate(rows):
         alone = simulate(prototype(**row), t, v)
-        for name in ph.CHANNELS:
-            np.testing.assert_array_equal(first[name][i], alone[name][0])
-            np.testing.assert_array_equal(again[name][i], alone[name][0])
+        for out in outs:
+            for name in ph.CHANNELS:
+                np.testing.assert_array_equal(out[name][i], alone[name][0])
     for k in range(ph.DRIVES_KEPT + 2):
-        ph.simulate_runs(prototype(delta=-1e-9 * (k + 1)), [(t, v, None)], drives=drives,
-                         keys=["ramp"])
-    assert len(drives) == ph.DRIVES_KEPT
+        for _ in range(2):
+            ph.simulate_runs(prototype(delta=-1e-9 * (k + 1)), [(t, v, None)], drives=drives, keys=["ramp"])
+    assert len(drives.kept) == ph.DRIVES_KEPT
 
 
 def test_rejects_mismatched_input_rows():

@@ -192,7 +192,7 @@ class Bench:
 
     def _raw_runs(self, model, runs: list) -> list[np.ndarray]:
         """``_raw`` of each of ``runs``; a piezo model's runs in one kernel
-        call, whose lanes advance them together (sim/piezohydraulic.py)."""
+        call, whose lanes advance them together (``ph_sim.simulate_runs``)."""
         if self.kind == "piezohydraulic":
             outs = ph_sim.simulate_runs(model, [(run.t, run.u, run.t) for run in runs], drives=self._drives,
                                         keys=[self._drive_key(run) for run in runs])

@@ -727,7 +727,7 @@ def _lanes(P, tasks: np.ndarray) -> list[np.ndarray]:
 
 
 DRIVES_KEPT = 16        # drives a DriveMemory keeps (~2 MB each on a 12 000-sample run)
-DRIVES_SEEN = 4096      # drives it knows it met once
+DRIVES_MET = 4096      # drives it knows it met once (their keys only)
 DRIVES_REMEMBERED = 8   # drives of a kernel call that may go into it (a fit's batches; not a screen's)
 
 
@@ -741,7 +741,7 @@ class DriveMemory:
 
     def __init__(self):
         self.kept = OrderedDict()       # key -> (2, steps + 1) drive, the last used last
-        self.seen = OrderedDict()       # key -> None: met once
+        self.met = OrderedDict()       # key -> None: met once
 
     def get(self, key):
         drive = self.kept.get(key)
@@ -751,11 +751,11 @@ class DriveMemory:
 
     def met_before(self, key) -> bool:
         """Whether ``key`` was met before; it is now."""
-        if key in self.seen:
+        if key in self.met:
             return True
-        self.seen[key] = None
-        if len(self.seen) > DRIVES_SEEN:
-            self.seen.popitem(last=False)
+        self.met[key] = None
+        if len(self.met) > DRIVES_MET:
+            self.met.popitem(last=False)
         return False
 
     def keep(self, key, drive) -> None:

@@ -214,7 +214,7 @@ def test_a_remembered_drive_gives_the_run_it_was_kept_from():
     t, v = slow_ramp()
     drives = ph.DriveMemory()
     outs = [ph.simulate_runs(batch, [(t, v, None)], drives=drives, keys=["ramp"])[0]]
-    assert not drives.kept and drives.seen                     # met once: not kept
+    assert not drives.kept and drives.met                     # met once: not kept
     outs.append(ph.simulate_runs(batch, [(t, v, None)], drives=drives, keys=["ramp"])[0])
     kept = dict(drives.kept)
     assert 0 < len(kept) <= 4

@@ -20,55 +20,33 @@ for example a sample of the independent generator's campaigns.
                                         [--reference REV] [--json FILE]
     python benchmarks/diagnose_speed.py --folders DIR [DIR ...] [--reference REV] [--json FILE]
 
-Figures recorded before the simulators' idle threads were made to sleep
-(sizing/sim/__init__.py): the piezo campaign's --check took 442 s on a
-busy 2-core machine, and a median of 106 s a campaign (DC 31 s) while the
-independent sets were scored. Measured on the same busy machine (load 6-9
-on 2 cores), the 31 cases of the piezo campaign's check one after the
-other, the old code then this: CPU 188 s -> 111 s (median a campaign 6.3 s
--> 3.7 s), summed wall 607 s -> 369 s (median 16.7 s -> 11.4 s); every
-case's diagnosis.json identical (the seconds aside). Three cases of the
-DC campaign's check (0, 5, 10) against 14828dd in the same run: CPU 9.7 s
--> 2.7 s (median a campaign 3.0 s -> 0.9 s), verdicts unchanged. ``--workers 2``
-(one process a core) was checked for identical verdicts
-(tests/diagnose/test_check.py).
+Today's figure, against the code before the piezo kernel's lanes (main at
+6092192, whose simulator and bench are e9a0f29's: each candidate alone,
+a run a call, a drive integrated in every call), both revisions in the
+same run: every campaign of the independent generator's six sets, one
+diagnosis each (``--folders gen/{piezo,dc}-{a,b,c}/*/ --reference main``,
+2026-11-27 20:27-20:44 UTC, the shared 2-core machine at a load average
+of 3.6-5.2). Median a campaign,
+old -> new: the 33 piezo campaigns 11.69 s -> 10.54 s of CPU (wall 12.64 s
+-> 11.43 s; set A, logged at 2 kHz, 14.49 -> 12.33 s of CPU; B 11.69 ->
+10.04 s; C 10.30 -> 9.62 s), the 21 DC campaigns 1.00 -> 0.92 s, all 54
+9.01 -> 8.17 s (wall 9.42 -> 8.88 s); summed CPU 470 s -> 426 s (x 0.91);
+every diagnosis.json identical (the seconds aside). The same load makes
+the old code's piezo median 12.6 s of wall against 10.4 s on the quiet
+machine (docs/diagnosis-benchmarks.md).
 
-Time per campaign against 3b487e5 (the voltage treatment's knots moved
-between samples, the Karnopp seal screened at 8 x its points), each pair
-in the same run on the shared 2-core machine; every diagnosis.json
-identical. The piezo campaign's --check with ``--workers 2`` (load
-5.4-5.7): CPU 148.7 s -> 114.8 s (x 0.77), wall 210.7 s -> 144.5 s; one
-process, all 31 cases: median a campaign 3.8 s of CPU (4.3 s before).
-The DC campaign's --check with ``--workers 2`` (load 3.2-3.7): CPU 17.8 s
--> 15.6 s, wall 26.6 s -> 21.5 s; one process: median 0.5 s a campaign.
-
-Time per campaign against f1d1ec2 (the kernel of 2a71a11, before the
-screen's ranking was computed as read, sizing/diagnose/ranking.py, and a
-bench remembered its last simulations; its voltage treatment already
-solved its tridiagonal systems in LAPACK, which the code measured after
-did not yet), on the shared 2-core machine; every diagnosis.json
-identical. The first piezo campaign of each run of the older revision
-(c01) includes compiling its kernels, the medians do not. A sample of the independent generator's campaigns
-(``--folders``, one diagnosis each, both revisions in the same run, load
-2.6-4.2): piezo-a c01, c05, c09 (2 kHz runs) median 25.6 s -> 13.5 s of
-CPU (wall 33.5 s -> 13.4 s), piezo-c q01, q02, q05 (500 Hz) 22.0 s ->
-12.0 s (33.5 s -> 14.3 s), dc-c f01, f04, f07 1.1 s -> 1.0 s; the six
-piezo campaigns 22.1 s -> 12.7 s (8.7 s to 14.6 s each), all nine 18.4 s
--> 10.6 s. Run again at a load of 5.3-6.6: piezo 22.1 s -> 12.5 s of CPU,
-wall 42.7 s -> 24.9 s. The check's cases 0, 5, 12, 20 of the piezo
-campaign: median 3.6 s -> 3.3 s of CPU (its one training run leaves the
-ranking nothing to bound with); cases 0, 5, 10, 15 of the DC campaign
-0.62 s -> 0.48 s. A piezo campaign of the independent generator
-integrates about 6 x the check's steps a candidate (three training runs of
-2 000-12 000 samples against one of 2 000); of its CPU 35-45 % is now
-the fits' least squares (a point and its Jacobian at a time, 4-5
-simulations a Jacobian), about 40 % the screen (most of it each screened
-point on the shortest training run), the rest the re-calibration, the
-voltage treatment, the noise floor and the verdict (profiles of c01 and
-q01). It stays above 10 s of CPU. The same changes on 8f8e172 (with
-the seal's event rule) against 8f8e172 alone: q05 20.7 s -> 11.4 s of
-CPU, p01 23.2 s -> 14.2 s, f04 6.8 s -> 4.8 s, diagnosis.json identical. With one numba thread and with two, c05
-took the same CPU (7.9-8.4 s) at a load of 3.8-4.5: no core to spare.
+Where a piezo campaign's time goes: the simulator's kernel is 80-85 % of
+its CPU. A candidate's step is a chain of dependent floating-point
+operations, latency-bound: 30-37 ns a step alone with its drive (stack
+voltage and Bouc-Wen loop), 21-23 ns reading a drive integrated before,
+16-20 ns in lanes (sizing/sim/piezohydraulic.py). The bench keeps the
+drives it meets again (a fit's points change a seal or a leak, not the
+drive) and simulates a fit's point on its training runs in one call. What
+is left is mostly what cannot share a drive or a lane: the LuGre seal's
+candidates (each its own step, two exponentials a sub-step: 60-75 ns a
+step, a quarter of a campaign's CPU where it is fitted from several
+starts), the amplifier's and the loop's (each its own drive), entrained
+air.
 """
 from __future__ import annotations
 
@@ -196,7 +174,10 @@ def measure_folders(folders: list[str]) -> dict:
     single_threaded_blas()
     from sizing.api.diagnosis import run_diagnose
 
-    run_diagnose(ROOT / "studies/campaigns/dc-motor", ["steps"])      # loads and compiles, not timed
+    # loads and compiles (or loads) both technologies' kernels, not timed: a
+    # revision exported for --reference compiles them in its first diagnosis
+    run_diagnose(ROOT / "studies/campaigns/dc-motor", ["steps"])
+    run_diagnose(ROOT / "studies/campaigns/piezo-prototype", ["steps"])
     rows = []
     for folder in map(Path, folders):
         start = [time.process_time(), time.perf_counter()]

@@ -104,6 +104,8 @@ class Bench:
         self._weights = None
         self._model_key = None               # the nominal model's parameters, as bytes (_remembered)
         self._memo = OrderedDict()           # shared with the benches of other models (with_model)
+        self._drives = ph_sim.DriveMemory()  # the piezo kernel's drives of these runs (simulate_runs), shared too
+        self._named = {}                     # the arrays _drive_key named
 
     def measured(self, i: int) -> np.ndarray:
         """(n_ch, n) measured channels of run i."""
@@ -177,52 +179,81 @@ class Bench:
 
     def _raw(self, model, run: PreparedRun) -> np.ndarray:
         """(n_cand, n_ch, n) simulated channels."""
-        sim = ph_sim.simulate if self.kind == "piezohydraulic" else dc_sim.simulate
-        out = sim(model, run.t, run.u, run.t)
-        return np.stack([out[c] for c in self.channels], axis=1)
+        return self._raw_runs(model, [run])[0]
 
-    def _simulate_unique(self, changes: dict, run: PreparedRun, n_cand: int) -> np.ndarray:
-        """(n_cand, n_ch, n) for the model ``changes``, simulating each distinct
-        set of model values once (a measurement effect's candidates share
-        theirs: only the re-calibrated parameters change the model), and
-        in a small batch (a fit's point or Jacobian) only those not
-        simulated lately (``_remembered``)."""
+    def _drive_key(self, run: PreparedRun) -> tuple:
+        """The name of a run's times and input in the kernel's memory of
+        drives (``simulate_runs``): the arrays' identities, a run's input
+        replaced (synth, tests) is another; the bench holds every array it
+        named, so no other array takes its identity."""
+        key = (id(run.t), id(run.u))
+        self._named[key] = (run.t, run.u)
+        return key
+
+    def _raw_runs(self, model, runs: list) -> list[np.ndarray]:
+        """``_raw`` of each of ``runs``; a piezo model's runs in one kernel
+        call, whose lanes advance them together (``ph_sim.simulate_runs``)."""
+        if self.kind == "piezohydraulic":
+            outs = ph_sim.simulate_runs(model, [(run.t, run.u, run.t) for run in runs], drives=self._drives,
+                                        keys=[self._drive_key(run) for run in runs])
+        else:
+            outs = [dc_sim.simulate(model, run.t, run.u, run.t) for run in runs]
+        return [np.stack([out[c] for c in self.channels], axis=1) for out in outs]
+
+    def _simulate_unique(self, changes: dict, runs: list, n_cand: int) -> list[np.ndarray]:
+        """(n_cand, n_ch, n) of each of ``runs`` for the model ``changes``,
+        simulating each distinct set of model values once (a measurement
+        effect's candidates share theirs: only the re-calibrated parameters
+        change the model), and in a small batch (a fit's point or Jacobian)
+        only those not simulated lately (``_remembered``)."""
         keys = list(changes)
         M = np.column_stack([np.broadcast_to(np.asarray(changes[k], float), (n_cand,)) for k in keys])
         uniq, inverse = np.unique(M, axis=0, return_inverse=True)
+        inverse = np.asarray(inverse).ravel()
         if len(uniq) <= MEMO_BATCH:
-            Y = self._remembered(run, keys, uniq)
-            return Y[np.asarray(inverse).ravel()].copy()
-        if len(uniq) < n_cand:
-            Y = self._raw(self.model.replace(**{k: uniq[:, j].copy() for j, k in enumerate(keys)}), run)
-            if Y.shape[0] != len(uniq):
-                Y = np.broadcast_to(Y, (len(uniq),) + Y.shape[1:])
-            return Y[np.asarray(inverse).ravel()].copy()
-        Y = self._raw(self.model.replace(**changes), run)
-        if Y.shape[0] != n_cand:
-            Y = np.broadcast_to(Y, (n_cand,) + Y.shape[1:]).copy()
-        return Y
+            return [Y[inverse].copy() for Y in self._remembered(runs, keys, uniq)]
+        out = []
+        for run in runs:
+            if len(uniq) < n_cand:
+                Y = self._raw(self.model.replace(**{k: uniq[:, j].copy() for j, k in enumerate(keys)}), run)
+                if Y.shape[0] != len(uniq):
+                    Y = np.broadcast_to(Y, (len(uniq),) + Y.shape[1:])
+                out.append(Y[inverse].copy())
+                continue
+            Y = self._raw(self.model.replace(**changes), run)
+            if Y.shape[0] != n_cand:
+                Y = np.broadcast_to(Y, (n_cand,) + Y.shape[1:]).copy()
+            out.append(Y)
+        return out
 
-    def _remembered(self, run: PreparedRun, keys: list, rows: np.ndarray) -> np.ndarray:
-        """(n_rows, n_ch, n) for the model with ``keys`` set to each row of
-        ``rows``; the rows simulated lately on this run (the last
-        MEMO_KEPT) are not simulated again. The kernel simulates each
-        candidate on its own, so a remembered row is what simulating it
-        again gives, to the bit. A fit's Jacobian repeats its point's
-        simulation where a measurement effect's parameter moves (the model
-        stays), a re-calibration's model is the nominal's after it."""
+    def _remembered(self, runs: list, keys: list, rows: np.ndarray) -> list[np.ndarray]:
+        """(n_rows, n_ch, n) of each of ``runs`` for the model with ``keys``
+        set to each row of ``rows``; the rows simulated lately on a run (the
+        last MEMO_KEPT) are not simulated again, the others are simulated
+        on all the runs that miss them in one call (``_raw_runs``). The
+        kernel simulates each candidate on its own, so a remembered row is
+        what simulating it again gives, to the bit. A fit's Jacobian repeats
+        its point's simulation where a measurement effect's parameter moves
+        (the model stays), a re-calibration's model is the nominal's after
+        it."""
         if self._model_key is None:
             self._model_key = self.model.matrix().tobytes()
-        found = [self._memo.get((id(run), self._model_key, tuple(keys), row.tobytes())) for row in rows]
-        missing = [k for k, y in enumerate(found) if y is None]
-        if missing:
-            Y = self._raw(self.model.replace(**{k: rows[missing, j].copy() for j, k in enumerate(keys)}), run)
-            for k, y in zip(missing, np.broadcast_to(Y, (len(missing),) + Y.shape[1:])):
-                found[k] = y
-                self._memo[(id(run), self._model_key, tuple(keys), rows[k].tobytes())] = y
-                if len(self._memo) > MEMO_KEPT:
-                    self._memo.popitem(last=False)
-        return np.stack(found)
+        names = tuple(keys)
+        found = [[self._memo.get((id(run), self._model_key, names, row.tobytes())) for row in rows] for run in runs]
+        missing = {}                     # rows missing -> the runs that miss them
+        for i, got in enumerate(found):
+            lost = tuple(k for k, y in enumerate(got) if y is None)
+            if lost:
+                missing.setdefault(lost, []).append(i)
+        for lost, which in missing.items():
+            model = self.model.replace(**{k: rows[list(lost), j].copy() for j, k in enumerate(keys)})
+            for i, Y in zip(which, self._raw_runs(model, [runs[i] for i in which])):
+                for k, y in zip(lost, np.broadcast_to(Y, (len(lost),) + Y.shape[1:])):
+                    found[i][k] = y
+                    self._memo[(id(runs[i]), self._model_key, names, rows[k].tobytes())] = y
+                    if len(self._memo) > MEMO_KEPT:
+                        self._memo.popitem(last=False)
+        return [np.stack(got) for got in found]
 
     def nominal_channels(self, runs=None) -> list:
         """(n_ch, n) simulated channels of every run with the nominal model;
@@ -230,9 +261,9 @@ class Bench:
         asked for: a re-calibration's trial models need the training runs)."""
         if self._nominal is None:
             self._nominal = [None] * len(self.runs)
-        for i in range(len(self.runs)) if runs is None else runs:
-            if self._nominal[i] is None:
-                self._nominal[i] = self._remembered(self.runs[i], [], np.zeros((1, 0)))[0]
+        wanted = [i for i in (range(len(self.runs)) if runs is None else runs) if self._nominal[i] is None]
+        for i, Y in zip(wanted, self._remembered([self.runs[i] for i in wanted], [], np.zeros((1, 0)))):
+            self._nominal[i] = Y[0]
         return self._nominal
 
     def nominal(self) -> list[np.ndarray]:
@@ -259,11 +290,13 @@ class Bench:
             col += len(effect.params)
             values.append(v)
             changes.update(effect.model_changes(self.model, v))
+        runs = list(runs)
+        simulated = self._simulate_unique(changes, [self.runs[i] for i in runs], n_cand) if changes else None
         out = []
-        for i in runs:
+        for k, i in enumerate(runs):
             run = self.runs[i]
             if changes:
-                Y = self._simulate_unique(changes, run, n_cand)
+                Y = simulated[k]
             else:
                 Y = np.repeat(self.nominal_channels()[i][None], n_cand, axis=0)
             for effect, v in zip(effects, values):

@@ -25,16 +25,31 @@ equilibrium under the load with zero friction; positions are reported from
 that rest point (docs/formats.md, "Test campaigns"). Candidates of one
 batch with the same drive (amplifier, Bouc-Wen loop, step and voltage:
 ``DRIVE``) share its integration, done once for them: a diagnosis screens
-a seal or a leak at dozens of points with the stacks unchanged.
+a seal or a leak at dozens of points with the stacks unchanged; a caller
+may keep the drives of its small batches and have them read again
+(``simulate_runs(drives=...)``: a fit's points change a seal or a leak,
+not the drive).
+
+A candidate's step is a chain of dependent floating-point operations whose
+latency, not the processor's throughput, sets its time. The kernel
+therefore advances up to LANES tasks (a candidate on a run; several runs in
+one call: ``simulate_runs``) together, a step of each in turn, so the
+processor overlaps their chains (``_simulate_lanes``); each task performs
+exactly the operations of its run alone, so every figure is the same to
+the bit whatever the batch (tests/sim/test_sim_piezohydraulic.py). On a
+12 000-sample run a candidate that reads its drive took 16-20 ns a step in
+lanes against 30-37 ns alone (benchmarks/diagnose_speed.py).
 """
 from __future__ import annotations
 
+from collections import OrderedDict
 from dataclasses import dataclass
 
 import numba
 import numpy as np
 
 from ..errors import SimulationError
+from ..threads import core_to_spare
 from . import PARALLEL_LAUNCH
 from .params import StackParameters
 from ..physics.bouc_wen import hysteresis_step
@@ -192,19 +207,26 @@ def _air_equilibrium(K, xf, A_w, A_n, V0, bulk, F0, kL, eps0, kappa):
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _interp(t, t_in, inv_dt, v_row, j):
-    """Linear interpolation with a forward-moving index j (returns v, j);
-    inv_dt[j] = 1 / (t_in[j+1] - t_in[j]), precomputed once."""
-    n = t_in.shape[0]
-    while j < n - 2 and t_in[j + 1] <= t:
+def _interp_index(t, t_in, j, last):
+    """The interval j (at most ``last``) of t_in that holds t, moving j
+    forward only."""
+    while j < last and t_in[j + 1] <= t:
         j += 1
+    return j
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _interp_at(t, t_in, inv_dt, V, r, j):
+    """Linear interpolation of row r of V at t in interval j
+    (``_interp_index``); inv_dt[j] = 1 / (t_in[j+1] - t_in[j]), precomputed
+    once."""
     t0 = t_in[j]
     if t <= t0:
-        return v_row[j], j
+        return V[r, j]
     if t >= t_in[j + 1]:
-        return v_row[j + 1], j
+        return V[r, j + 1]
     w = (t - t0) * inv_dt[j]
-    return v_row[j] * (1.0 - w) + v_row[j + 1] * w, j
+    return V[r, j] * (1.0 - w) + V[r, j + 1] * w
 
 
 @numba.njit(cache=True, error_model="numpy")
@@ -302,33 +324,31 @@ def _lugre_step(F, u, z, g, s0, s1, den, F_c, F_s, inv_vs, m, dt):
 DRIVE = ("alpha", "beta", "gamma", "delta", "n_bw", "h0", "slew_rate", "amp_bandwidth", "hold_rate")
 DRIVE_COLS = [IDX[name] for name in DRIVE]
 DRIVE_BYTES = 2 ** 27   # drive buffers of one kernel call (a larger batch runs in slices)
-READ, INTEGRATE, KEEP = 0, 1, 2     # how a candidate comes by its drive (_simulate_one)
+READ, INTEGRATE, KEEP = 0, 1, 2     # how a candidate comes by its drive (_simulate_lanes)
+LANES = 8           # tasks advanced together, at most (_simulate_lanes)
 
 
 @numba.njit(cache=True, parallel=True, error_model="numpy", nogil=True)   # nogil: stages run in threads (sim/__init__.py)
-def _simulate(P, dts, t_in, V_in, t_out, v_stride, drivers, driver_of, kept):
-    """Candidate c shares the drive (stack voltage and hysteresis at each
-    step) of candidate ``drivers[driver_of[c]]``: the drivers integrate it
-    (the Bouc-Wen power is a third of a step), those of a drive shared
-    (``kept[g]`` >= 0) keep it in row ``kept[g]``, the others read it."""
-    n_cand = P.shape[0]
-    n_out = t_out.shape[0]
-    out = np.empty((n_cand, 4, n_out))
-    inv_dt = 1.0 / (t_in[1:] - t_in[:-1])
-    n_drv = drivers.shape[0]
-    n_steps = 0
-    for g in range(n_drv):
-        if kept[g] >= 0:
-            n_steps = max(n_steps, _n_steps(dts[drivers[g]], t_out))
-    vh = np.empty((max(kept.max() + 1, 1), 2, n_steps + 1))
-    for g in numba.prange(n_drv):
-        c = drivers[g]
-        mode = KEEP if kept[g] >= 0 else INTEGRATE
-        _simulate_one(P[c], dts[c], t_in, inv_dt, V_in[c * v_stride], t_out, vh[max(kept[g], 0)], mode, out[c])
-    for c in numba.prange(n_cand):
-        g = driver_of[c]
-        if drivers[g] != c:
-            _simulate_one(P[c], dts[c], t_in, inv_dt, V_in[c * v_stride], t_out, vh[kept[g]], READ, out[c])
+def _simulate(P, dts, T_in, V_in, in_at, T_out, out_at, v_stride, vh, tasks, starts, n_first, modes, rows):
+    """Task k simulates candidate tasks[k, 0] (a row of P) on run tasks[k, 1]:
+    input times T_in[in_at[r]:in_at[r + 1]] (and the same columns of V_in),
+    output times T_out[out_at[r]:out_at[r + 1]] (the same columns of the
+    result). The tasks ``starts[g]:starts[g + 1]`` of lane group g advance
+    together (``_simulate_lanes``); each of ``modes`` INTEGRATEs its drive,
+    or KEEPs it in row ``rows`` of the drive buffer vh, or READs it there:
+    the first ``n_first`` groups hold the drives kept and the drives read
+    that were kept before (given in vh), the others READ the drives they
+    keep, once they are done."""
+    out = np.empty((P.shape[0], 4, T_out.shape[0]))
+    inv_dt = np.zeros(T_in.shape[0])
+    for r in range(in_at.shape[0] - 1):
+        inv_dt[in_at[r]:in_at[r + 1] - 1] = 1.0 / (T_in[in_at[r] + 1:in_at[r + 1]] - T_in[in_at[r]:in_at[r + 1] - 1])
+    for g in numba.prange(n_first):
+        _simulate_group(P, dts, T_in, inv_dt, V_in, in_at, T_out, out_at, v_stride, vh, tasks[starts[g]:starts[g + 1]],
+                        modes[starts[g]:starts[g + 1]], rows[starts[g]:starts[g + 1]], out)
+    for g in numba.prange(n_first, starts.shape[0] - 1):
+        _simulate_group(P, dts, T_in, inv_dt, V_in, in_at, T_out, out_at, v_stride, vh, tasks[starts[g]:starts[g + 1]],
+                        modes[starts[g]:starts[g + 1]], rows[starts[g]:starts[g + 1]], out)
     return out
 
 
@@ -347,144 +367,312 @@ def _substeps(span, dt_max):
     return nsub if nsub >= 1 else 1
 
 
+# columns of a lane's state between two steps (_simulate_lanes)
+(S_V, S_H, S_CREEP, S_X, S_Y, S_U, S_LEAK, S_PR, S_ZBR, S_Y0, S_AOIL, S_AAW, S_KF, S_IKKF, S_IKF,
+ S_SLIDING, S_T, S_DT) = range(18)
+# columns of a lane's constants
+C_INV_VS, C_FW0, C_FN0, C_LOSS_FWD, C_LOSS_BACK, C_INV_M, C_INV_TAU, C_N_LC, C_AMP = range(9)
+# columns of a lane's counters: the sample it is in (from its run's
+# first), steps left in the sample, interval of the input, steps done
+I_K, I_LEFT, I_J, I_S = range(4)
+
+
 @numba.njit(cache=True, error_model="numpy")
-def _simulate_one(p, dt_max, t_in, inv_dt, v_row, t_out, vh, mode, rec):
-    """One candidate. ``mode`` INTEGRATE: integrate the stack voltage and
-    hysteresis; KEEP: and keep them in vh (vh[0] voltage, vh[1] h; index 0
-    at rest, then a value a step); READ: read them from vh, kept by a
-    candidate of the same drive. The rest (creep, oil, pistons, seals,
-    load) is the candidate's own."""
-    K, d33, al, be, ga, de, nb, h = p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]
-    A_w, A_n, V0, bulk, m = p[8], p[9], p[10], p[11], p[12]
-    rho, k_con, k_exp = p[13], p[14], p[15]
-    Fw, Fn, brk_w, brk_n = p[16], p[17], p[18], p[19]
-    F0, kL, cv, G = p[20], p[21], p[22], p[23]
-    kappa, tau, slew, no_ret = p[24], p[25], p[26], p[27]
-    cpw, cpn = p[29], p[30]
-    vs, lc, lc_t, eps0, kap, cdA, bw = p[31], p[32], p[33], p[34], p[35], p[36], p[37]
-    zpre, hold = p[38], p[39]
-    z_br = 0.0                           # LuGre bristle deflection of the output seal
-    inv_vs = 1.0 / vs if vs > 0.0 else 0.0
-    n_lc = LOG_CREEP_MODES if lc > 0.0 else 0
-    logc = np.zeros(LOG_CREEP_MODES)
-    inv_tl = np.empty(LOG_CREEP_MODES)
+def _simulate_group(P, dts, T_in, inv_dt, V_in, in_at, T_out, out_at, v_stride, vh, tasks, modes, rows, out):
+    """A lane group's tasks: one alone, or lanes."""
+    if tasks.shape[0] == 1:
+        _simulate_one(P, dts, T_in, inv_dt, V_in, in_at, T_out, out_at, v_stride, vh, tasks[0, 0], tasks[0, 1],
+                      modes[0], rows[0], out)
+    else:
+        _simulate_lanes(P, dts, T_in, inv_dt, V_in, in_at, T_out, out_at, v_stride, vh, tasks, modes, rows, out)
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _start(P, c, t, j, T_in, inv_dt, V_in, v_stride, vh, row, mode, S, C, logc, inv_tl, l, out, o):
+    """Candidate c (row c of P) at rest in lane l at time t (input
+    interval j): its constants C[l] and inv_tl[l], its state S[l] and
+    logc[l], its output sample o; ``mode`` and ``row``: how it comes by
+    its drive (``_simulate``)."""
+    K, d33, h = P[c, 0], P[c, 1], P[c, 7]
+    A_w, A_n, V0, bulk, m = P[c, 8], P[c, 9], P[c, 10], P[c, 11], P[c, 12]
+    rho, k_con, k_exp = P[c, 13], P[c, 14], P[c, 15]
+    F0, kL = P[c, 20], P[c, 21]
+    kappa, tau = P[c, 24], P[c, 25]
+    vs, lc, lc_t, eps0, kap = P[c, 31], P[c, 32], P[c, 33], P[c, 34], P[c, 35]
+    C[l, C_INV_VS] = 1.0 / vs if vs > 0.0 else 0.0
+    C[l, C_N_LC] = LOG_CREEP_MODES if lc > 0.0 else 0
     for i in range(LOG_CREEP_MODES):
-        inv_tl[i] = 1.0 / (lc_t * 10.0 ** i) if lc_t > 0.0 else 0.0
-    Fw0, Fn0 = Fw, Fn
+        inv_tl[l, i] = 1.0 / (lc_t * 10.0 ** i) if lc_t > 0.0 else 0.0
+    C[l, C_FW0], C[l, C_FN0] = P[c, 16], P[c, 17]
     R = A_w / A_n
     bern = 1.0 - 1.0 / (R * R)
     # constants of the step, so the loop multiplies instead of dividing
     a_oil = bulk / V0
     aA_w = a_oil * A_w
     kf = aA_w * A_w
-    inv_Kkf, inv_kf, inv_m = 1.0 / (K + kf), 1.0 / kf, 1.0 / m
-    inv_tau = 1.0 / tau if tau > 0.0 else 0.0
-    loss_fwd, loss_back = 0.5 * rho * (bern + k_con), 0.5 * rho * (bern + k_exp)
-    j = 0
+    S[l, S_AOIL], S[l, S_AAW], S[l, S_KF] = a_oil, aA_w, kf
+    S[l, S_IKKF], S[l, S_IKF], C[l, C_INV_M] = 1.0 / (K + kf), 1.0 / kf, 1.0 / m
+    C[l, C_INV_TAU] = 1.0 / tau if tau > 0.0 else 0.0
+    C[l, C_LOSS_FWD], C[l, C_LOSS_BACK] = 0.5 * rho * (bern + k_con), 0.5 * rho * (bern + k_exp)
     if mode == READ:
-        v, h = vh[0, 0], vh[1, 0]
+        v, h = vh[row, 0, 0], vh[row, 1, 0]
     else:
-        v, j = _interp(t_out[0], t_in, inv_dt, v_row, j)
+        v = _interp_at(t, T_in, inv_dt, V_in, c * v_stride, j)
         if mode == KEEP:
-            vh[0, 0], vh[1, 0] = v, h
+            vh[row, 0, 0], vh[row, 1, 0] = v, h
     xf_lin = d33 * v + h
     creep = kappa * xf_lin
     xf_tot = xf_lin + creep
-    for i in range(n_lc):
-        logc[i] = lc * xf_lin
-        xf_tot = xf_tot + logc[i]
+    for i in range(int(C[l, C_N_LC])):
+        logc[l, i] = lc * xf_lin
+        xf_tot = xf_tot + logc[l, i]
     if eps0 > 0.0:
         x, y, pr = _air_equilibrium(K, xf_tot, A_w, A_n, V0, bulk, F0, kL, eps0, kap)
     else:
         x, y, pr = _equilibrium(K, xf_tot, A_w, A_n, V0, bulk, F0, kL)
-    y0 = y
-    u = 0.0
-    v_leak = 0.0
-    sliding = False
+    S[l, S_V], S[l, S_H], S[l, S_CREEP], S[l, S_X], S[l, S_Y], S[l, S_U] = v, h, creep, x, y, 0.0
+    S[l, S_LEAK], S[l, S_PR], S[l, S_ZBR], S[l, S_Y0], S[l, S_SLIDING] = 0.0, pr, 0.0, y, 0.0
+    S[l, S_T] = t
+    out[c, 0, o], out[c, 1, o], out[c, 2, o], out[c, 3, o] = 0.0, pr, x, v
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _log_creep(logc, inv_tl, l, lc, xf_lin, xf_tot, dt):
+    """The log-creep modes logc[l] advanced a step; returns xf_tot with them."""
+    for i in range(LOG_CREEP_MODES):
+        logc[l, i] += dt * (lc * xf_lin - logc[l, i]) * inv_tl[l, i]
+        xf_tot = xf_tot + logc[l, i]
+    return xf_tot
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _simulate_one(P, dts, T_in, inv_dt, V_in, in_at, T_out, out_at, v_stride, vh, c, r, mode, row, out):
+    """Candidate c on run r alone (``_simulate_lanes`` with one lane, its
+    state in registers between two steps)."""
+    S = np.empty((1, 18))
+    C = np.empty((1, 9))
+    logc = np.zeros((1, LOG_CREEP_MODES))
+    inv_tl = np.empty((1, LOG_CREEP_MODES))
+    o, n_out, last, dt_max = out_at[r], out_at[r + 1] - out_at[r], in_at[r + 1] - 2, dts[c]
+    t = T_out[o]
+    j = _interp_index(t, T_in, in_at[r], last)
+    _start(P, c, t, j, T_in, inv_dt, V_in, v_stride, vh, row, mode, S, C, logc, inv_tl, 0, out, o)
+    v, h, creep, x, y, u = S[0, S_V], S[0, S_H], S[0, S_CREEP], S[0, S_X], S[0, S_Y], S[0, S_U]
+    v_leak, pr, z_br, y0, sliding = S[0, S_LEAK], S[0, S_PR], S[0, S_ZBR], S[0, S_Y0], S[0, S_SLIDING]
+    a_oil, aA_w, kf, inv_Kkf, inv_kf = S[0, S_AOIL], S[0, S_AAW], S[0, S_KF], S[0, S_IKKF], S[0, S_IKF]
+    inv_vs, Fw0, Fn0, inv_m, inv_tau = C[0, C_INV_VS], C[0, C_FW0], C[0, C_FN0], C[0, C_INV_M], C[0, C_INV_TAU]
+    loss_fwd, loss_back, n_lc = C[0, C_LOSS_FWD], C[0, C_LOSS_BACK], C[0, C_N_LC]
+    drive = (P[c, 37], P[c, 26], P[c, 2], P[c, 3], P[c, 4], P[c, 5], P[c, 6], P[c, 39])
+    hydraulics = (P[c, 0], P[c, 8], P[c, 9], P[c, 10], P[c, 11], P[c, 12], P[c, 13], P[c, 18], P[c, 19],
+                  P[c, 20], P[c, 21], P[c, 22], P[c, 23], P[c, 27], P[c, 29], P[c, 30], P[c, 31], P[c, 34],
+                  P[c, 35], P[c, 36], P[c, 38])
+    d33, kappa, tau, lc, bw = P[c, 1], P[c, 24], P[c, 25], P[c, 32], P[c, 37]
     s = 0
-    t = t_out[0]
-    rec[0, 0], rec[1, 0], rec[2, 0], rec[3, 0] = 0.0, pr, x, v
-    for k in range(t_out.shape[0] - 1):
-        nsub = _substeps(t_out[k + 1] - t, dt_max)
-        dt = (t_out[k + 1] - t) / nsub
+    for k in range(o, o + n_out - 1):
+        nsub = _substeps(T_out[k + 1] - t, dt_max)
+        dt = (T_out[k + 1] - t) / nsub
         amp = 1.0 - np.exp(-bw * dt) if bw > 0.0 else 0.0     # first-order amplifier, exact over the step
         for _ in range(nsub):
             s += 1
             if mode != READ:
                 t += dt
-                v_cmd, j = _interp(t, t_in, inv_dt, v_row, j)
-                v_new = v_cmd
-                if bw > 0.0:
-                    v_new = v + (v_cmd - v) * amp
-                if slew > 0.0:
-                    step = slew * dt
-                    v_new = min(max(v_new, v - step), v + step)
-                h = hysteresis_step(h, v, v_new, dt, al, be, ga, de, nb, hold)
-                v = v_new
+                j = _interp_index(t, T_in, j, last)
+                v, h = _drive_step(drive, v, h, _interp_at(t, T_in, inv_dt, V_in, c * v_stride, j), dt, amp)
                 if mode == KEEP:
-                    vh[0, s], vh[1, s] = v, h
+                    vh[row, 0, s], vh[row, 1, s] = v, h
             else:
-                v, h = vh[0, s], vh[1, s]
+                v, h = vh[row, 0, s], vh[row, 1, s]
             xf_lin = d33 * v + h
             if tau > 0.0:
                 creep += dt * (kappa * xf_lin - creep) * inv_tau
             xf_tot = xf_lin + creep
-            for i in range(n_lc):
-                logc[i] += dt * (lc * xf_lin - logc[i]) * inv_tl[i]
-                xf_tot = xf_tot + logc[i]
-            v_leak += G * pr * dt
-            if cdA > 0.0:                     # orifice leak, Q = Cd A sgn(p) sqrt(2 |p| / rho)
-                v_leak += cdA * np.sqrt(2.0 * abs(pr) / rho) * (1.0 if pr >= 0.0 else -1.0) * dt
-            v_eff = v_leak
-            if eps0 > 0.0:                    # oil with air: tangent to s(p) at the last pressure
-                s_p, ds_p = air_strain(pr, eps0, kap, bulk)
-                a_oil = 1.0 / (ds_p * V0)
-                aA_w = a_oil * A_w
-                kf = aA_w * A_w
-                inv_Kkf, inv_kf = 1.0 / (K + kf), 1.0 / kf
-                v_eff = v_leak - (pr - s_p / ds_p) / a_oil     # p = a_oil (dV - v_eff)
-            Fw = Fw0 + cpw * abs(pr)
-            Fn = Fn0 + cpn * abs(pr)
-            thr = Fw if sliding else Fw * brk_w
-            x, sliding = _wide_piston(x, xf_tot, y, v_eff, K, aA_w, A_n, kf, inv_Kkf, inv_kf,
-                                      Fw, thr, no_ret)
-            pr = a_oil * (A_w * x - A_n * y - v_eff)
-            p_n = pr - u * abs(u) * (loss_fwd if u >= 0.0 else loss_back)
-            F = A_n * p_n - (F0 + kL * y) - cv * u
-            if zpre > 0.0:                    # LuGre output seal (no stick logic: bristles)
-                # the bristle mode sqrt(sigma0 / m) is often faster than the
-                # hydraulics: the output piston takes sub-steps of at most
-                # LUGRE_SUBSTEP / omega_bristle with the oil pressure following y
-                F_s = Fn * brk_n
-                n_br = int(dt * np.sqrt(F_s / zpre * inv_m) / LUGRE_SUBSTEP) + 1
-                h_dt = dt / n_br
-                s0, s1, den = _lugre_constants(F_s, zpre, m, h_dt)
-                g_br = _lugre_g(u, Fn, F_s, inv_vs)
-                for _ in range(n_br):
-                    p_s = a_oil * (A_w * x - A_n * y - v_eff)
-                    p_n = p_s - u * abs(u) * (loss_fwd if u >= 0.0 else loss_back)
-                    F = A_n * p_n - (F0 + kL * y) - cv * u
-                    u, z_br, g_br = _lugre_step(F, u, z_br, g_br, s0, s1, den, Fn, F_s, inv_vs, m, h_dt)
-                    y += u * h_dt
-                continue
-            # viscous damping implicit in the new speed (stable at any step,
-            # the overdamped limit F / c when dt c / m is large)
-            F += cv * u
-            if vs > 0.0:
-                a = _narrow_accel_stribeck(F, u, Fn, Fn * brk_n, inv_m, inv_vs)
+            if n_lc > 0.0:
+                xf_tot = _log_creep(logc, inv_tl, 0, lc, xf_lin, xf_tot, dt)
+            x, y, u, pr, v_leak, z_br, sliding, a_oil, aA_w, kf, inv_Kkf, inv_kf = _output_step(
+                hydraulics, xf_tot, dt, x, y, u, pr, v_leak, z_br, sliding, a_oil, aA_w, kf, inv_Kkf, inv_kf,
+                inv_vs, Fw0, Fn0, loss_fwd, loss_back, inv_m)
+        t = T_out[k + 1]
+        out[c, 0, k + 1] = y - y0
+        out[c, 1, k + 1] = pr
+        out[c, 2, k + 1] = x
+        out[c, 3, k + 1] = v
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _begin_sample(P, dts, T_out, S, C, I, l, c, o):
+    """Lane l (candidate c) enters the sample interval o, o + 1 of T_out:
+    its steps, their length and the amplifier's factor over one."""
+    t = S[l, S_T]
+    nsub = _substeps(T_out[o + 1] - t, dts[c])
+    dt = (T_out[o + 1] - t) / nsub
+    bw = P[c, 37]
+    C[l, C_AMP] = 1.0 - np.exp(-bw * dt) if bw > 0.0 else 0.0     # first-order amplifier, exact over the step
+    S[l, S_DT] = dt
+    I[l, I_LEFT] = nsub
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _simulate_lanes(P, dts, T_in, inv_dt, V_in, in_at, T_out, out_at, v_stride, vh, tasks, modes, rows, out):
+    """Tasks (candidate, run) advanced together, one step of each in turn: a
+    candidate's step is a chain of dependent floating-point operations,
+    and the processor overlaps the chains of the others with it. Each
+    task's operations are those of its run alone, in the same order
+    (``_drive_step``, ``_output_step``): its figures do not depend on its
+    companions. ``modes``: INTEGRATE the stack voltage and hysteresis; KEEP:
+    and keep them in vh[rows] (vh[.., 0] voltage, vh[.., 1] h; index 0 at
+    rest, then a value a step); READ: read them from vh[rows], kept by a
+    candidate of the same drive. The rest (creep, oil, pistons, seals, load)
+    is the candidate's own."""
+    L = tasks.shape[0]
+    S = np.empty((L, 18))
+    C = np.empty((L, 9))
+    I = np.zeros((L, 4), np.int64)
+    logc = np.zeros((L, LOG_CREEP_MODES))
+    inv_tl = np.empty((L, LOG_CREEP_MODES))
+    active = 0
+    for l in range(L):
+        c, r = tasks[l, 0], tasks[l, 1]
+        t = T_out[out_at[r]]
+        I[l, I_J] = _interp_index(t, T_in, in_at[r], in_at[r + 1] - 2)
+        _start(P, c, t, I[l, I_J], T_in, inv_dt, V_in, v_stride, vh, rows[l], modes[l], S, C, logc, inv_tl, l,
+               out, out_at[r])
+        if out_at[r + 1] - out_at[r] > 1:
+            _begin_sample(P, dts, T_out, S, C, I, l, c, out_at[r])
+            active += 1
+    while active > 0:
+        for l in range(L):
+            if I[l, I_LEFT] == 0:
+                continue                  # its run is done
+            c, r, row = tasks[l, 0], tasks[l, 1], rows[l]
+            dt = S[l, S_DT]
+            s = I[l, I_S] + 1
+            I[l, I_S] = s
+            v, h = S[l, S_V], S[l, S_H]
+            if modes[l] != READ:
+                t = S[l, S_T] + dt
+                S[l, S_T] = t
+                j = _interp_index(t, T_in, I[l, I_J], in_at[r + 1] - 2)
+                I[l, I_J] = j
+                v, h = _drive_step((P[c, 37], P[c, 26], P[c, 2], P[c, 3], P[c, 4], P[c, 5], P[c, 6], P[c, 39]),
+                                   v, h, _interp_at(t, T_in, inv_dt, V_in, c * v_stride, j), dt, C[l, C_AMP])
+                if modes[l] == KEEP:
+                    vh[row, 0, s], vh[row, 1, s] = v, h
             else:
-                a = _narrow_accel(F, u, Fn, Fn * brk_n, inv_m)
+                v, h = vh[row, 0, s], vh[row, 1, s]
+            xf_lin = P[c, 1] * v + h
+            creep = S[l, S_CREEP]
+            if P[c, 25] > 0.0:
+                creep += dt * (P[c, 24] * xf_lin - creep) * C[l, C_INV_TAU]
+            xf_tot = xf_lin + creep
+            if C[l, C_N_LC] > 0.0:
+                xf_tot = _log_creep(logc, inv_tl, l, P[c, 32], xf_lin, xf_tot, dt)
+            (S[l, S_X], S[l, S_Y], S[l, S_U], S[l, S_PR], S[l, S_LEAK], S[l, S_ZBR], S[l, S_SLIDING],
+             S[l, S_AOIL], S[l, S_AAW], S[l, S_KF], S[l, S_IKKF], S[l, S_IKF]) = _output_step(
+                (P[c, 0], P[c, 8], P[c, 9], P[c, 10], P[c, 11], P[c, 12], P[c, 13], P[c, 18], P[c, 19],
+                 P[c, 20], P[c, 21], P[c, 22], P[c, 23], P[c, 27], P[c, 29], P[c, 30], P[c, 31], P[c, 34],
+                 P[c, 35], P[c, 36], P[c, 38]), xf_tot, dt,
+                S[l, S_X], S[l, S_Y], S[l, S_U], S[l, S_PR], S[l, S_LEAK], S[l, S_ZBR],
+                S[l, S_SLIDING], S[l, S_AOIL], S[l, S_AAW], S[l, S_KF], S[l, S_IKKF], S[l, S_IKF],
+                C[l, C_INV_VS], C[l, C_FW0], C[l, C_FN0], C[l, C_LOSS_FWD], C[l, C_LOSS_BACK], C[l, C_INV_M])
+            S[l, S_V], S[l, S_H], S[l, S_CREEP] = v, h, creep
+            I[l, I_LEFT] -= 1
+            if I[l, I_LEFT] == 0:         # the end of a sample interval: its output sample
+                o = out_at[r] + I[l, I_K] + 1
+                I[l, I_K] += 1
+                S[l, S_T] = T_out[o]
+                out[c, 0, o] = S[l, S_Y] - S[l, S_Y0]
+                out[c, 1, o] = S[l, S_PR]
+                out[c, 2, o] = S[l, S_X]
+                out[c, 3, o] = S[l, S_V]
+                if o + 1 < out_at[r + 1]:
+                    _begin_sample(P, dts, T_out, S, C, I, l, c, o)
+                else:
+                    active -= 1
+
+
+@numba.njit(cache=True, error_model="numpy", inline="always")
+def _drive_step(p, v, h, v_cmd, dt, amp):
+    """Stack voltage and hysteresis after a step towards the commanded
+    voltage v_cmd: the amplifier's first-order lag (``amp`` = 1 -
+    exp(-bandwidth dt)), its slew limit, the Bouc-Wen loop; ``p``: the
+    amplifier bandwidth, slew rate, alpha, beta, gamma, delta, n and the
+    hold rate."""
+    bw, slew, al, be, ga, de, nb, hold = p
+    v_new = v_cmd
+    if bw > 0.0:
+        v_new = v + (v_cmd - v) * amp
+    if slew > 0.0:
+        step = slew * dt
+        v_new = min(max(v_new, v - step), v + step)
+    h = hysteresis_step(h, v, v_new, dt, al, be, ga, de, nb, hold)
+    return v_new, h
+
+
+@numba.njit(cache=True, error_model="numpy", inline="always")
+def _output_step(p, xf_tot, dt, x, y, u, pr, v_leak, z_br, sliding, a_oil, aA_w, kf, inv_Kkf, inv_kf,
+                 inv_vs, Fw0, Fn0, loss_fwd, loss_back, inv_m):
+    """One step of candidate c (row c of P) from the stacks' free
+    displacement ``xf_tot`` on: leak, oil, wide piston, output piston and
+    its seal. The state in and out: x, y, u, p, leaked volume, LuGre
+    bristle deflection, whether the wide piston slides (1.0) and the oil's
+    (tangent) stiffness constants a_oil, aA_w, kf, 1 / (K + kf), 1 / kf."""
+    K, A_w, A_n, V0, bulk, m, rho, brk_w, brk_n, F0, kL, cv, G, no_ret, cpw, cpn, vs, eps0, kap, cdA, zpre = p
+    v_leak += G * pr * dt
+    if cdA > 0.0:                     # orifice leak, Q = Cd A sgn(p) sqrt(2 |p| / rho)
+        v_leak += cdA * np.sqrt(2.0 * abs(pr) / rho) * (1.0 if pr >= 0.0 else -1.0) * dt
+    v_eff = v_leak
+    if eps0 > 0.0:                    # oil with air: tangent to s(p) at the last pressure
+        s_p, ds_p = air_strain(pr, eps0, kap, bulk)
+        a_oil = 1.0 / (ds_p * V0)
+        aA_w = a_oil * A_w
+        kf = aA_w * A_w
+        inv_Kkf, inv_kf = 1.0 / (K + kf), 1.0 / kf
+        v_eff = v_leak - (pr - s_p / ds_p) / a_oil     # p = a_oil (dV - v_eff)
+    Fw = Fw0 + cpw * abs(pr)
+    Fn = Fn0 + cpn * abs(pr)
+    thr = Fw if sliding > 0.5 else Fw * brk_w
+    x, slides = _wide_piston(x, xf_tot, y, v_eff, K, aA_w, A_n, kf, inv_Kkf, inv_kf, Fw, thr, no_ret)
+    pr = a_oil * (A_w * x - A_n * y - v_eff)
+    p_n = pr - u * abs(u) * (loss_fwd if u >= 0.0 else loss_back)
+    if zpre > 0.0:                    # LuGre output seal (no stick logic: bristles)
+        # the bristle mode sqrt(sigma0 / m) is often faster than the
+        # hydraulics: the output piston takes sub-steps of at most
+        # LUGRE_SUBSTEP / omega_bristle with the oil pressure following y
+        F_s = Fn * brk_n
+        n_br = int(dt * np.sqrt(F_s / zpre * inv_m) / LUGRE_SUBSTEP) + 1
+        h_dt = dt / n_br
+        s0, s1, den = _lugre_constants(F_s, zpre, m, h_dt)
+        g_br = _lugre_g(u, Fn, F_s, inv_vs)
+        for _ in range(n_br):
+            p_s = a_oil * (A_w * x - A_n * y - v_eff)
+            p_n = p_s - u * abs(u) * (loss_fwd if u >= 0.0 else loss_back)
+            F = A_n * p_n - (F0 + kL * y) - cv * u
+            u, z_br, g_br = _lugre_step(F, u, z_br, g_br, s0, s1, den, Fn, F_s, inv_vs, m, h_dt)
+            y += u * h_dt
+    else:
+        # viscous damping implicit in the new speed (stable at any step, the
+        # overdamped limit F / c when dt c / m is large). Undamped, the same
+        # figures without the two terms that are then exactly zero: (F - 0 u)
+        # + 0 u is F + 0.0 (signed zeros included), and a division by 1.0 is
+        # exact
+        if cv != 0.0:
+            F = A_n * p_n - (F0 + kL * y) - cv * u
+            F += cv * u
+        else:
+            F = A_n * p_n - (F0 + kL * y) + 0.0
+        if vs > 0.0:
+            a = _narrow_accel_stribeck(F, u, Fn, Fn * brk_n, inv_m, inv_vs)
+        else:
+            a = _narrow_accel(F, u, Fn, Fn * brk_n, inv_m)
+        if cv != 0.0:
             u_new = (u + a * dt) / (1.0 + dt * cv * inv_m)
-            if u != 0.0 and u_new * u < 0.0:
-                u_new = 0.0
-            u = u_new
-            y += u * dt
-        t = t_out[k + 1]
-        rec[0, k + 1] = y - y0
-        rec[1, k + 1] = pr
-        rec[2, k + 1] = x
-        rec[3, k + 1] = v
-    return rec
+        else:
+            u_new = u + a * dt
+        if u != 0.0 and u_new * u < 0.0:
+            u_new = 0.0
+        u = u_new
+        y += u * dt
+    return x, y, u, pr, v_leak, z_br, 1.0 if slides else 0.0, a_oil, aA_w, kf, inv_Kkf, inv_kf
 
 
 def _drive_groups(P, dts, v_stride, t_out):
@@ -514,6 +702,175 @@ def _drive_groups(P, dts, v_stride, t_out):
         yield members, drivers, driver_of.astype(np.int64), kept
 
 
+LANE_FREE = [IDX[name] for name in ("narrow_presliding", "air_fraction")]   # zero in a task that takes a lane
+
+
+def _lanes(P, tasks: np.ndarray) -> list[np.ndarray]:
+    """The tasks (rows: candidate, run, mode, row) in lane groups
+    (``_simulate_lanes``). A task that reads its drive and whose step is
+    short takes a lane: at most LANES a group, groups of about equal size,
+    and one group a thread of numba's (so its threads share the work) where
+    that leaves at least two tasks a group, or one when a core is free
+    (``threads.core_to_spare``: the wall time then counts, not the CPU a
+    lane saves). The others run alone: a step that integrates the drive (a
+    power a step), sub-steps a LuGre seal (two exponentials a sub-step) or
+    follows entrained air (a power) fills the processor's window that the
+    lanes overlap, and took 10-15 % longer in lanes than alone."""
+    light = (tasks[:, 2] == READ) & np.all(P[tasks[:, 0]][:, LANE_FREE] == 0.0, axis=1)
+    alone = [tasks[k:k + 1] for k in np.flatnonzero(~light)]
+    tasks = tasks[light]
+    if not len(tasks):
+        return alone
+    fewest = 1 if core_to_spare() else 2
+    n = max(-(-len(tasks) // LANES), min(numba.get_num_threads(), len(tasks) // fewest), 1)
+    return np.array_split(tasks, n) + alone
+
+
+DRIVES_KEPT = 16        # drives a DriveMemory keeps (~2 MB each on a 12 000-sample run)
+DRIVES_MET = 4096      # drives it knows it met once (their keys only)
+DRIVES_REMEMBERED = 8   # drives of a kernel call that may go into it (a fit's batches; not a screen's)
+
+
+class DriveMemory:
+    """Drives (stack voltage and hysteresis at each step: ``_launch``) of a
+    caller's runs, kept between kernel calls: a drive met a second time in
+    a call with few drives is kept, and read in later calls instead of
+    integrated again. Once only, it is not kept: a fit of the amplifier or
+    the loop meets each of its drives once, the fits of a seal or a leak
+    meet the nominal's again and again."""
+
+    def __init__(self):
+        self.kept = OrderedDict()       # key -> (2, steps + 1) drive, the last used last
+        self.met = OrderedDict()       # key -> None: met once
+
+    def get(self, key):
+        drive = self.kept.get(key)
+        if drive is not None:
+            self.kept.move_to_end(key)
+        return drive
+
+    def met_before(self, key) -> bool:
+        """Whether ``key`` was met before; it is now."""
+        if key in self.met:
+            return True
+        self.met[key] = None
+        if len(self.met) > DRIVES_MET:
+            self.met.popitem(last=False)
+        return False
+
+    def keep(self, key, drive) -> None:
+        self.kept[key] = drive
+        if len(self.kept) > DRIVES_KEPT:
+            self.kept.popitem(last=False)
+
+
+def _launch(P, dts, runs, parts, keys=None, drives=None) -> list[np.ndarray]:
+    """One kernel call: (n_cand, 4, n_out) of each of ``runs`` ((t_in, V,
+    t_out)) for every candidate of P; ``parts``: (drivers, driver_of,
+    kept) of each run (``_drive_groups``, one slice). ``drives``: the
+    caller's DriveMemory (see ``simulate_runs``), ``keys`` naming each run
+    in it: a drive found there is read, and a drive met before in a call
+    with few of them is kept into it."""
+    in_at = np.cumsum([0] + [len(t) for t, _, _ in runs]).astype(np.int64)
+    out_at = np.cumsum([0] + [len(t) for _, _, t in runs]).astype(np.int64)
+    V = np.ascontiguousarray(np.concatenate([v for _, v, _ in runs], axis=1))
+    remember = drives is not None and sum(len(p[0]) for p in parts) <= DRIVES_REMEMBERED
+    first, then, given, new = [], [], [], []        # given: (row, drive) read; new: (row, key) to remember
+    rows = 0
+    for r, (drivers, driver_of, kept) in enumerate(parts):
+        n = len(driver_of)
+        driving = np.zeros(n, bool)
+        driving[drivers] = True
+        mode = np.where(driving, INTEGRATE, READ)
+        row = np.full(n, -1)
+        for g, c in enumerate(drivers):
+            key = (keys[r], P[c, DRIVE_COLS].tobytes(), float(dts[c])) if drives is not None else None
+            known = drives.get(key) if drives is not None else None
+            members = driver_of == g
+            if known is not None:
+                given.append((rows, known))
+                mode[members], row[members] = READ, rows
+                driving[members] = True             # read from the start: with the drives
+            elif (again := remember and drives.met_before(key)) or kept[g] >= 0:
+                mode[c], row[members] = KEEP, rows
+                if again:
+                    new.append((rows, key, _n_steps(dts[c], runs[r][2])))
+            else:
+                continue
+            rows += 1
+        task = np.column_stack([np.arange(n), np.full(n, r), mode, np.maximum(row, 0)]).astype(np.int64)
+        first.append(task[driving])
+        then.append(task[~driving])
+    n_steps = max([len(v[0]) - 1 for _, v in given] + [
+        _n_steps(dts[c], runs[r][2]) for c, r, m in np.concatenate(first)[:, :3] if m == KEEP] + [0])
+    vh = np.empty((max(rows, 1), 2, n_steps + 1))
+    for k, known in given:
+        vh[k, :, :known.shape[1]] = known
+    first, then = _lanes(P, np.concatenate(first)), _lanes(P, np.concatenate(then))
+    tasks = np.concatenate(first + then)
+    starts = np.cumsum([0] + [len(g) for g in first + then]).astype(np.int64)
+    with PARALLEL_LAUNCH:     # one parallel kernel at a time (sim/__init__.py)
+        out = _simulate(P, dts, np.concatenate([t for t, _, _ in runs]), V, in_at,
+                        np.concatenate([t for _, _, t in runs]), out_at, np.int64(V.shape[0] > 1), vh,
+                        np.ascontiguousarray(tasks[:, :2]), starts, np.int64(len(first)),
+                        np.ascontiguousarray(tasks[:, 2]), np.ascontiguousarray(tasks[:, 3]))
+    for k, key, steps in new:
+        drives.keep(key, vh[k, :, :steps + 1].copy())
+    return [out[:, :, a:b] for a, b in zip(out_at[:-1], out_at[1:])]
+
+
+def simulate_runs(model: PiezoHydraulicModel, runs, step_factor: float = STEP_FACTOR, drives=None,
+                  keys=None) -> list[dict]:
+    """``simulate`` of every candidate of ``model`` on each of ``runs``
+    ((t_in, v_in, t_out), t_out None for t_in), in one kernel call where
+    the drives allow (the runs' steps advance together: ``_simulate_lanes``).
+    Returns a dict of channels for each run.
+
+    ``drives`` (a DriveMemory, with ``keys``: a hashable name of each run)
+    remembers the drives (stack voltage and hysteresis at each step, which
+    depend on the drive parameters DRIVE, the step and the run only) met
+    again in calls with few of them, DRIVES_KEPT at most, and reads them in
+    later calls instead of integrating them again: the caller promises that
+    a key always names the same times and voltage (a diagnosis's bench,
+    whose runs do not change). A drive read is the one integrating it
+    gives, to the bit."""
+    P = model.matrix()
+    dts = stable_step(P, step_factor)
+    prepared = []
+    for t_in, v_in, t_out in runs:
+        t_in = np.ascontiguousarray(t_in, dtype=float)
+        V = np.ascontiguousarray(np.atleast_2d(np.asarray(v_in, dtype=float)))
+        if V.shape[0] not in (1, P.shape[0]):
+            raise ValueError("v_in must be shared or one row per candidate")
+        prepared.append((t_in, V, t_in if t_out is None else np.ascontiguousarray(t_out, dtype=float)))
+    if any(V.shape[0] > 1 for _, V, _ in prepared):         # a voltage row each: each shared one repeated
+        drives = None                                       # (drives kept by candidate, not by run)
+        prepared = [(t, np.ascontiguousarray(np.broadcast_to(V, (P.shape[0], V.shape[1]))), u) for t, V, u in prepared]
+    v_stride = np.int64(prepared[0][1].shape[0] > 1) if prepared else np.int64(0)
+    outs = [None] * len(prepared)
+    whole = []                                       # the runs whose drives fit one kernel call
+    for r, (t_in, V, t_out) in enumerate(prepared):
+        slices = list(_drive_groups(P, dts, v_stride, t_out))
+        if len(slices) == 1:
+            whole.append((r, slices[0][1:]))
+            continue
+        outs[r] = np.empty((P.shape[0], len(CHANNELS), len(t_out)))
+        for members, drivers, driver_of, kept in slices:
+            outs[r][members] = _launch(P[members], dts[members], [(t_in, V[members] if v_stride else V, t_out)],
+                                       [(drivers, driver_of, kept)])[0]
+    if whole:
+        for (r, _), y in zip(whole, _launch(P, dts, [prepared[r] for r, _ in whole], [p for _, p in whole],
+                                            None if keys is None else [keys[r] for r, _ in whole], drives)):
+            outs[r] = y
+    results = []
+    for out in outs:
+        bad = ~np.all(np.isfinite(out), axis=(1, 2))
+        if bad.any():
+            raise SimulationError(f"simulation diverged for candidates {np.flatnonzero(bad).tolist()}")
+        results.append({name: out[:, i, :] for i, name in enumerate(CHANNELS)})
+    return results
+
+
 def simulate(model: PiezoHydraulicModel, t_in, v_in, t_out=None,
              step_factor: float = STEP_FACTOR) -> dict[str, np.ndarray]:
     """Simulate every candidate of ``model`` driven by voltage v_in(t_in).
@@ -525,20 +882,4 @@ def simulate(model: PiezoHydraulicModel, t_in, v_in, t_out=None,
     Returns {channel: (n_cand, n_out)} for CHANNELS, positions from rest.
     Raises SimulationError when a candidate's state stops being finite.
     """
-    P = model.matrix()
-    t_in = np.ascontiguousarray(t_in, dtype=float)
-    V = np.ascontiguousarray(np.atleast_2d(np.asarray(v_in, dtype=float)))
-    if V.shape[0] not in (1, P.shape[0]):
-        raise ValueError("v_in must be shared or one row per candidate")
-    t_out = t_in if t_out is None else np.ascontiguousarray(t_out, dtype=float)
-    dts = stable_step(P, step_factor)
-    v_stride = np.int64(V.shape[0] > 1)
-    out = np.empty((P.shape[0], len(CHANNELS), t_out.shape[0]))
-    for members, drivers, driver_of, kept in _drive_groups(P, dts, v_stride, t_out):
-        with PARALLEL_LAUNCH:     # one parallel kernel at a time (sim/__init__.py)
-            out[members] = _simulate(P[members], dts[members], t_in, V[members] if v_stride else V,
-                                     t_out, v_stride, drivers, driver_of, kept)
-    bad = ~np.all(np.isfinite(out), axis=(1, 2))
-    if bad.any():
-        raise SimulationError(f"simulation diverged for candidates {np.flatnonzero(bad).tolist()}")
-    return {name: out[:, i, :] for i, name in enumerate(CHANNELS)}
+    return simulate_runs(model, [(t_in, v_in, t_out)], step_factor)[0]

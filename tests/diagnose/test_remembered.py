@@ -24,8 +24,8 @@ def test_a_repeated_model_is_not_simulated_again_and_gives_the_same_channels(mon
     first = bench.simulate_channels([friction], Z, bench.train)
     fresh = _bench().simulate_channels([friction], Z[::-1], bench.train)      # other batch, other order
     calls = []
-    raw = bench._raw
-    monkeypatch.setattr(bench, "_raw", lambda model, run: calls.append(run.name) or raw(model, run))
+    raw = bench._raw_runs
+    monkeypatch.setattr(bench, "_raw_runs", lambda model, runs: calls.extend(r.name for r in runs) or raw(model, runs))
     again = bench.simulate_channels([friction], np.array([[0.6], [0.45], [0.3]]), bench.train)
     assert len(calls) == len(bench.train)                     # 0.45 only, once a run
     for a, b, c in zip(first, again, fresh):

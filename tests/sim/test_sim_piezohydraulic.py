@@ -168,6 +168,69 @@ def test_candidates_of_one_drive_share_it_and_mixed_batches_equal_single_runs(mo
                 np.testing.assert_array_equal(together[name][i], alone[name][0])
 
 
+def _mixed_batch(n):
+    """n candidates of several drives, steps (stiffer oil), seals (LuGre,
+    Stribeck), damping, leaks, air and creep."""
+    loop = dict(alpha=0.13, beta=7.5e4, gamma=-5.5e4, n_bw=1.14)
+    forms = [dict(narrow_friction=0.5), dict(narrow_friction=2.0, narrow_breakaway=2.0, narrow_stribeck_velocity=2e-4),
+             dict(viscous_damping=30.0), dict(bulk_modulus=0.8e9), dict(slew_rate=200.0),
+             dict(narrow_presliding=2e-6, narrow_friction=1.0, narrow_breakaway=1.5),
+             dict(leak_conductance=1e-13, leak_orifice_area=1e-9), dict(air_fraction=0.01),
+             dict(creep_fraction=0.05, creep_time=0.1, log_creep=0.01), dict(amp_bandwidth=600.0, delta=-5e-8),
+             dict(no_return=1.0, wide_friction=5.0, wide_friction_pressure=1e-6)]
+    rows = [loop | forms[i % len(forms)] | {"d33": 6.7e-7 * (1.0 + 0.01 * i)} for i in range(n)]
+    names = set().union(*rows) | set(prototype().__dict__)
+    return rows, PiezoHydraulicModel(**{k: np.array([r.get(k, getattr(prototype(**loop), k)) for r in rows])
+                                        for k in names})
+
+
+def test_lanes_and_runs_together_equal_single_runs():
+    """More candidates than a lane group holds (sim.piezohydraulic.LANES),
+    of several drives and steps, on two runs of other lengths and rates in
+    one call (``simulate_runs``): each candidate on each run is its single
+    run, to the bit."""
+    from sizing.sim import piezohydraulic as ph
+
+    rows, batch = _mixed_batch(2 * ph.LANES + 3)
+    t1, v1 = slow_ramp()
+    t2 = np.linspace(0.0, 0.6, 301)                    # 500 Hz, a sine
+    v2 = 60.0 - 60.0 * np.cos(2 * np.pi * 3.0 * t2)
+    together = ph.simulate_runs(batch, [(t1, v1, None), (t2, v2, t2)])
+    for i, row in enumerate(rows):
+        for (t, v), out in zip([(t1, v1), (t2, v2)], together):
+            alone = simulate(prototype(**row), t, v)
+            for name in ph.CHANNELS:
+                np.testing.assert_array_equal(out[name][i], alone[name][0])
+
+
+def test_a_remembered_drive_gives_the_run_it_was_kept_from():
+    """A caller's memory of drives (``simulate_runs(drives=...)``): a small
+    call meeting its drives a second time keeps them, a later call reads
+    them instead of integrating, and each gives the same figures to the
+    bit; it keeps DRIVES_KEPT at most."""
+    from sizing.sim import piezohydraulic as ph
+
+    rows, batch = _mixed_batch(4)
+    t, v = slow_ramp()
+    drives = ph.DriveMemory()
+    outs = [ph.simulate_runs(batch, [(t, v, None)], drives=drives, keys=["ramp"])[0]]
+    assert not drives.kept and drives.met                     # met once: not kept
+    outs.append(ph.simulate_runs(batch, [(t, v, None)], drives=drives, keys=["ramp"])[0])
+    kept = dict(drives.kept)
+    assert 0 < len(kept) <= 4
+    outs.append(ph.simulate_runs(batch, [(t, v, None)], drives=drives, keys=["ramp"])[0])
+    assert all(drives.kept[k] is kept[k] for k in kept)        # read, not integrated again
+    for i, row in enumerate(rows):
+        alone = simulate(prototype(**row), t, v)
+        for out in outs:
+            for name in ph.CHANNELS:
+                np.testing.assert_array_equal(out[name][i], alone[name][0])
+    for k in range(ph.DRIVES_KEPT + 2):
+        for _ in range(2):
+            ph.simulate_runs(prototype(delta=-1e-9 * (k + 1)), [(t, v, None)], drives=drives, keys=["ramp"])
+    assert len(drives.kept) == ph.DRIVES_KEPT
+
+
 def test_rejects_mismatched_input_rows():
     t, v = slow_ramp()
     with pytest.raises(ValueError, match="one row per candidate"):

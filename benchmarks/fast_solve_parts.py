@@ -40,17 +40,9 @@ CPU is user + system time (``time.process_time``, ``getrusage`` for the
 child processes), best of ``--repeat``: the machine is shared, and CPU time
 is what the other jobs do not change much.
 
-Figures on this 2-core machine at a load average of 5-6 (four other jobs):
-the build's rows and force paths 0.071-0.075 s copies and arrays, 0.030-0.032 s
-views and lists (2.3-2.4x, bit-identical); the solve in one process, warm,
-one stage after another 2.64-3.18 s CPU (2.42-2.96 s in the main thread),
-wall 4.15-4.70 s, the DC and pump stages beside the piezohydraulic one
-2.73-3.20 s CPU (1.60-1.94 s in the main thread), wall 4.33-4.69 s, the
-same results.json; at load 3.2 (one core left to this process) 2.72 s CPU
-(2.50 s in the main thread), wall 2.74 s, against 2.85 s CPU (1.64 s in
-the main thread), wall 2.89 s. The main thread's CPU, which a quiet
-machine's wall time follows, falls by a third; nothing is gained while
-the other jobs hold the second core (hence ``threads.core_to_spare``).
+Each reference (marked old above) is the straightforward version of the
+same work, run beside it here. Today's figures are in docs/validation.md,
+"How the solve is made fast".
 """
 from __future__ import annotations
 

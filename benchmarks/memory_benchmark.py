@@ -9,7 +9,8 @@ driven by steps and a sine, simulated by the package's own closed loop with
 2 um of sensor noise and split into three runs; ``--samples`` counts all
 runs together (the accepted maximum is ``limits.Limits.samples``). Prints,
 per command, the exit code, wall time, time per sample and the peak
-resident memory (ru_maxrss of the child) against the limit.
+resident memory (ru_maxrss of the child) against the limit; today's
+figures are in docs/formats.md, beside the ``--max-samples`` limit.
 """
 from __future__ import annotations
 

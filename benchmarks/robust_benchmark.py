@@ -5,7 +5,7 @@
 
 1. The seed case (studies/seed-requirements.toml, 2 load cases) is solved
    once; its ``--designs`` best designs (of ``--technology`` when given;
-   now the best are DC designs from parts) get ``--samples`` Monte Carlo
+   for the seed the best are DC designs from parts) get ``--samples`` Monte Carlo
    samples each, every sample a full simulation under both load cases, run
    serially and on a local Dask cluster of ``--workers`` processes. Prints
    the wall time, the throughput in simulated candidate-seconds per wall
@@ -16,9 +16,10 @@
    80..120 degC) on the local cluster: wall time.
 
 Targets: the Monte Carlo under 60 s and the sweep of 20 solves
-under 2 minutes on a 2-core machine. Timings depend on what else the
-machine runs; the figures in the README were taken while other jobs shared
-the two cores.
+under 2 minutes on a 2-core machine. The serial run is the reference for
+the cluster's. Timings depend on what else the machine runs; today's
+figures, with the load they were taken at, are in docs/validation.md,
+"Robust sizing".
 """
 from __future__ import annotations
 

@@ -11,7 +11,8 @@ stroke. Both sides are swept (the batch simulator's step factor; solve_ivp's
 RK45, LSODA and Radau at several tolerances) and each is timed at its fastest
 setting whose error is at most 0.1% of the stroke; solve_ivp's time per
 candidate is measured on a sample of candidates. Prints the speed ratio and the throughput in simulated
-candidate-seconds per wall-clock second.
+candidate-seconds per wall-clock second. solve_ivp is the reference; today's
+figures are in docs/validation.md, "The batch simulator against scipy".
 """
 from __future__ import annotations
 

@@ -18,20 +18,16 @@ exits 1 when a limit is exceeded.
 
 With ``--sizing``, only the piezohydraulic geometric programs of the seed
 (every combination the search keeps, every structure material and
-compensator) are timed, in CPU seconds, best of ``--repeat``: the sizer as
-the solve runs it (each program compiled once, re-solved by handing the
-cone data to Clarabel) against cvxpy's own re-solve of the same programs
-(``problem.solve(gp=True)`` every time), on every ``--stride``-th input, in
-the same run; the answers are compared too. Figures on this 2-core machine
-(CPU seconds, load 3-8): the 936 programs in 2.2-2.8 s (2.3-3.0 ms each,
-about seven tenths of it Clarabel's own 23 iterations over 72 exponential
-cones); every 8th program 0.29-0.32 s against 0.74-1.12 s through cvxpy,
-x2.5-3.5, the same feasibility and binding requirements, the points within
-4e-5. Before the re-solves called Clarabel directly (through cvxpy's
-``solve_via_data``, with the cones, settings and sparse checks rebuilt per
-solve) the seed's 1079 programs took 3.4-3.6 s against 2.8-3.1 s now, and
-the whole --fast solve (the engine, no files) 7.1 s against 5.9 s (same
-run, load 5-8); the answers are bitwise the same.
+compensator) are timed, in CPU seconds, best of ``--repeat``: Clarabel's
+direct re-solve of each compiled program (``convex.GPSizer``, the path the
+solve takes for the rows its batch sizer does not certify) against cvxpy's
+own re-solve of the same programs (``problem.solve(gp=True)`` every time,
+the reference), on every ``--stride``-th input, in the same run; the
+answers are compared too.
+
+The reference printed beside the default solve, ``EARLIER_DEFAULT_S``, is
+that solve's wall time before its flips' re-solves were narrowed. Today's
+figures are in docs/validation.md, "Simulator and solve speed".
 """
 from __future__ import annotations
 
@@ -53,8 +49,8 @@ from sizing.studies import compliance
 
 LIMIT_S = 20.0            # solve --fast
 LIMIT_DEFAULT_S = 20.0    # the default solve: flips and compliance
-# the default seed solve before its flips' re-solves sized only the variants
-# feasible today and read back what they had run (docs/validation.md)
+# the reference: the default seed solve's wall time, warm, before its flips'
+# re-solves sized only the variants asked about and read back what they had run
 EARLIER_DEFAULT_S = 70.0
 PUMP_LIMIT_S = 3.0
 ROOT = Path(__file__).resolve().parents[1]
@@ -123,7 +119,7 @@ def main() -> int:
         sizing_speed(req, catalog, args.repeat, args.stride)
         return 0
     loads = [c["load_N"] for c in load_cases(req.load)]
-    times, dc_times, pump_times, compliance_times, flips, fast_cpu = [], [], [], [], [], []
+    times, dc_times, pump_times, compliance_times, flips, fast_cpu, attached = [], [], [], [], [], [], []
     for _ in range(args.repeat + 1):
         t0, c0 = time.perf_counter(), time.process_time()
         out = solve(req, sha, catalog, fast=True)
@@ -136,7 +132,8 @@ def main() -> int:
                                         for d in dc_parts_designs(req, catalog, loads).designs]))
         pump_times.append(_timed(lambda: [pump_candidate(req, d) for d in pump_designs(req, catalog, loads).designs]))
         # what the default solve adds to --fast: the probability of compliance and its policy
-        compliance_times.append(_timed(lambda: compliance.attach(req, catalog, out.results, out.stages)))
+        compliance_times.append(_timed(lambda: attached.append(compliance.attach(req, catalog, out.results,
+                                                                                  out.stages))))
     counts = out.results["counts"]
     warm, dc_warm = min(times[1:]), min(dc_times[1:])
     print(f"seed solve: cold {times[0]:.2f} s, warm best {warm:.2f} s of {args.repeat} "
@@ -148,7 +145,7 @@ def main() -> int:
     pump_warm = min(pump_times[1:])
     print(f"piezo pump alone: warm {pump_warm:.2f} s (limit {PUMP_LIMIT_S:g} s) for {pump.get('combinations', 0)} "
           f"designs screened, {pump.get('simulated', 0)} simulated")
-    rec = out.results["summary"]["comparison"]["recommended"] or {}
+    rec = attached[-1]["summary"]["comparison"]["recommended"] or {}     # attach returns new results
     print(f"probability of compliance (the default solve over --fast): warm best {min(compliance_times[1:]):.2f} s, "
           f"{len(rec.get('examined', []))} designs examined by the policy; solve with it {warm + min(compliance_times[1:]):.2f} s, "
           f"--fast {warm:.2f} s")

@@ -16,44 +16,17 @@ way:
   piezo campaign (minutes).
 
 The solve, suite and check figures stand beside the reference figures
-below (``REFERENCES``: this 2-core machine, before the work they name).
+below (``REFERENCES``: each the same command on this 2-core machine before
+the work it names); help and the input error beside ``EAGER``, in the same
+run.
 
     python benchmarks/tool_speed.py [--repeat 3] [--profile] [--suite] [--diagnose-check]
 
 Prints each figure, its reference, the ratio and the load average (the
 machine is shared: a figure taken under load is slower by about the load
 over the core count). Exits 1 when a quick figure (help, input error)
-exceeds its limit.
-
-Figures on this 2-core machine shared by six jobs (load average 8-14):
-``--help`` 0.49-0.52 s (load 8); an input error 1.6-1.7 s against 4.5 s
-the old way (load 8; pint still loads dask's core, not distributed); the
-seed solve --fast warm 45 s at load 13 (cProfile: 94 % in the engine, 66 %
-in the convex sizing's 1357 cvxpy solves; results.json under 1 %, the report's
-three figures under 10 %); the README's test command (the quick tier, 929
-tests) 12 min 06 s at load 13; diagnose --check on the piezo campaign
-836 s at load 13, 81 % of it inside the piezohydraulic simulator's kernel
-(sim/piezohydraulic.py ``_simulate``, 6581 calls over 32 cases).
-
-The seed solve --fast's CPU time (every thread's, ``time.process_time``
-around ``sizing.cli.main``, the second and later calls of one process, best
-of 5; steadier than wall time when the machine is shared), this tree
-against the same work before the batch sizer's and the DC search's
-bookkeeping was trimmed, alternated in one run at load 2.8-3.6 on 2 cores:
-3.13-3.48 s against 3.27-3.96 s (best 3.13 against 3.27 s, 4 % less;
-pairs 4 %, 3 %, 12 %). Where the CPU goes (thread CPU time, warm, load 6):
-the piezohydraulic stage 1.3 s (its batch geometric programs 0.74 s: six
-solves, 456 Newton steps, 1358 backtracking trials, bound by numpy's
-per-call cost on a few rows; its simulations 0.2 s), the piezo pump's
-simulations 0.56 s (two load cases, compiled), the DC stage 0.46 s
-(simulations 0.09 s), ranking and results 0.2 s, the report and the files
-0.25 s, the command line's own set-up and the collector's full pass after
-the previous solve about 0.3 s. The batch programs stay bit for bit what
-they were: their BLAS products depend on which rows they hold together
-(measured: one row's gradient changes in its last bit between batches of
-128 and 129 rows), so every product keeps its rows, and the iterations
-after the last certified row stay (no cheap proof that a row left cannot
-certify: the multipliers leave the objective's gradient uncancelled).
+exceeds its limit. Today's figures, and where the solve's time goes, are
+in docs/validation.md, "Simulator and solve speed".
 """
 from __future__ import annotations
 
@@ -73,7 +46,10 @@ ROOT = Path(__file__).resolve().parents[1]
 SEED = ROOT / "studies" / "seed-requirements.toml"
 PIEZO_CAMPAIGN = ROOT / "studies" / "campaigns" / "piezo-prototype"
 
-# (reference seconds, how the reference was done, limit seconds)
+# (reference seconds, how the reference was done, limit seconds): the
+# --fast solve before results.json's encoder and the deferred imports, the
+# test command when every test ran in one tier, and the piezo campaign's
+# check before the simulators' idle threads slept
 REFERENCES = {
     "solve_fast": (9.3, "seed solve --fast, warm, before the JSON and import work", 2.0),
     "suite": (12 * 60.0, "README command, every test in one tier, 936 tests", 180.0),
@@ -86,9 +62,9 @@ def _load() -> str:
 
 
 LIMITS = {"help": 0.5, "input_error": 1.0}
-# imported first, the old way: every module of sizing.api (the package once
-# imported them all: the fits' numba and scipy.signal with them) and the
-# engine, which a solve imported before it read its requirements (cvxpy)
+# the reference for help and an input error, imported first: every module
+# of sizing.api (the fits' numba and scipy.signal with them) and the engine
+# (cvxpy), as the command line imported them before its imports were deferred
 EAGER = tuple(f"sizing.api.{m}" for m in ("catalogs", "checks", "diagnosis", "evaluation", "fitting", "output",
                                            "solution", "studies")) + ("sizing.engine.solve",)
 

@@ -5,9 +5,10 @@ numba marks a cached kernel stale when the file that defines it changes,
 not when a function it inlines from another file does (numba's developer
 documentation, "Notes on Caching", limitations: cache invalidation "fails
 to recognize changes in symbols defined in another file"; numba pull
-requests 8396 and 9563, which would extend it, were not merged). Two of the simulators' kernels inline the Bouc-Wen step of
-physics/bouc_wen.py: after an edit there, or a pull that changes only that
-file, they went on running the old loop from the cache. The kernels are
+requests 8396 and 9563, which would extend it, are not merged). Two of the
+simulators' kernels inline the Bouc-Wen step of physics/bouc_wen.py: after
+an edit there, or a pull that changes only that file, numba's own cache
+would go on running the previous loop. The kernels are
 therefore cached in a folder named by a digest of every file that holds
 one and of its neighbours (``KERNEL_FILES``, kept complete by
 tests/project/test_kernel_cache.py),

@@ -74,7 +74,7 @@ def screen_ranked(bench, effect, seed: int = 0, head=(), z_heads=(np.zeros(0),),
     if extra > 0:
         Z = np.vstack([Z, _lhs(extra, d, seed + 1)])
     Z = np.clip(Z, 0.0, 1.0)
-    # stable: among equal scores the earlier head start and point, as before;
+    # stable: among equal scores the earlier head start and point;
     # computed as read, the candidates that cannot rank first not simulated
     # on every run (ranking.py)
     points = [(z, zh, k < n_regular) for zh in z_heads for k, z in enumerate(Z)]

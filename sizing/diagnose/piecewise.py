@@ -4,7 +4,7 @@ Test voltages are mostly made of holds, ramps and steps (trapezoids,
 staircases of ramped steps). A symmetric low-pass rounds every corner of
 such a signal: a 4-sample Gaussian moves a 1.5 V/sample ramp start by some
 2 V for ten samples, and the model carries that input error into a gap that
-no effect explains (on the cross-form staircases it was 2.5-4.6 x the
+no effect explains (on the cross-form staircases it is 2.5-4.6 x the
 output error of the white voltage noise alone). When the log *is*
 piecewise linear to within its noise, fitting it as such removes the
 noise and keeps the corners:
@@ -36,10 +36,8 @@ noise and keeps the corners:
 """
 from __future__ import annotations
 
-import llvmlite.binding as llvm
 import numba
 import numpy as np
-from numba.extending import get_cython_function_address
 from scipy.linalg import LinAlgError
 from scipy.ndimage import convolve1d, gaussian_filter1d, maximum_filter1d, median_filter
 
@@ -52,15 +50,32 @@ from .settings import DEFAULT
 # 1.2 us a call to type it (a short fit takes 1.5 us), 15-20 % of the
 # voltage treatment
 _DGTSV_SYMBOL = "sizing_scipy_lapack_dgtsv"
-llvm.add_symbol(_DGTSV_SYMBOL, get_cython_function_address("scipy.linalg.cython_lapack", "dgtsv"))
 _INT, _DOUBLE = numba.types.CPointer(numba.int32), numba.types.CPointer(numba.float64)
 _DGTSV = numba.types.ExternalFunction(_DGTSV_SYMBOL, numba.void(_INT, _INT, *[_DOUBLE] * 4, _INT, _INT))
+_dgtsv_linked = False
+
+
+def _link_dgtsv() -> None:
+    """Give LLVM dgtsv's address under ``_DGTSV_SYMBOL``, once a process,
+    before the first call of a kernel that reaches it (``_gtsv``, through
+    ``_hat_fit``): numba resolves the name at that call, whether it compiles
+    the kernel or loads it from its cache. Not at import: LLVM's symbol
+    table is the whole process's, shared by every numba kernel and
+    llvmlite user, and importing a module should not change it."""
+    global _dgtsv_linked
+    import llvmlite.binding as llvm
+    from numba.extending import get_cython_function_address
+
+    llvm.add_symbol(_DGTSV_SYMBOL, get_cython_function_address("scipy.linalg.cython_lapack", "dgtsv"))
+    _dgtsv_linked = True
 
 
 def hat_fit(v: np.ndarray, knots: np.ndarray) -> np.ndarray:
     """Least-squares continuous piecewise-linear fit of v with nodes at the
     sorted positions ``knots`` in samples (first 0, last len(v) - 1; the
     others may fall between samples)."""
+    if not _dgtsv_linked:             # a flag, not functools.cache: hat_fit runs hundreds of times a log
+        _link_dgtsv()
     fit, info = _hat_fit(np.ascontiguousarray(v, dtype=float), np.ascontiguousarray(knots, dtype=float))
     if info > 0:
         raise LinAlgError("singular matrix")
@@ -107,7 +122,8 @@ def _hat_fit(v, knots):
 def _gtsv(dl, d, du, b):
     """LAPACK's dgtsv for one right-hand side (contiguous arrays, changed
     in place as LAPACK changes them): b becomes the solution; returns
-    LAPACK's info (0, or the singular pivot's number)."""
+    LAPACK's info (0, or the singular pivot's number). Called from Python,
+    ``_link_dgtsv()`` first."""
     ints = np.empty(4, np.int32)                      # n, nrhs, ldb, info
     ints[0], ints[1], ints[2], ints[3] = d.shape[0], 1, d.shape[0], 0
     _DGTSV(ints[0:].ctypes, ints[1:].ctypes, dl.ctypes, d.ctypes, du.ctypes, b.ctypes, ints[2:].ctypes,

@@ -20,12 +20,11 @@ RECALIBRATABLE = {
 # re-fitted by default (``--recalibrate`` not given): the parameters a bench
 # campaign pins down without standing in for an effect of the library
 # (seal friction would absorb seal_stick_slip, so it is not re-fitted unasked).
-# The wide seal's friction was tried as a default: it removed a
-# named null on a two-stack 3 in rig whose wide seal is stated 10 N against
-# 11.9 N, but
-# a single slow training ramp does not pin it down (on a same-form noise-only
-# campaign it went from 10 N to 15 N, taking up the input treatment's error
-# at the reversals, and doubled the holdout gap), so it stays opt-in.
+# The wide seal's friction is not a default: it takes up a two-stack 3 in
+# rig's mis-stated wide seal (10 N stated against 11.9 N), but a single slow
+# training ramp does not pin it down (on a same-form noise-only campaign it
+# goes from 10 N to 15 N, taking up the input treatment's error at the
+# reversals, and doubles the holdout gap), so it stays opt-in.
 DEFAULT = {"piezohydraulic": ["d33"], "dc_motor": ["c1", "c2"]}
 
 

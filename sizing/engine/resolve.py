@@ -44,7 +44,7 @@ from .rank import OBJECTIVE_KEYS, standings
 class Verdict:
     """One technology after a (re-)solve: feasible, the id and first
     objective of its best feasible design, and its feasible candidates
-    (the ``Alive`` of a search that tightens from here)."""
+    (``alive``: where a search that tightens from here starts)."""
 
     feasible: bool
     best: str | None = None

@@ -10,7 +10,7 @@ same answer, so it is read back instead of run again. The key is the
 input itself (every field of the program's input, every array of a
 simulated design and its load cases), never the value moved, so nothing
 that depends on that value can be read at another one. Outside
-``reuse()`` nothing is kept: a plain solve runs as before.
+``reuse()`` nothing is kept: a plain solve runs every stage.
 """
 from __future__ import annotations
 

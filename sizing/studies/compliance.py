@@ -20,7 +20,7 @@ nominal recommendation first), each examined in turn, at most
 ``MAX_EXAMINED``; the first whose estimate reaches ``min_compliance`` is
 recommended. ``min_compliance = 0``: the nominal answer, its probability
 stated. Designs whose parts carry no tolerance model (catalog DC actuators,
-piezo pumps: ``STUDIED``) are stated without a probability and are not
+piezo pumps: ``studied``) are stated without a probability and are not
 picked by a policy above 0.
 """
 from __future__ import annotations

@@ -139,8 +139,9 @@ def test_compiled_tridiagonal_solve_is_lapack_with_row_interchanges():
     # random systems pivot, so a sub- and super-diagonal swapped would show
     from scipy.linalg import solve_banded
 
-    from sizing.diagnose.piecewise import _gtsv
+    from sizing.diagnose.piecewise import _gtsv, _link_dgtsv
 
+    _link_dgtsv()
     rng = np.random.default_rng(5)
     for trial in range(500):
         n = int(rng.integers(2, 30))
@@ -152,11 +153,37 @@ def test_compiled_tridiagonal_solve_is_lapack_with_row_interchanges():
         assert x.tobytes() == solve_banded((1, 1), ab, b).tobytes()
 
 
+# A fresh process: importing the module leaves LLVM's symbol table alone;
+# the first fit gives dgtsv its name and runs the kernel numba cached
+FRESH = """
+import numpy as np, llvmlite.binding as llvm
+from sizing.diagnose import piecewise
+before = llvm.address_of_symbol(piecewise._DGTSV_SYMBOL)
+fit = piecewise.hat_fit(np.cos(np.arange(400.0) / 37.0), np.array([0.0, 50.5, 120.0, 399.0]))
+print(before, llvm.address_of_symbol(piecewise._DGTSV_SYMBOL) is not None,
+      sum(piecewise._hat_fit.stats.cache_hits.values()), fit.tobytes().hex())
+"""
+
+
+def test_import_registers_nothing_and_a_second_process_loads_the_cached_kernel():
+    import subprocess
+    import sys
+
+    runs = [subprocess.run([sys.executable, "-c", FRESH], capture_output=True, text=True, check=True).stdout.split()
+            for _ in range(2)]                  # the first may compile and cache; the second loads
+    fit = hat_fit(np.cos(np.arange(400.0) / 37.0), np.array([0.0, 50.5, 120.0, 399.0]))
+    for before, linked, _, fit_hex in runs:
+        assert before == "None" and linked == "True"
+        assert fit_hex == fit.tobytes().hex()
+    assert int(runs[1][2]) >= 1
+
+
 def test_a_singular_system_names_its_pivot():
     from scipy.linalg import LinAlgError
 
-    from sizing.diagnose.piecewise import _gtsv
+    from sizing.diagnose.piecewise import _gtsv, _link_dgtsv
 
+    _link_dgtsv()
     # the second row is zero: LAPACK's info names pivot 2
     assert _gtsv(np.zeros(2), np.array([1.0, 0.0, 1.0]), np.zeros(2), np.ones(3)) == 2
     with pytest.raises(LinAlgError):

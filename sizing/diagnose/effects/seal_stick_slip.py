@@ -58,11 +58,11 @@ EVENTS = {"events": True}
 
 # The output seal's running friction, N, searched on a linear scale up to
 # 20 N; on a rig, from its stated running friction (``AddedFriction``).
-# A log scale (to reach a seal that only sticks, at the stated 0.2 N, with
-# more screened points) was tried: it named no such seal of another
-# simulator (no library seal at that size removed any of their gap), and
-# ranked the seal among the families paired with a creep, which moved
-# that creep's verdict to unexplained.
+# Not a log scale (to reach a seal that only sticks, at the stated 0.2 N,
+# with more screened points): it names no such seal of another simulator
+# (no library seal at that size removes any of their gap), and ranks the
+# seal among the families paired with a creep, which moves that creep's
+# verdict to unexplained.
 RUNNING_N = (0.02, 20.0)
 
 

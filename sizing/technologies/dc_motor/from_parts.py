@@ -1,6 +1,6 @@
 """The DC option sized from parts: screen every motor x screw x
-gear x drive (``dc_parts``), give each design its controller
-(``dc_controller``), simulate the best under every load case with the
+gear x drive (``search``, ``parts``), give each design its controller
+(``controller``), simulate the best under every load case with the
 back-EMF, current and voltage limits and the load term (``sim/dc_motor``,
 batched over designs and cases), and return each as a ``records.DCDesign``
 (``record.py`` writes its results.json candidate, docs/formats.md).

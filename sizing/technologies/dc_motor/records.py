@@ -15,7 +15,7 @@ if TYPE_CHECKING:                   # the types alone: not imported when the mod
 
 @dataclass(frozen=True)
 class DCActuatorDesign:
-    """A catalog DC actuator simulated under every load case (``dc_candidates``)."""
+    """A catalog DC actuator simulated under every load case (``catalog_actuators``)."""
 
     actuator: DCActuator
     static: Mapping                 # dc.static_figures at the largest load, and free_stroke_m

@@ -237,7 +237,8 @@ def size(values: dict, travel: float, peak_force, holding_force, rev_per_s, scre
 
 
 def static_figures(sized: dict) -> dict:
-    """Flat static figures of the members (``member_figure`` keys, SI)."""
+    """Flat static figures of the members, keyed ``<member>_<figure>``
+    (``rod_mass_kg``), SI."""
     out, shape = {}, np.shape(sized["mass_kg"])
     for name, figures in sized["members"].items():
         for key, val in figures.items():

@@ -18,6 +18,14 @@ objective is then within GAP of the optimum (relative, the objective
 being a logarithm). Rows not certified (infeasible parts, or a row the
 method did not finish) are left to Clarabel, one at a time
 (``convex.GPSizer``), which stays the reference.
+
+Which rows an iteration's products hold together is part of the answer:
+a BLAS product's last bit depends on the rows it holds (one row's
+gradient changes between batches of 128 and 129 rows), so rows leave the
+batch only when certified or given up, and grouping them otherwise would
+change the answers' bits. The rows left after the last certifiable one
+keep iterating until given up: there is no cheap proof that a row cannot
+certify (its multipliers leave the objective's gradient uncancelled).
 """
 from __future__ import annotations
 

@@ -3,8 +3,13 @@ one line on stderr; any other exception is a bug -> traceback, exit 1.
 SIGINT exits 130 and SIGTERM 143, with one line (outputs are written by
 ``io.atomic``, so they are either complete or untouched). Every numeric
 option is checked here (``number_option``): finite, in range, an integer
-where it counts something."""
-from __future__ import annotations
+where it counts something.
+
+The annotations are evaluated when the module loads (no ``from __future__
+import annotations``): typer reads every command's signature each time it
+builds the command line, and strings it would evaluate twice a parameter
+(``inspect.signature(eval_str=True)``, then ``get_type_hints``): 0.04-0.09 s
+a build, 0.003-0.008 s without them."""
 
 import signal
 import sys

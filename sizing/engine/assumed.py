@@ -93,13 +93,23 @@ def parts_of(catalog, components: dict) -> dict:
     return parts
 
 
-def of_candidate(catalog, c: Candidate) -> list[dict]:
-    """A ranked candidate's ``rests_on_assumed``, never null: the list its
-    engine gave when it is the contract's, else read from its parts."""
-    given = c.rests_on_assumed
-    if given and all(isinstance(x, dict) for x in given):
-        return list(given)
-    return rests_on_components(catalog, c.components, c.driver)
+def of_candidates(catalog, candidates: list[Candidate]) -> list[list[dict]]:
+    """Each ranked candidate's ``rests_on_assumed``, never null: the list
+    its engine gave when it is the contract's, else read from its parts;
+    each set of parts and driver read once (a solve ranks thousands of
+    designs on a few hundred such sets)."""
+    read: dict[tuple, list[dict]] = {}
+    out = []
+    for c in candidates:
+        given = c.rests_on_assumed
+        if given and all(isinstance(x, dict) for x in given):
+            out.append(list(given))
+            continue
+        key = (tuple((k, v) for k, v in c.components.items() if isinstance(v, str)), c.driver)
+        if key not in read:
+            read[key] = rests_on_components(catalog, c.components, c.driver)
+        out.append([dict(row) for row in read[key]])
+    return out
 
 
 def in_words(catalog, record: dict) -> str:

@@ -55,8 +55,8 @@ def solve(req: RequirementsFile, requirements_sha256: str, catalog: Catalog, pro
     ranking = standings([c.margins for c in unranked], [c.metrics for c in unranked],
                         [OBJECTIVE_KEYS[k] for k in req.objectives.minimize])
     ranked = sorted((c.with_fields(**s.fields()) for c, s in zip(unranked, ranking)), key=lambda c: c.rank)
-    candidates = [c.with_fields(rests_on_assumed=assumed.of_candidate(catalog, c), name=n)
-                  for c, n in zip(ranked, names.unique(ranked))]
+    candidates = [c.with_fields(rests_on_assumed=rests, name=n)
+                  for c, rests, n in zip(ranked, assumed.of_candidates(catalog, ranked), names.unique(ranked))]
     stages = stages_of({name: records for name, (_, records) in solved.items()})
     names_by_id = {c.id: c.name for c in candidates}
     results = _results(req, requirements_sha256, catalog, cases, candidates, outcomes,

@@ -1,13 +1,16 @@
-"""Plotly figures of a solve, built from its results only (its ranked
-``Candidate``s and the time traces), never from the stages' records."""
+"""The solve report's figures, built from its results only (its ranked
+``Candidate``s and the time traces), never from the stages' records; each
+is plotly's JSON (``report.plain``: built on every solve, written without
+the graph objects' checks, which tests/report/test_figures.py makes)."""
 from __future__ import annotations
 
+import json
+from functools import lru_cache
 from typing import TYPE_CHECKING
 
 import numpy as np
-import plotly.graph_objects as go
-from plotly.subplots import make_subplots
 
+from . import plain
 from .layout import no_overprint
 from ..technologies.registry import presentation, technologies
 from .words import tech_label
@@ -56,7 +59,7 @@ def _front_2d(points):
     return front
 
 
-def pareto_figure(results: dict) -> go.Figure:
+def pareto_figure(results: dict) -> dict:
     """Objective space: feasible and infeasible distinct, DC options marked,
     the Pareto front joined by a line."""
     xo, yo = _axes(results["objectives"])
@@ -87,74 +90,92 @@ def pareto_figure(results: dict) -> go.Figure:
         pts[key][2].append(hover_text(c))
         if c.feasible:
             fronts.setdefault(c.technology, []).append((m[xk] * xs, m[yk] * ys))
-    fig = go.Figure()
+    data = []
     for key, style in groups.items():
         x, y, text = pts[key]
         if not x:
             continue
-        fig.add_trace(go.Scatter(x=x, y=y, mode="markers", name=key, text=text, hoverinfo="text",
-                                 marker=dict(symbol=style["symbol"], color=style["color"], size=style["size"],
-                                             line=dict(width=1.5, color=style["color"]))))
+        data.append(dict(type="scatter", x=x, y=y, mode="markers", name=key, text=text, hoverinfo="text",
+                         marker=dict(symbol=style["symbol"], color=style["color"], size=style["size"],
+                                     line=dict(width=1.5, color=style["color"]))))
     for tech, pts_ in fronts.items():
         front = _front_2d(pts_)
-        fig.add_trace(go.Scatter(x=[p[0] for p in front], y=[p[1] for p in front], mode="lines",
-                                 name=f"{tech_label(tech)} front (feasible)",
-                                 line=dict(color=presentation(tech).front_color, dash="dot"),
-                                 hoverinfo="skip"))
-    fig.update_layout(title=f"Designs in objective space ({xo} vs {yo}); hover for the design",
-                      xaxis_title=xl, yaxis_title=yl, xaxis_type="log", yaxis_type="log",
-                      xaxis_dtick="D2", yaxis_dtick="D2",      # 1, 2, 5 per decade: the 7, 8, 9 labels crowd
-                      template="plotly_white", height=520)
-    return no_overprint(fig)
+        data.append(dict(type="scatter", x=[p[0] for p in front], y=[p[1] for p in front], mode="lines",
+                         name=f"{tech_label(tech)} front (feasible)",
+                         line=dict(color=presentation(tech).front_color, dash="dot"), hoverinfo="skip"))
+    # dtick D2: 1, 2, 5 per decade (the 7, 8, 9 labels crowd)
+    return no_overprint(plain.figure(data, dict(
+        title=dict(text=f"Designs in objective space ({xo} vs {yo}); hover for the design"),
+        xaxis=dict(title=dict(text=xl), type="log", dtick="D2"), yaxis=dict(title=dict(text=yl), type="log", dtick="D2"),
+        height=520)))
 
 
-def traces_figure(results: dict, traces: list[dict]) -> go.Figure:
+def traces_figure(results: dict, traces: list[dict]) -> dict:
     """Output position against time of the top designs, one panel per load case."""
     cases = results["load_cases"]
     n = max(1, len(cases))
     titles = [f"load case {i + 1}: {c['load_N']:.0f} N" + (f" ({c['dynamic_pressure_Pa'] / 1e3:g} kPa)"
                                                             if "dynamic_pressure_Pa" in c else "")
               for i, c in enumerate(cases)] or ["no load"]
-    fig = make_subplots(rows=1, cols=n, subplot_titles=titles, shared_yaxes=True)
+    layout = _panels(n)
+    for note, text in zip(layout["annotations"], titles):
+        note["text"] = text
     stroke = results["requirements"]["stroke_m"] * 1e3
     palette = ["#1f77b4", "#ff7f0e", "#2ca02c", "#9467bd", "#8c564b", "#d62728", "#e377c2", "#17becf"]
+    data = []
     for k, tr in enumerate(traces):
         color = palette[k % len(palette)]
         for i, case in enumerate(tr["cases"][:n]):
-            # arrays: plotly checks a list element by element, an array at once
-            # (and writes it as a typed array, the same doubles)
-            fig.add_trace(go.Scatter(x=np.asarray(case["t"], float), y=np.asarray(case["position_m"], float) * 1e3,
-                                     mode="lines",
-                                     name=tr.get("name", tr["id"]) + ("" if tr["feasible"] else " (infeasible)"),
-                                     legendgroup=tr["id"], showlegend=(i == 0),
-                                     line=dict(color=color, dash=presentation(tr["technology"]).trace_dash)),
-                          row=1, col=i + 1)
-    t_req = results["requirements"]["stroke_time_s"]
+            data.append(dict(type="scatter", x=plain.typed(case["t"]), y=plain.typed(np.asarray(case["position_m"], float) * 1e3),
+                             mode="lines", name=tr.get("name", tr["id"]) + ("" if tr["feasible"] else " (infeasible)"),
+                             legendgroup=tr["id"], showlegend=(i == 0),
+                             line=dict(color=color, dash=presentation(tr["technology"]).trace_dash),
+                             xaxis=_axis("x", i), yaxis=_axis("y", i)))
+    t_req, dotted = results["requirements"]["stroke_time_s"], dict(color="gray", dash="dot")
+    layout["shapes"] = [shape for i in range(n)
+                        for shape in (plain.line(_axis("y", i), stroke, dotted), plain.line(_axis("x", i), t_req, dotted))]
     for i in range(n):
-        fig.add_hline(y=stroke, line=dict(color="gray", dash="dot"), row=1, col=i + 1)
-        fig.add_vline(x=t_req, line=dict(color="gray", dash="dot"), row=1, col=i + 1)
-        fig.update_xaxes(title_text="time (s)", row=1, col=i + 1)
-    fig.update_yaxes(title_text="output position from loaded rest (mm)", row=1, col=1)
-    fig.update_layout(title="Time traces of the top designs (dotted: required stroke and the time allowed for it)",
-                      template="plotly_white", height=480)
-    return no_overprint(fig)
+        layout[_axis("xaxis", i)]["title"] = dict(text="time (s)")
+    layout["yaxis"]["title"] = dict(text="output position from loaded rest (mm)")
+    layout.update(title=dict(text="Time traces of the top designs (dotted: required stroke and the time allowed for it)"),
+                  height=480)
+    return no_overprint(plain.figure(data, layout))
 
 
-def comparison_figure(results: dict, picks: list[Candidate], title: str) -> go.Figure:
+def _axis(name: str, i: int) -> str:
+    """Panel i's axis: x, x2, x3, ... (xaxis, xaxis2, ... in the layout)."""
+    return name if i == 0 else f"{name}{i + 1}"
+
+
+@lru_cache(maxsize=None)
+def _panels_json(n: int) -> str:
+    """The layout of n panels side by side sharing their y axis, titled, as
+    plotly's make_subplots lays them out (its axes' domains and title
+    annotations; made once per count)."""
+    from plotly.subplots import make_subplots
+    layout = make_subplots(rows=1, cols=n, subplot_titles=[" "] * n, shared_yaxes=True).to_plotly_json()["layout"]
+    layout.pop("template", None)
+    return json.dumps(layout)
+
+
+def _panels(n: int) -> dict:
+    return json.loads(_panels_json(n))
+
+
+def comparison_figure(results: dict, picks: list[Candidate], title: str) -> dict:
     """Margins of the best designs of each technology (``title``: which
     against which), one row per requirement (horizontal bars: the
     requirement names read level, however many there are)."""
-    fig = go.Figure()
     keys = [k for k in MARGIN_ORDER if any(k in c.margins for c in picks)]
+    data = []
     for c in picks:
         x = [c.margins.get(k) for k in keys]
-        fig.add_trace(go.Bar(y=keys, x=[v * 100 if v is not None else None for v in x], name=c.name or c.id,
-                             orientation="h",
-                             hovertext=[f"{c.name or c.id}<br>{k}: {v:+.1%}" if v is not None else f"{k}: n/a"
-                                        for k, v in zip(keys, x)], hoverinfo="text"))
-    fig.add_vline(x=0, line=dict(color="black"))
-    fig.update_layout(barmode="group", title=f"Margin per requirement, {title} (left of zero: missed)", xaxis_title="margin (%)", template="plotly_white",
-                      height=160 + len(keys) * (6 * max(1, len(picks)) + 12))     # 6 px a bar, 12 px between rows
-    fig.update_xaxes(range=[-100, 200])
-    fig.update_yaxes(autorange="reversed")
-    return no_overprint(fig)
+        data.append(dict(type="bar", y=keys, x=[v * 100 if v is not None else None for v in x], name=c.name or c.id,
+                         orientation="h",
+                         hovertext=[f"{c.name or c.id}<br>{k}: {v:+.1%}" if v is not None else f"{k}: n/a"
+                                    for k, v in zip(keys, x)], hoverinfo="text"))
+    return no_overprint(plain.figure(data, dict(
+        shapes=[plain.line("x", 0, dict(color="black"))], barmode="group",
+        title=dict(text=f"Margin per requirement, {title} (left of zero: missed)"),
+        xaxis=dict(title=dict(text="margin (%)"), range=[-100, 200]), yaxis=dict(autorange="reversed"),
+        height=160 + len(keys) * (6 * max(1, len(picks)) + 12))))     # 6 px a bar, 12 px between rows

@@ -9,6 +9,7 @@ from ..display import requirement as display_requirement
 from ..engine.comparison import format_metric
 from .text import knife_edge_text
 from .words import tech_label
+from . import plain
 from .bundle import plotly_tag
 
 from ..technologies.presentation import shown as _num
@@ -302,9 +303,9 @@ def _names(cands: list[Candidate], ids: list[str]) -> list[str]:
     return [by_id.get(i, i) for i in ids]
 
 
-def _figure_div(fig) -> str:
-    """A figure of a technology's own section, without plotly.js."""
-    return fig.to_html(full_html=False, include_plotlyjs=False, config={"displaylogo": False})
+def _figure_div(fig: dict) -> str:
+    """A figure of a technology's own section (plotly's JSON, ``report.plain``), without plotly.js."""
+    return plain.div(fig, config={"displaylogo": False})
 
 
 def render(results: dict, traces: list[dict]) -> str:
@@ -313,8 +314,8 @@ def render(results: dict, traces: list[dict]) -> str:
     heading, title = _comparison_titles()
     figs = [pareto_figure(results), traces_figure(results, traces),
             comparison_figure(results, _pick_comparison(cands), title)]
-    divs = [f.to_html(full_html=False, include_plotlyjs=False, div_id=f"plot-{i}",
-                      config={"displaylogo": False, "responsive": True}) for i, f in enumerate(figs)]
+    divs = [plain.div(f, div_id=f"plot-{i}", config={"displaylogo": False, "responsive": True})
+            for i, f in enumerate(figs)]
     req = results["requirements"]
     summary = results["summary"]
     feasible = [c for c in cands if c.feasible]
@@ -332,7 +333,7 @@ def render(results: dict, traces: list[dict]) -> str:
                 + _e(", ".join(_names(cands, summary["pareto"])) or "empty") + "</div>") if feasible else (
         "<div class='box'><b>No design meets every requirement.</b> What blocks each technology is listed below.</div>")
     comp = [c for c in cands if c.variant == "compensated" and c.stage != "pruned"][:10]
-    plain = [c for c in cands if c.variant == "uncompensated" and c.stage not in ("pruned",)][:10]
+    as_built = [c for c in cands if c.variant == "uncompensated" and c.stage not in ("pruned",)][:10]
     checks = "".join(f"<li><b>{_e(k)}</b>: {_e(v)}</li>" for k, v in CHECKS.items())
     assumptions = "".join(f"<li>{_e(a)}</li>" for a in results["assumptions"])
     dis = results["disagreements"]
@@ -374,7 +375,7 @@ they exist. Top feasible designs, then the best candidate of each technology:</p
 <h2>Compensated designs (thermal compensator assumed)</h2>
 {_margin_table(comp) if comp else '<p>None evaluated.</p>'}
 <h2>Uncompensated designs (as built)</h2>
-{_margin_table(plain) if plain else '<p>No combination reached sizing.</p>'}
+{_margin_table(as_built) if as_built else '<p>No combination reached sizing.</p>'}
 {"".join(t.report.section(cands, _figure_div) for t in technologies())}
 <h2>Checks beyond the seed</h2><ul>{checks}</ul>
 {_checks_table(top + best_each)}

@@ -15,10 +15,30 @@ TOP_MARGIN = {"right": 60, "top": 100}       # px above the plot: the title, and
 
 
 def no_overprint(fig, legend: str = "right"):
-    """``fig`` laid out so that no text overprints another; returns it."""
+    """``fig`` (plotly's graph objects, or a figure's JSON as ``report.plain``
+    builds it) laid out so that no text overprints another; returns it."""
+    if isinstance(fig, dict):
+        fig["layout"] = laid_out(fig["layout"], legend)
+        return fig
     fig.update_xaxes(automargin=True)
     fig.update_yaxes(automargin=True)
     fig.update_layout(legend=LEGENDS[legend], margin=dict(t=TOP_MARGIN[legend]))
     if fig.layout.title.text:
         fig.update_layout(title=TITLE)
     return fig
+
+
+def laid_out(layout: dict, legend: str = "right") -> dict:
+    """A layout's JSON with ``no_overprint``'s changes (a new dict)."""
+    out = dict(layout)
+    axes = [k for k in out if k.startswith(("xaxis", "yaxis"))]
+    for k in ("xaxis", "yaxis", *axes):
+        out[k] = {**out.get(k, {}), "automargin": True}
+    out["legend"] = {**out.get("legend", {}), **LEGENDS[legend]}
+    out["margin"] = {**out.get("margin", {}), "t": TOP_MARGIN[legend]}
+    title = out.get("title")
+    if isinstance(title, str):
+        title = {"text": title}
+    if title and title.get("text"):
+        out["title"] = {**title, **TITLE}
+    return out

@@ -7,8 +7,7 @@ from typing import TYPE_CHECKING
 
 import html
 
-import plotly.graph_objects as go
-
+from ...report import plain
 from ...report.layout import no_overprint
 
 if TYPE_CHECKING:
@@ -37,29 +36,29 @@ def piezo_designs(cands: list[Candidate], limit: int = 6) -> list[Candidate]:
     return picks[:limit]
 
 
-def force_path_figure(designs: list[Candidate]) -> go.Figure:
-    fig = go.Figure()
+def force_path_figure(designs: list[Candidate]) -> dict:
+    """Each design's compliance shares, member by member (plotly's JSON, ``report.plain``)."""
     names = [d.name or d.id for d in designs]
     members = [m for m in MEMBER_COLORS if any(x["member"] == m for d in designs for x in d.own["force_path"])]
-    for m in members:
-        share = [next((x["compliance_share"] for x in d.own["force_path"] if x["member"] == m), 0.0) for d in designs]
-        fig.add_trace(go.Bar(y=names, x=share, name=m, orientation="h", marker_color=MEMBER_COLORS[m],
-                             hovertemplate=m + ": %{x:.1%} of the compliance<extra></extra>"))
-    fig.update_layout(barmode="stack", height=max(300, 140 + 40 * len(designs)), margin=dict(l=10, r=10, b=30),
-                      xaxis=dict(title="share of the force path's compliance (stacks alone = ideal)", tickformat=".0%"),
-                      yaxis=dict(autorange="reversed"))
-    return no_overprint(fig)
+    data = [dict(type="bar", y=names, name=m, orientation="h", marker=dict(color=MEMBER_COLORS[m]),
+                 x=[next((x["compliance_share"] for x in d.own["force_path"] if x["member"] == m), 0.0) for d in designs],
+                 hovertemplate=m + ": %{x:.1%} of the compliance<extra></extra>") for m in members]
+    return no_overprint(plain.figure(data, dict(
+        barmode="stack", height=max(300, 140 + 40 * len(designs)), margin=dict(l=10, r=10, b=30),
+        xaxis=dict(title=dict(text="share of the force path's compliance (stacks alone = ideal)"), tickformat=".0%"),
+        yaxis=dict(autorange="reversed")), template_name=None))
 
 
-def thermal_figure(design: Candidate) -> go.Figure:
+def thermal_figure(design: Candidate) -> dict:
+    """A design's thermal budget as a waterfall to its net drift (plotly's JSON, ``report.plain``)."""
     tb = design.own["thermal_budget"]
     labels = [label for key, label in TERMS] + ["net"]
     values = [tb[key] * 1e3 for key, _ in TERMS] + [tb["net_m"] * 1e3]
-    fig = go.Figure(go.Waterfall(x=labels, y=values, measure=["relative"] * len(TERMS) + ["total"],
-                                 hovertemplate="%{x}: %{y:.2f} mm<extra></extra>"))
-    fig.update_layout(height=330, margin=dict(l=10, r=10, t=30, b=30), showlegend=False,
-                      title=f"thermal budget of {design.name or design.id}", yaxis=dict(title="output displacement, mm"))
-    return fig
+    return plain.figure([dict(type="waterfall", x=labels, y=values, measure=["relative"] * len(TERMS) + ["total"],
+                              hovertemplate="%{x}: %{y:.2f} mm<extra></extra>")],
+                        dict(height=330, margin=dict(l=10, r=10, t=30, b=30), showlegend=False,
+                             title=dict(text=f"thermal budget of {design.name or design.id}"),
+                             yaxis=dict(title=dict(text="output displacement, mm"))), template_name=None)
 
 
 def section(cands: list[Candidate], to_div) -> str:

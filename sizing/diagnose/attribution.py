@@ -205,7 +205,14 @@ def account_discrepancy(bench, fits) -> None:
     for f in fits:
         if len(f.named) == 1 and f.message != "screened only" and f.name in paired:
             sims = [Y[0] for Y in bench.simulate_channels(f.effects, f.z[None, :])]
-            f.discrepancy = discrepancy.account(bench, sims)
+            S = discrepancy.account(bench, sims)
+            runs = bench.holdout
+            E = bench.channel_nrmse([s[None] for s in S], runs)[0]
+            f.discrepancy = {"nrmse_holdout": float(np.mean(bench.combined_nrmse([s[None] for s in S], runs)[0])),
+                             "blocks": block_energy(bench, S, runs),
+                             "channels": {c: {"nrmse_holdout": float(np.mean(E[:, k])),
+                                              "blocks": block_energy(bench, S, runs, channel=k)}
+                                          for k, c in enumerate(bench.channels)}}
 
 
 def fit_best_of_starts(effect, ranked, fit_with, settings: Settings = DEFAULT) -> fitting.EffectFit:

@@ -41,14 +41,13 @@ def basis(t: np.ndarray, s: np.ndarray, taus=TAUS) -> np.ndarray:
     return np.column_stack([np.ones_like(s), s, rate] + [low_pass(t, rate, tau) for tau in taus])
 
 
-def account(bench, sims: list, taus=TAUS) -> dict:
-    """The single plus its discrepancy on the held-out runs. ``sims``: the
-    single's simulated channels (n_ch, n) of every run of ``bench``. Each
-    channel's filter is fitted by least squares on the training runs'
-    residuals (measured - simulated, over the channel's span and sqrt(n),
-    as a run's NRMSE weighs them), and subtracted on the held-out runs.
-    Returns {"nrmse_holdout": mean combined measure over the held-out runs,
-    "nrmse_channels": {channel: mean NRMSE}}."""
+def account(bench, sims: list, taus=TAUS) -> list:
+    """The single plus its discrepancy on the held-out runs: their
+    simulated channels (n_ch, n) with each channel's filter added, in
+    bench.holdout order. ``sims``: the single's simulated channels
+    (n_ch, n) of every run of ``bench``. Each channel's filter is fitted by
+    least squares on the training runs' residuals (measured - simulated,
+    over the channel's span and sqrt(n), as a run's NRMSE weighs them)."""
     n_ch = len(bench.channels)
     design, target = {}, {}
     for i, r in enumerate(bench.runs):
@@ -65,11 +64,9 @@ def account(bench, sims: list, taus=TAUS) -> dict:
         norms[norms == 0] = 1.0
         c, *_ = np.linalg.lstsq(A / norms, b, rcond=None)
         coef.append(c / norms)
-    per_run, per_channel = [], []
+    out = []
     for i in bench.holdout:
-        e = np.array([np.sqrt(np.sum((target[i][k] - design[i][k] @ coef[k]) ** 2)) for k in range(n_ch)])
-        per_channel.append(e)
-        per_run.append(float(np.sqrt(np.sum(bench.weights(i) * e ** 2))))
-    E = np.mean(per_channel, axis=0)
-    return {"nrmse_holdout": float(np.mean(per_run)),
-            "nrmse_channels": {c: float(E[k]) for k, c in enumerate(bench.channels)}}
+        S = np.array(sims[i], float)[:n_ch]
+        scale = bench.spans(i) * np.sqrt(S.shape[-1])
+        out.append(np.vstack([S[k] + scale[k] * (design[i][k] @ coef[k]) for k in range(n_ch)]))
+    return out

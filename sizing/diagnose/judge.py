@@ -173,30 +173,33 @@ def pick(fits, seed: int = 0, floor: float = 0.0, settings: Settings = DEFAULT, 
                 or best.nrmse_train > single.nrmse_train
                 or not partner_identified(fits, best, single, seed, settings)
                 or not beyond_form(fits, best, single, settings)
-                or not beyond_discrepancy(best, single, floor, settings)):
+                or not beyond_discrepancy(best, single, floor, seed, settings)):
             return single
     return best
 
 
-def beyond_discrepancy(pair, single, floor: float, settings: Settings = DEFAULT) -> bool:
-    """Whether the pair does better on the holdout runs than its single
-    with a model discrepancy (discrepancy.account: a linear filter of the
-    single's own simulated channels, fitted on the training runs beside
-    it), when the pair itself still leaves a gap (more than ``gap_factor``
-    x the floor). A partner that only takes up part of its single's form
-    error, as any flexible term would, leaves a structured residual and
-    does no better than the flexible term (a delay of another form than
-    the library's: a viscous partner took 35-50 % of what the pure delay
-    left and the pair still left 2.6-3.4 x the floor, where the discrepancy
-    left less). A pair within the floor is an account of the gap by two
-    effects of the library and is not asked: the discrepancy has more free
-    coefficients than any partner, and a partner whose response is itself
-    a linear filter of the motion (a real delay behind a real damping) is
-    matched by it. True when the single carries no discrepancy."""
+def beyond_discrepancy(pair, single, floor: float, seed: int = 0, settings: Settings = DEFAULT) -> bool:
+    """Whether the pair is significantly better on the holdout runs (the
+    two-sided block bootstrap of ``separation_p``) than its single with a
+    model discrepancy (``single.discrepancy``: discrepancy.account, a
+    linear filter of the single's own simulated channels fitted on the
+    training runs beside it; {"nrmse_holdout", "blocks"}), when the pair
+    itself still leaves a gap (more than ``gap_factor`` x the floor). A
+    partner that only takes up part of its single's form error, as any
+    flexible term would, leaves a structured residual and does no better
+    than the flexible term (a delay of another form than the library's: a
+    viscous partner took 35-50 % of what the pure delay left and the pair
+    still left 1.8-3.4 x the floor, where the discrepancy left less). A
+    pair within the floor is an account of the gap by two effects of the
+    library and is not asked: the discrepancy has more free coefficients
+    than any partner, and a partner whose response is itself a linear
+    filter of the motion (a real delay behind a real damping) is matched
+    by it. True when the single carries no discrepancy."""
     account = getattr(single, "discrepancy", None)
     if account is None or pair.nrmse_holdout <= settings.gap_factor * floor:
         return True
-    return pair.nrmse_holdout < account["nrmse_holdout"]
+    return (pair.nrmse_holdout < account["nrmse_holdout"]
+            and separation_p(pair.residual_blocks, account["blocks"], seed, settings.n_boot) < settings.alpha)
 
 
 def leaves_a_gap(single, floor: float, settings: Settings = DEFAULT, channels: dict | None = None) -> bool:
@@ -675,7 +678,7 @@ class ChannelView:
         self.nrmse_holdout = fit.nrmse_channels[channel]
         self.residual_blocks = fit.channel_blocks[channel]
         account = getattr(fit, "discrepancy", None)
-        self.discrepancy = None if account is None else {"nrmse_holdout": account["nrmse_channels"][channel]}
+        self.discrepancy = None if account is None else account["channels"][channel]
 
     def __getattr__(self, name):
         return getattr(self.fit, name)

@@ -38,6 +38,7 @@ class EffectFit:
     holdout_position: list = field(default_factory=list)     # simulated position (n,) of each holdout run
     holdout_residual: list = field(default_factory=list)     # (t, measured - simulated position) of each
     channel_blocks: dict = field(default_factory=dict)       # {channel: residual block energies} (holdout)
+    discrepancy: dict | None = None     # the single plus a model discrepancy on the holdout (discrepancy.account)
 
     @property
     def named(self) -> tuple:

@@ -192,11 +192,11 @@ def attribute(bench, baseline_holdout: float, floor_holdout: float, seed: int = 
             holdout_score(bench, fits[-1])
         fits.sort(key=lambda f: f.nrmse_holdout)
         refit_singles(bench, fits, head, len(z_head))
-        account_discrepancy(bench, fits)
+        account_discrepancy(bench, fits, settings)
     return fits
 
 
-def account_discrepancy(bench, fits) -> None:
+def account_discrepancy(bench, fits, settings: Settings = DEFAULT) -> None:
     """Each fitted single of a family that some fitted pair holds gets
     ``discrepancy``: the single plus a model discrepancy on the holdout
     runs (discrepancy.account), the bar its partner must clear
@@ -205,7 +205,7 @@ def account_discrepancy(bench, fits) -> None:
     for f in fits:
         if len(f.named) == 1 and f.message != "screened only" and f.name in paired:
             sims = [Y[0] for Y in bench.simulate_channels(f.effects, f.z[None, :])]
-            S = discrepancy.account(bench, sims)
+            S = discrepancy.account(bench, sims, settings.discrepancy_taus)
             runs = bench.holdout
             E = bench.channel_nrmse([s[None] for s in S], runs)[0]
             f.discrepancy = {"nrmse_holdout": float(np.mean(bench.combined_nrmse([s[None] for s in S], runs)[0])),

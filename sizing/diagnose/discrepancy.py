@@ -11,7 +11,7 @@ runs, one filter per logged channel.
 
 The filter's basis, per channel, of the single's simulated signal s(t):
 an offset, s itself (a gain error), its rate ds/dt and the rate passed
-through first-order low-passes of time constants ``TAUS`` (a geometric
+through first-order low-passes of time constants ``taus`` (a geometric
 ladder over the millisecond to the tenth of a second, the time scales of
 a sensor's or a driver's dynamics and of a mis-stated lag of the rig). A
 measured response that another simulator's form of the same effect
@@ -25,9 +25,6 @@ from __future__ import annotations
 import numpy as np
 from scipy.signal import lfilter
 
-TAUS = (0.001, 0.003, 0.01, 0.03, 0.1)     # s: time constants of the low-passed rate
-
-
 def low_pass(t: np.ndarray, x: np.ndarray, tau: float) -> np.ndarray:
     """First-order low-pass of x (time constant tau, s), starting at rest at x[0]."""
     dt = float(np.median(np.diff(t)))
@@ -35,17 +32,18 @@ def low_pass(t: np.ndarray, x: np.ndarray, tau: float) -> np.ndarray:
     return lfilter([1.0 - a], [1.0, -a], x - x[0]) + x[0]
 
 
-def basis(t: np.ndarray, s: np.ndarray, taus=TAUS) -> np.ndarray:
+def basis(t: np.ndarray, s: np.ndarray, taus) -> np.ndarray:
     """(n, 3 + len(taus)) columns of the discrepancy of one simulated signal s."""
     rate = np.gradient(s, t)
     return np.column_stack([np.ones_like(s), s, rate] + [low_pass(t, rate, tau) for tau in taus])
 
 
-def account(bench, sims: list, taus=TAUS) -> list:
+def account(bench, sims: list, taus) -> list:
     """The single plus its discrepancy on the held-out runs: their
     simulated channels (n_ch, n) with each channel's filter added, in
     bench.holdout order. ``sims``: the single's simulated channels
-    (n_ch, n) of every run of ``bench``. Each channel's filter is fitted by
+    (n_ch, n) of every run of ``bench``; ``taus``: the low-passes' time
+    constants, s (``Settings.discrepancy_taus``). Each channel's filter is fitted by
     least squares on the training runs' residuals (measured - simulated,
     over the channel's span and sqrt(n), as a run's NRMSE weighs them)."""
     n_ch = len(bench.channels)

@@ -42,6 +42,7 @@ class Settings:
     fit_below: float = 0.9         # ... and any form that screens below this x the training baseline
     top_pairs: int = 3             # fitted families combined into pairs
     step_pairs: int = 2            # families screened as the second effect given the best single
+    discrepancy_taus: tuple = (0.001, 0.003, 0.01, 0.03, 0.1)   # s: low-passes of the rate in a single's model discrepancy (discrepancy.py)
     fd_step: float = 0.01          # forward-difference step of the Jacobian, unit coordinates
     start_spacing: float = 0.15    # the starts of an effect fitted from several: this far apart (unit coordinates, max norm)
     event_grid: int = 10           # an effect judged on its events (events.py): screened at this many values per parameter

@@ -11,6 +11,7 @@ from sizing.diagnose import discrepancy, judge
 from sizing.diagnose.effects import get
 from sizing.diagnose.fitting import EffectFit
 from sizing.diagnose.floor import total_floor
+from sizing.diagnose.settings import DEFAULT
 
 
 class _Run:
@@ -73,7 +74,7 @@ def test_a_filter_of_the_motion_is_taken_up_on_the_held_out_run():
     rng = np.random.default_rng(3)
     ys = [_lag(t, s, 0.004) + rng.normal(0.0, 1e-6, t.size) for s in sims]
     bench = _Bench(t, ys, holdout={2})
-    held = discrepancy.account(bench, [s[None, :] for s in sims])
+    held = discrepancy.account(bench, [s[None, :] for s in sims], DEFAULT.discrepancy_taus)
     noise = 1e-6 / np.ptp(ys[2])
     alone = _nrmse(ys[2], sims[2])
     assert len(held) == 1 and held[0].shape == (1, t.size)
@@ -90,7 +91,7 @@ def test_what_is_not_a_filter_of_the_motion_is_left():
     slip = 2e-5 * (t > 1.1)
     ys = [s + slip for s in sims]
     bench = _Bench(t, ys, holdout={2})
-    held = discrepancy.account(bench, [s[None, :] for s in sims])
+    held = discrepancy.account(bench, [s[None, :] for s in sims], DEFAULT.discrepancy_taus)
     assert _nrmse(ys[2], held[0][0]) > 0.5 * _nrmse(ys[2], sims[2])
 
 

@@ -206,9 +206,9 @@ def account_discrepancy(bench, fits, settings: Settings = DEFAULT) -> None:
         if len(f.named) == 1 and f.message != "screened only" and f.name in paired:
             sims = [Y[0] for Y in bench.simulate_channels(f.effects, f.z[None, :])]
             S = discrepancy.account(bench, sims, settings.discrepancy_taus)
-            runs = bench.holdout
-            E = bench.channel_nrmse([s[None] for s in S], runs)[0]
-            f.discrepancy = {"nrmse_holdout": float(np.mean(bench.combined_nrmse([s[None] for s in S], runs)[0])),
+            runs, one = bench.holdout, [s[None] for s in S]
+            E = bench.channel_nrmse(one, runs)[0]
+            f.discrepancy = {"nrmse_holdout": float(np.mean(bench.combined_nrmse(one, runs)[0])),
                              "blocks": block_energy(bench, S, runs),
                              "channels": {c: {"nrmse_holdout": float(np.mean(E[:, k])),
                                               "blocks": block_energy(bench, S, runs, channel=k)}

@@ -196,7 +196,7 @@ def beyond_discrepancy(pair, single, floor: float, seed: int = 0, settings: Sett
     filter of the motion (a real delay behind a real damping) is matched
     by it. True when the single carries no discrepancy."""
     account = getattr(single, "discrepancy", None)
-    if account is None or pair.nrmse_holdout <= settings.gap_factor * floor:
+    if account is None or not leaves_a_gap(pair, floor, settings):
         return True
     return (pair.nrmse_holdout < account["nrmse_holdout"]
             and separation_p(pair.residual_blocks, account["blocks"], seed, settings.n_boot) < settings.alpha)

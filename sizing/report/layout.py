@@ -19,12 +19,8 @@ def no_overprint(fig, legend: str = "right"):
     builds it) laid out so that no text overprints another; returns it."""
     if isinstance(fig, dict):
         fig["layout"] = laid_out(fig["layout"], legend)
-        return fig
-    fig.update_xaxes(automargin=True)
-    fig.update_yaxes(automargin=True)
-    fig.update_layout(legend=LEGENDS[legend], margin=dict(t=TOP_MARGIN[legend]))
-    if fig.layout.title.text:
-        fig.update_layout(title=TITLE)
+    else:
+        fig.update_layout(laid_out(fig.layout.to_plotly_json(), legend))
     return fig
 
 
